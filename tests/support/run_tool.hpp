@@ -1,0 +1,42 @@
+#pragma once
+// Running the built tools from tests: exit status, stdout and stderr.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace mesowave::test {
+
+struct ToolResult {
+  int exit_status = -1;
+  std::string out;
+  std::string err;
+};
+
+/// Runs bin/<tool> with `args` (no shell), optionally with extra environment
+/// entries ("NAME=value"), and waits for it.
+ToolResult run_tool(const std::string& tool, const std::vector<std::string>& args,
+                    const std::vector<std::string>& env = {});
+
+/// Path of a built tool.
+std::filesystem::path tool_path(const std::string& tool);
+
+/// A fresh empty directory under the system temp dir, removed by the destructor.
+class TempDir {
+public:
+  TempDir();
+  ~TempDir();
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+  std::filesystem::path path_;
+};
+
+/// Whole content of a file.
+std::string read_file(const std::filesystem::path& path);
+/// Writes `content` to `path`.
+void write_file(const std::filesystem::path& path, const std::string& content);
+/// Number of regular files below `dir`.
+std::size_t count_files(const std::filesystem::path& dir);
+
+}  // namespace mesowave::test

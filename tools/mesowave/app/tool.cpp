@@ -1,0 +1,234 @@
+#include "mesowave/app/tool.hpp"
+
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "mesowave/app/process_info.hpp"
+#include "mesowave/core/error.hpp"
+#include "mesowave/core/version.hpp"
+#include "mesowave/io/quantity_file.hpp"
+#include "mesowave/prov/database.hpp"
+
+namespace mesowave::app {
+namespace fs = std::filesystem;
+
+namespace {
+
+// CLI11 reads `--from` files through this: every quantity becomes the value of
+// the option it names; entries no option takes are ignored (a lab-data file
+// serves several tools).
+class QuantityConfig : public CLI::Config {
+public:
+  std::string to_config(const CLI::App*, bool, bool, std::string) const override { return {}; }
+  std::vector<CLI::ConfigItem> from_config(std::istream& input) const override {
+    std::ostringstream text;
+    text << input.rdbuf();
+    std::vector<CLI::ConfigItem> items;
+    for (const auto& q : io::parse_quantity_text(text.str(), "--from file")) {
+      CLI::ConfigItem item;
+      item.name = q.option_name();
+      item.inputs = {q.value};
+      items.push_back(std::move(item));
+    }
+    return items;
+  }
+};
+
+// `--from` files, found before CLI11 parses so that a bad file is reported by
+// name (CLI11 hands the reader only a stream).
+std::vector<std::string> from_files_in(int argc, char** argv) {
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--") break;
+    if (arg == "--from" && i + 1 < argc) files.emplace_back(argv[++i]);
+    else if (arg.rfind("--from=", 0) == 0) files.push_back(arg.substr(7));
+  }
+  return files;
+}
+
+nlohmann::ordered_json json_value(const std::string& text) {
+  char* end = nullptr;
+  const double number = std::strtod(text.c_str(), &end);
+  if (!text.empty() && end == text.c_str() + text.size()) return number;
+  if (text == "true") return true;
+  if (text == "false") return false;
+  return text;
+}
+
+// Every option's final value, whether typed, read from a --from file or
+// defaulted, keyed by its long name; subcommands nest.
+nlohmann::ordered_json collect_params(const CLI::App& app) {
+  nlohmann::ordered_json params = nlohmann::ordered_json::object();
+  for (const CLI::Option* opt : app.get_options()) {
+    const std::string name = opt->get_lnames().empty() ? opt->get_name() : opt->get_lnames().front();
+    if (name == "help" || name == "help-all" || name == "version" || name == "db") continue;
+    const auto& results = opt->results();
+    if (!results.empty()) {
+      if (results.size() == 1) params[name] = json_value(results.front());
+      else {
+        auto list = nlohmann::ordered_json::array();
+        for (const auto& r : results) list.push_back(json_value(r));
+        params[name] = list;
+      }
+    } else if (!opt->get_default_str().empty()) {
+      params[name] = json_value(opt->get_default_str());
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) {
+    params["subcommand"] = sub->get_name();
+    params[sub->get_name()] = collect_params(*sub);
+  }
+  return params;
+}
+
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+}  // namespace
+
+// ---- Run --------------------------------------------------------------------
+
+void Run::input(const fs::path& path) {
+  if (!fs::is_regular_file(path)) throw InputError("input " + path.string() + " does not exist or is not a file");
+  inputs_.push_back(prov::describe_file(path));
+}
+
+fs::path Run::output(const fs::path& path) { return stage_.stage(path); }
+
+void Run::write_text(const fs::path& path, std::string_view content) { stage_.write_text(path, content); }
+
+void Run::metric(const std::string& name, double value, const std::string& unit) {
+  metrics_.push_back({name, value, unit});
+}
+
+void Run::param(const std::string& name, nlohmann::ordered_json value) { extra_params_[name] = std::move(value); }
+
+void Run::emit_json(const nlohmann::ordered_json& object, const fs::path& out_path) {
+  const std::string text = object.dump(2) + "\n";
+  std::cout << text;
+  if (!out_path.empty()) write_text(out_path, text);
+}
+
+std::ostream& Run::out() { return std::cout; }
+
+// ---- Tool -------------------------------------------------------------------
+
+Tool::Tool(std::string name, std::string description) : name_(std::move(name)), app_(description, name_) {
+  app_.set_version_flag("--version", name_ + " " + source_version());
+  app_.config_formatter(std::make_shared<QuantityConfig>());
+  app_.allow_config_extras(CLI::config_extras_mode::ignore_all);
+  app_.set_config("--from", "",
+                  "Read option values from FILE: lab-data TOML ([t_p] value = 35, unit = \"us\" fills --t-p-us) "
+                  "or an earlier tool's JSON ({\"E_d_GPa\": 36.7} fills --E-d-GPa). Repeatable; the last file wins, "
+                  "the command line beats them all.")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->type_name("FILE");
+  app_.add_option("--db", db_path_,
+                  "Record this run in the provenance database PATH (SQLite; created if absent)")
+      ->envname("MESOWAVE_DB")
+      ->type_name("PATH");
+  app_.get_formatter()->column_width(34);
+}
+
+int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  prov::RunRecord record;
+  record.tool = name_;
+  record.started_at = utc_timestamp();
+  record.argv.assign(argv, argv + argc);
+
+  try {
+    for (const auto& file : from_files_in(argc, argv)) io::read_quantity_file(file);  // named errors first
+    app_.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app_.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "error: " << one_line(e.what()) << " (see " << name_ << " --help)\n";
+    return 1;
+  } catch (const InputError& e) {
+    std::cerr << "error: " << one_line(e.what()) << "\n";
+    return 1;
+  }
+
+  std::optional<prov::Database> db;
+  Run run;
+  try {
+    if (records_runs_ && !db_path_.empty()) db.emplace(prov::Database::open(db_path_));
+    for (const auto& file : app_.get_option("--from")->as<std::vector<std::string>>())
+      if (!file.empty()) run.input(file);
+  } catch (const InputError& e) {
+    std::cerr << "error: " << one_line(e.what()) << "\n";
+    return 1;
+  }
+
+  try {
+    body(run);
+  } catch (const InputError& e) {
+    record.exit_status = 1;
+    record.error = one_line(e.what());
+  } catch (const CLI::Error& e) {
+    record.exit_status = 1;
+    record.error = one_line(e.what());
+  } catch (const std::exception& e) {
+    record.exit_status = 2;
+    record.error = "internal error: " + one_line(e.what());
+  }
+
+  record.params = collect_params(app_);
+  for (auto& [key, value] : run.extra_params_.items()) record.params[key] = value;
+  record.inputs = run.inputs_;
+  record.metrics = run.metrics_;
+  try {
+    if (record.exit_status == 0)
+      for (std::size_t i = 0; i < run.stage_.final_paths().size(); ++i)
+        record.outputs.push_back(prov::describe_file(run.stage_.final_paths()[i], run.stage_.temp_paths()[i]));
+  } catch (const std::exception& e) {
+    record.exit_status = 2;
+    record.error = "internal error: " + one_line(e.what());
+  }
+
+  if (db) {
+    const auto usage = resource_usage();
+    record.version = source_version();
+    record.binary_sha256 = executable_sha256();
+    record.cwd = fs::current_path().string();
+    record.host = host_name();
+    record.ended_at = utc_timestamp();
+    record.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    record.cpu_s = usage.cpu_s;
+    record.peak_rss_kib = usage.peak_rss_kib;
+    try {
+      prov::record_run(*db, record);
+    } catch (const std::exception& e) {
+      record.exit_status = 2;
+      record.error = "cannot record the run in " + db_path_ + ": " + one_line(e.what());
+    }
+  }
+
+  if (record.exit_status == 0) {
+    try {
+      run.stage_.commit();
+    } catch (const std::exception& e) {
+      record.exit_status = 2;
+      record.error = one_line(e.what());
+    }
+  } else {
+    run.stage_.discard();
+  }
+  if (record.exit_status != 0) std::cerr << "error: " << record.error << "\n";
+  return record.exit_status;
+}
+
+CLI::Option* add_out_option(CLI::App& app, fs::path& out, const std::string& what) {
+  return app.add_option("--out", out, "Also write " + what + " to FILE")->type_name("FILE");
+}
+
+}  // namespace mesowave::app

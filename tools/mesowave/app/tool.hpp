@@ -1,0 +1,80 @@
+#pragma once
+// What every mesowave tool shares, so that a tool's main file is only its
+// options, a call into the library and its output:
+//  - `--help`, `--version`;
+//  - `--from FILE` (repeatable): lab-data TOML or an earlier tool's JSON whose
+//    entries fill options not given on the command line (t_p in "us" fills
+//    --t-p-us; the last file named wins, the command line beats them all);
+//  - `--db PATH` or MESOWAVE_DB: the provenance database that records the run;
+//  - exit status 0 on success, 1 on bad input (one line: `error: <what>`),
+//    2 on internal failure;
+//  - outputs staged and renamed into place only when the run succeeded.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <functional>
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "mesowave/io/output_stage.hpp"
+#include "mesowave/prov/run_record.hpp"
+
+namespace mesowave::app {
+
+/// The run in progress, as the tool's body sees it.
+class Run {
+public:
+  /// Declares a file the run reads (hashed now, recorded as an input).
+  void input(const std::filesystem::path& path);
+  /// Reserves an output and returns the temporary path to write it to; it is
+  /// renamed to `path` when the run succeeds (see io::OutputStage).
+  std::filesystem::path output(const std::filesystem::path& path);
+  /// Stages `path` with `content`.
+  void write_text(const std::filesystem::path& path, std::string_view content);
+  /// A named result with its unit ("" if dimensionless), queryable later.
+  void metric(const std::string& name, double value, const std::string& unit);
+  /// A parameter that is not an option (a derived choice worth recording).
+  void param(const std::string& name, nlohmann::ordered_json value);
+
+  /// Prints `object` (pretty, one key per line) on stdout and, if
+  /// `out_path` is not empty, stages it to that file as well.
+  void emit_json(const nlohmann::ordered_json& object, const std::filesystem::path& out_path = {});
+
+  std::ostream& out();
+
+private:
+  friend class Tool;
+  io::OutputStage stage_;
+  std::vector<prov::FileRecord> inputs_;
+  std::vector<prov::MetricRecord> metrics_;
+  nlohmann::ordered_json extra_params_ = nlohmann::ordered_json::object();
+};
+
+class Tool {
+public:
+  /// `name` as invoked (mw-upv); `description` is the first paragraph of --help.
+  Tool(std::string name, std::string description);
+
+  CLI::App& cli() { return app_; }
+
+  /// Tools that only read the database (mw-prov) do not record themselves.
+  void set_records_runs(bool records) { records_runs_ = records; }
+  /// The database named by --db or MESOWAVE_DB ("" if none), after parsing.
+  const std::string& db_path() const { return db_path_; }
+
+  /// Parses argv, opens the database if one is named, runs `body`, records
+  /// the run and returns the exit status for main().
+  int run(int argc, char** argv, const std::function<void(Run&)>& body);
+
+private:
+  std::string name_;
+  CLI::App app_;
+  std::string db_path_;
+  bool records_runs_ = true;
+};
+
+/// Adds the usual `--out FILE` option (JSON result also written to FILE).
+CLI::Option* add_out_option(CLI::App& app, std::filesystem::path& out, const std::string& what = "the JSON result");
+
+}  // namespace mesowave::app

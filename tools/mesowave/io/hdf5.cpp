@@ -1,0 +1,250 @@
+#include "mesowave/io/hdf5.hpp"
+
+#include <stdexcept>
+
+#include "mesowave/core/error.hpp"
+
+namespace mesowave::io::h5 {
+namespace {
+
+// HDF5 prints its own error stack to stderr by default; mesowave reports
+// errors itself, one line each.
+struct SilenceHdf5 {
+  SilenceHdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+};
+const SilenceHdf5 silence;
+
+hid_t check(hid_t id, const std::string& what) {
+  if (id < 0) throw std::runtime_error("HDF5: cannot " + what);
+  return id;
+}
+
+void check_status(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("HDF5: cannot " + what);
+}
+
+std::vector<hsize_t> dims_for(std::size_t size, std::size_t cols) {
+  if (cols == 0) return {hsize_t(size)};
+  if (size % cols != 0) throw std::logic_error("dataset size is not a multiple of its column count");
+  return {hsize_t(size / cols), hsize_t(cols)};
+}
+
+template <typename T>
+void write_dataset(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, hid_t mem_type,
+                   hid_t file_type, bool compress) {
+  const auto dims = dims_for(data.size(), cols);
+  Handle space(check(H5Screate_simple(int(dims.size()), dims.data(), nullptr), "create dataspace for " + name));
+  Handle props(check(H5Pcreate(H5P_DATASET_CREATE), "create dataset properties"));
+  if (compress && data.size() >= 4096) {
+    std::vector<hsize_t> chunk = dims;
+    chunk[0] = std::min<hsize_t>(dims[0], std::max<hsize_t>(1, 65536 / (cols ? cols : 1)));
+    check_status(H5Pset_chunk(props.id(), int(chunk.size()), chunk.data()), "chunk " + name);
+    check_status(H5Pset_shuffle(props.id()), "shuffle " + name);
+    check_status(H5Pset_deflate(props.id(), 4), "compress " + name);
+  }
+  Handle set(check(H5Dcreate2(parent, name.c_str(), file_type, space.id(), H5P_DEFAULT, props.id(), H5P_DEFAULT),
+                   "create dataset " + name));
+  if (!data.empty())
+    check_status(H5Dwrite(set.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write dataset " + name);
+}
+
+template <typename T>
+std::vector<T> read_dataset(hid_t parent, const std::string& name, hid_t mem_type, std::vector<hsize_t>* shape) {
+  if (!has_link(parent, name)) throw InputError("HDF5 dataset '" + name + "' is missing");
+  Handle set(check(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "open dataset " + name));
+  Handle space(check(H5Dget_space(set.id()), "get dataspace of " + name));
+  const int rank = H5Sget_simple_extent_ndims(space.id());
+  std::vector<hsize_t> dims(std::size_t(std::max(rank, 0)));
+  H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr);
+  std::size_t count = 1;
+  for (auto d : dims) count *= std::size_t(d);
+  std::vector<T> data(count);
+  if (count > 0)
+    check_status(H5Dread(set.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "read dataset " + name);
+  if (shape) *shape = dims;
+  return data;
+}
+
+Handle open_attribute(hid_t object, const std::string& name) {
+  if (H5Aexists(object, name.c_str()) <= 0) throw InputError("HDF5 attribute '" + name + "' is missing");
+  return Handle(check(H5Aopen(object, name.c_str(), H5P_DEFAULT), "open attribute " + name));
+}
+
+void replace_attribute(hid_t object, const std::string& name) {
+  if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
+}
+
+}  // namespace
+
+Handle& Handle::operator=(Handle&& other) noexcept {
+  if (this != &other) {
+    Handle old(id_);
+    id_ = other.id_;
+    other.id_ = H5I_INVALID_HID;
+  }
+  return *this;
+}
+
+Handle::~Handle() {
+  if (id_ < 0) return;
+  switch (H5Iget_type(id_)) {
+    case H5I_FILE: H5Fclose(id_); break;
+    case H5I_GROUP: H5Gclose(id_); break;
+    case H5I_DATASET: H5Dclose(id_); break;
+    case H5I_DATASPACE: H5Sclose(id_); break;
+    case H5I_DATATYPE: H5Tclose(id_); break;
+    case H5I_ATTR: H5Aclose(id_); break;
+    case H5I_GENPROP_LST: H5Pclose(id_); break;
+    default: break;
+  }
+}
+
+Handle create_file(const std::filesystem::path& path) {
+  Handle props(check(H5Pcreate(H5P_FILE_CREATE), "create file properties"));
+  H5Pset_link_creation_order(props.id(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
+  const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, props.id(), H5P_DEFAULT);
+  if (id < 0) throw InputError("cannot create HDF5 file " + path.string());
+  return Handle(id);
+}
+
+Handle open_file(const std::filesystem::path& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError("file " + path.string() + " does not exist");
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw InputError(path.string() + " is not an HDF5 file");
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id < 0) throw InputError("cannot open HDF5 file " + path.string());
+  return Handle(id);
+}
+
+Handle create_group(hid_t parent, const std::string& name) {
+  Handle props(check(H5Pcreate(H5P_GROUP_CREATE), "create group properties"));
+  H5Pset_link_creation_order(props.id(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
+  return Handle(check(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, props.id(), H5P_DEFAULT), "create group " + name));
+}
+
+Handle open_group(hid_t parent, const std::string& name, const std::string& what) {
+  if (!has_link(parent, name)) throw InputError(what + ": HDF5 group '" + name + "' is missing");
+  return Handle(check(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), "open group " + name));
+}
+
+bool has_link(hid_t parent, const std::string& name) { return H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0; }
+
+std::vector<std::string> list_links(hid_t group) {
+  H5G_info_t info{};
+  check_status(H5Gget_info(group, &info), "list group");
+  // Creation order if the group tracks it, else names in alphabetical order.
+  Handle props(H5Gget_create_plist(group));
+  unsigned flags = 0;
+  if (props) H5Pget_link_creation_order(props.id(), &flags);
+  const H5_index_t index = (flags & H5P_CRT_ORDER_TRACKED) ? H5_INDEX_CRT_ORDER : H5_INDEX_NAME;
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const ssize_t length = H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    std::string name(std::size_t(std::max<ssize_t>(length, 0)), '\0');
+    H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, name.data(), std::size_t(length) + 1, H5P_DEFAULT);
+    names.push_back(name);
+  }
+  return names;
+}
+
+void write_doubles(hid_t parent, const std::string& name, const std::vector<double>& data, std::size_t cols,
+                   bool compress) {
+  write_dataset(parent, name, data, cols, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, compress);
+}
+
+void write_int64s(hid_t parent, const std::string& name, const std::vector<std::int64_t>& data, std::size_t cols) {
+  write_dataset(parent, name, data, cols, H5T_NATIVE_INT64, H5T_STD_I64LE, false);
+}
+
+std::vector<double> read_doubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape) {
+  return read_dataset<double>(parent, name, H5T_NATIVE_DOUBLE, shape);
+}
+
+std::vector<std::int64_t> read_int64s(hid_t parent, const std::string& name, std::vector<hsize_t>* shape) {
+  return read_dataset<std::int64_t>(parent, name, H5T_NATIVE_INT64, shape);
+}
+
+void set_attribute(hid_t object, const std::string& name, const std::string& value) {
+  replace_attribute(object, name);
+  // Fixed-length, null-terminated: what h5py, MATLAB and h5dump all read.
+  Handle type(check(H5Tcopy(H5T_C_S1), "copy string type"));
+  H5Tset_size(type.id(), std::max<std::size_t>(value.size(), 1));
+  H5Tset_strpad(type.id(), H5T_STR_NULLTERM);
+  H5Tset_cset(type.id(), H5T_CSET_UTF8);
+  Handle space(check(H5Screate(H5S_SCALAR), "create scalar space"));
+  Handle attr(check(H5Acreate2(object, name.c_str(), type.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT),
+                    "create attribute " + name));
+  std::string padded = value.empty() ? std::string(1, '\0') : value;
+  check_status(H5Awrite(attr.id(), type.id(), padded.data()), "write attribute " + name);
+}
+
+void set_attribute(hid_t object, const std::string& name, double value) {
+  replace_attribute(object, name);
+  Handle space(check(H5Screate(H5S_SCALAR), "create scalar space"));
+  Handle attr(check(H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT),
+                    "create attribute " + name));
+  check_status(H5Awrite(attr.id(), H5T_NATIVE_DOUBLE, &value), "write attribute " + name);
+}
+
+void set_attribute(hid_t object, const std::string& name, std::int64_t value) {
+  replace_attribute(object, name);
+  Handle space(check(H5Screate(H5S_SCALAR), "create scalar space"));
+  Handle attr(check(H5Acreate2(object, name.c_str(), H5T_STD_I64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT),
+                    "create attribute " + name));
+  check_status(H5Awrite(attr.id(), H5T_NATIVE_INT64, &value), "write attribute " + name);
+}
+
+void set_attribute(hid_t object, const std::string& name, const std::vector<double>& value) {
+  replace_attribute(object, name);
+  const hsize_t n = value.size();
+  Handle space(check(H5Screate_simple(1, &n, nullptr), "create attribute space"));
+  Handle attr(check(H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT),
+                    "create attribute " + name));
+  check_status(H5Awrite(attr.id(), H5T_NATIVE_DOUBLE, value.data()), "write attribute " + name);
+}
+
+bool has_attribute(hid_t object, const std::string& name) { return H5Aexists(object, name.c_str()) > 0; }
+
+std::string string_attribute(hid_t object, const std::string& name) {
+  Handle attr = open_attribute(object, name);
+  Handle type(check(H5Aget_type(attr.id()), "get attribute type"));
+  if (H5Tget_class(type.id()) != H5T_STRING) throw InputError("HDF5 attribute '" + name + "' is not a string");
+  if (H5Tis_variable_str(type.id()) > 0) {
+    Handle mem(H5Tcopy(H5T_C_S1));
+    H5Tset_size(mem.id(), H5T_VARIABLE);
+    char* text = nullptr;
+    check_status(H5Aread(attr.id(), mem.id(), &text), "read attribute " + name);
+    std::string value = text ? text : "";
+    H5free_memory(text);
+    return value;
+  }
+  const std::size_t size = H5Tget_size(type.id());
+  std::string value(size, '\0');
+  check_status(H5Aread(attr.id(), type.id(), value.data()), "read attribute " + name);
+  value.resize(std::min(value.find('\0'), value.size()));
+  return value;
+}
+
+double double_attribute(hid_t object, const std::string& name) {
+  Handle attr = open_attribute(object, name);
+  double value = 0;
+  check_status(H5Aread(attr.id(), H5T_NATIVE_DOUBLE, &value), "read attribute " + name);
+  return value;
+}
+
+std::int64_t int_attribute(hid_t object, const std::string& name) {
+  Handle attr = open_attribute(object, name);
+  std::int64_t value = 0;
+  check_status(H5Aread(attr.id(), H5T_NATIVE_INT64, &value), "read attribute " + name);
+  return value;
+}
+
+std::vector<double> doubles_attribute(hid_t object, const std::string& name) {
+  Handle attr = open_attribute(object, name);
+  Handle space(H5Aget_space(attr.id()));
+  const hssize_t n = H5Sget_simple_extent_npoints(space.id());
+  std::vector<double> value(std::size_t(std::max<hssize_t>(n, 0)));
+  if (!value.empty()) check_status(H5Aread(attr.id(), H5T_NATIVE_DOUBLE, value.data()), "read attribute " + name);
+  return value;
+}
+
+}  // namespace mesowave::io::h5

@@ -1,0 +1,191 @@
+#include "mesowave/prov/report.hpp"
+
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "mesowave/core/format.hpp"
+#include "mesowave/io/text_table.hpp"
+
+namespace mesowave::prov {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string short_hash(const std::string& sha) { return sha.empty() ? "(none)" : sha.substr(0, 16); }
+
+std::string status_text(int status) { return status == 0 ? "ok" : status == 1 ? "bad input" : "failed"; }
+
+nlohmann::ordered_json summary_json(const RunSummary& r) {
+  return {{"id", r.id},         {"tool", r.tool},       {"version", r.version}, {"started_at", r.started_at},
+          {"exit_status", r.exit_status}, {"wall_s", r.wall_s}, {"error", r.error}};
+}
+
+std::string producer_text(const RunSummary& r) {
+  return "run " + std::to_string(r.id) + " " + r.tool + " " + r.version + " " + r.started_at;
+}
+
+std::string node_flags(const LineageNode& n) {
+  std::string flags;
+  if (n.current_sha256.empty()) flags += "  MISSING now";
+  else if (n.current_sha256 != n.sha256) flags += "  CHANGED since (now " + short_hash(n.current_sha256) + ")";
+  if (n.producer && !n.producer_matches) flags += "  (newest run to write it wrote other content)";
+  return flags;
+}
+
+void tree_lines(const LineageNode& n, const fs::path& base, const std::string& prefix, bool root, bool last,
+                std::ostringstream& out) {
+  const std::string branch = root ? "" : (last ? "└── " : "├── ");
+  out << prefix << branch << display_path(n.path, base) << "  sha256:" << short_hash(n.sha256);
+  if (n.producer) out << "  <- " << producer_text(*n.producer) << (n.expanded_elsewhere ? " (shown above)" : "");
+  else out << "  (source: no recorded run made it)";
+  out << node_flags(n) << "\n";
+  const std::string child_prefix = root ? "" : prefix + (last ? "    " : "│   ");
+  for (std::size_t i = 0; i < n.inputs.size(); ++i)
+    tree_lines(n.inputs[i], base, child_prefix, false, i + 1 == n.inputs.size(), out);
+}
+
+std::string dot_escape(const std::string& s) {
+  std::string e;
+  for (char c : s) e += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  return e;
+}
+
+// One DOT node per (path, content) pair: two versions of a file are two nodes.
+std::string file_node_id(const LineageNode& n) { return "f_" + std::to_string(std::hash<std::string>{}(n.path + n.sha256)); }
+
+void dot_nodes(const LineageNode& n, const fs::path& base, std::set<std::string>& seen, std::ostringstream& out) {
+  const std::string file_id = file_node_id(n);
+  if (seen.insert(file_id).second)
+    out << "  \"" << file_id << "\" [shape=note, label=\"" << dot_escape(display_path(n.path, base)) << "\\nsha256 "
+        << short_hash(n.sha256) << "\"" << (n.producer ? "" : ", style=filled, fillcolor=\"#e8f4e8\"") << "];\n";
+  if (!n.producer) return;
+  const std::string run_id = "r_" + std::to_string(n.producer->id);
+  if (seen.insert(run_id).second)
+    out << "  \"" << run_id << "\" [shape=box, style=rounded, label=\"run " << n.producer->id << "\\n"
+        << dot_escape(n.producer->tool) << "\\n" << dot_escape(n.producer->version) << "\"];\n";
+  if (seen.insert(run_id + "->" + file_id).second)
+    out << "  \"" << run_id << "\" -> \"" << file_id << "\" [label=\"wrote\"];\n";
+  for (const auto& input : n.inputs) {
+    dot_nodes(input, base, seen, out);
+    const std::string in_id = file_node_id(input);
+    if (seen.insert(in_id + "->" + run_id).second) out << "  \"" << in_id << "\" -> \"" << run_id << "\" [label=\"read\"];\n";
+  }
+}
+
+}  // namespace
+
+std::string display_path(const std::string& path, const fs::path& base) {
+  const fs::path rel = fs::path(path).lexically_relative(base);
+  if (rel.empty() || *rel.begin() == "..") return path;
+  return rel.string();
+}
+
+std::string runs_text(const std::vector<RunSummary>& runs) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& r : runs)
+    rows.push_back({std::to_string(r.id), r.tool, r.started_at, status_text(r.exit_status), format_fixed(r.wall_s, 3),
+                    r.version, r.error});
+  return io::format_text_table({"run", "tool", "started (UTC)", "status", "wall_s", "version", "error"}, rows);
+}
+
+nlohmann::ordered_json runs_json(const std::vector<RunSummary>& runs) {
+  auto list = nlohmann::ordered_json::array();
+  for (const auto& r : runs) list.push_back(summary_json(r));
+  return list;
+}
+
+std::string run_text(std::int64_t id, const RunRecord& r, const fs::path& base) {
+  std::ostringstream out;
+  out << "run " << id << ": " << r.tool << " " << r.version << " (" << status_text(r.exit_status) << ")\n";
+  if (!r.error.empty()) out << "error:    " << r.error << "\n";
+  out << "binary:   sha256:" << r.binary_sha256 << "\n";
+  out << "host:     " << r.host << "   cwd: " << r.cwd << "\n";
+  out << "started:  " << r.started_at << "   ended: " << r.ended_at << "\n";
+  out << "cost:     wall " << format_fixed(r.wall_s, 3) << " s, cpu " << format_fixed(r.cpu_s, 3) << " s, peak memory "
+      << format_fixed(double(r.peak_rss_kib) / 1024.0, 1) << " MiB\n";
+  out << "argv:    ";
+  for (const auto& a : r.argv) out << " " << a;
+  out << "\nparams:   " << r.params.dump() << "\n";
+  for (const auto* files : {&r.inputs, &r.outputs}) {
+    out << (files == &r.inputs ? "inputs:\n" : "outputs:\n");
+    for (const auto& f : *files)
+      out << "  " << display_path(f.path, base) << "  " << f.size_bytes << " B  sha256:" << f.sha256 << "\n";
+  }
+  if (!r.metrics.empty()) {
+    out << "metrics:\n";
+    for (const auto& m : r.metrics) out << "  " << m.name << " = " << format_number(m.value) << (m.unit.empty() ? "" : " " + m.unit) << "\n";
+  }
+  return out.str();
+}
+
+nlohmann::ordered_json run_json(std::int64_t id, const RunRecord& r) {
+  auto files = [](const std::vector<FileRecord>& list) {
+    auto out = nlohmann::ordered_json::array();
+    for (const auto& f : list) out.push_back({{"path", f.path}, {"size_bytes", f.size_bytes}, {"sha256", f.sha256}});
+    return out;
+  };
+  auto metrics = nlohmann::ordered_json::array();
+  for (const auto& m : r.metrics) metrics.push_back({{"name", m.name}, {"value", m.value}, {"unit", m.unit}});
+  return {{"id", id},           {"tool", r.tool},         {"version", r.version},       {"binary_sha256", r.binary_sha256},
+          {"argv", r.argv},     {"params", r.params},     {"cwd", r.cwd},               {"host", r.host},
+          {"started_at", r.started_at}, {"ended_at", r.ended_at}, {"exit_status", r.exit_status}, {"error", r.error},
+          {"wall_s", r.wall_s}, {"cpu_s", r.cpu_s},       {"peak_rss_kib", r.peak_rss_kib},
+          {"inputs", files(r.inputs)}, {"outputs", files(r.outputs)}, {"metrics", metrics}};
+}
+
+std::string lineage_text(const LineageNode& root, const fs::path& base) {
+  std::ostringstream out;
+  tree_lines(root, base, "", true, true, out);
+  return out.str();
+}
+
+std::string lineage_dot(const LineageNode& root, const fs::path& base) {
+  std::ostringstream out;
+  out << "digraph lineage {\n  rankdir=RL;\n  node [fontname=\"Helvetica\", fontsize=10];\n";
+  std::set<std::string> seen;
+  dot_nodes(root, base, seen, out);
+  out << "}\n";
+  return out.str();
+}
+
+nlohmann::ordered_json lineage_json(const LineageNode& n) {
+  nlohmann::ordered_json j = {{"path", n.path}, {"sha256", n.sha256}, {"current_sha256", n.current_sha256}};
+  if (n.producer) {
+    j["producer"] = summary_json(*n.producer);
+    j["producer_matches"] = n.producer_matches;
+    j["expanded_elsewhere"] = n.expanded_elsewhere;
+  } else {
+    j["producer"] = nullptr;
+  }
+  auto inputs = nlohmann::ordered_json::array();
+  for (const auto& i : n.inputs) inputs.push_back(lineage_json(i));
+  j["inputs"] = inputs;
+  return j;
+}
+
+std::string stale_text(const std::vector<StaleInput>& stale, const fs::path& base) {
+  if (stale.empty()) return "nothing is stale: every recorded input of the live runs is unchanged\n";
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& s : stale) {
+    std::string outputs;
+    for (const auto& o : s.outputs) outputs += (outputs.empty() ? "" : " ") + display_path(o, base);
+    rows.push_back({std::to_string(s.run.id), s.run.tool, display_path(s.input_path, base),
+                    s.current_sha256.empty() ? "missing" : "changed", short_hash(s.recorded_sha256),
+                    short_hash(s.current_sha256), outputs});
+  }
+  return io::format_text_table({"run", "tool", "input", "state", "recorded", "now", "outputs made from it"}, rows);
+}
+
+nlohmann::ordered_json stale_json(const std::vector<StaleInput>& stale) {
+  auto list = nlohmann::ordered_json::array();
+  for (const auto& s : stale)
+    list.push_back({{"run", summary_json(s.run)},
+                    {"input", s.input_path},
+                    {"recorded_sha256", s.recorded_sha256},
+                    {"current_sha256", s.current_sha256},
+                    {"outputs", s.outputs}});
+  return list;
+}
+
+}  // namespace mesowave::prov

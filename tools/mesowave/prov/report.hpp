@@ -1,0 +1,29 @@
+#pragma once
+// Provenance answers rendered for people (text tables, indented trees),
+// for Graphviz (DOT) and for programs (JSON).
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "mesowave/prov/queries.hpp"
+
+namespace mesowave::prov {
+
+/// `path` relative to `base` when it lies inside it, else unchanged.
+std::string display_path(const std::string& path, const std::filesystem::path& base);
+
+std::string runs_text(const std::vector<RunSummary>& runs);
+nlohmann::ordered_json runs_json(const std::vector<RunSummary>& runs);
+
+std::string run_text(std::int64_t id, const RunRecord& run, const std::filesystem::path& base);
+nlohmann::ordered_json run_json(std::int64_t id, const RunRecord& run);
+
+std::string lineage_text(const LineageNode& root, const std::filesystem::path& base);
+std::string lineage_dot(const LineageNode& root, const std::filesystem::path& base);
+nlohmann::ordered_json lineage_json(const LineageNode& root);
+
+std::string stale_text(const std::vector<StaleInput>& stale, const std::filesystem::path& base);
+nlohmann::ordered_json stale_json(const std::vector<StaleInput>& stale);
+
+}  // namespace mesowave::prov
