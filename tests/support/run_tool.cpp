@@ -55,6 +55,35 @@ ToolResult run_tool(const std::string& tool, const std::vector<std::string>& arg
   return result;
 }
 
+ToolResult run_tool_as(unsigned uid, const std::string& tool, const std::vector<std::string>& args) {
+  TempDir capture;
+  fs::permissions(capture.path(), fs::perms::all, fs::perm_options::add);
+  const fs::path out_file = capture / "stdout", err_file = capture / "stderr";
+  std::vector<std::string> argv_s = {tool_path(tool).string()};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int out = open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    const int err = open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    dup2(out, 1);
+    dup2(err, 2);
+    if (setgid(uid) != 0 || setuid(uid) != 0) _exit(126);
+    char* envp[] = {nullptr};
+    execve(argv[0], argv.data(), envp);
+    _exit(127);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ToolResult result;
+  result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.out = read_file(out_file);
+  result.err = read_file(err_file);
+  return result;
+}
+
 TempDir::TempDir() {
   std::random_device rd;
   path_ = fs::temp_directory_path() / ("mesowave-test-" + std::to_string(::getpid()) + "-" + std::to_string(rd()));

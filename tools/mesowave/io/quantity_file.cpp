@@ -1,5 +1,6 @@
 #include "mesowave/io/quantity_file.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -29,9 +30,16 @@ std::vector<Quantity> parse_toml(const std::string& text, const std::string& ori
     const auto& at = e.source().begin;
     throw InputError(origin + ":" + std::to_string(at.line) + ": " + std::string(e.description()));
   }
+  // toml++ keeps tables sorted by key; people read files top to bottom.
+  std::vector<std::pair<std::string_view, const toml::node*>> entries;
+  for (const auto& [key, node] : root) entries.emplace_back(key.str(), &node);
+  std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    return a.second->source().begin.line < b.second->source().begin.line;
+  });
   std::vector<Quantity> quantities;
-  for (const auto& [key, node] : root) {
-    const std::string name(key.str());
+  for (const auto& [key, node_ptr] : entries) {
+    const toml::node& node = *node_ptr;
+    const std::string name(key);
     const std::string where = origin + ": [" + name + "]";
     const toml::table* entry = node.as_table();
     if (!entry) throw InputError(where + " must be a table with value, unit and source");

@@ -1,0 +1,173 @@
+// The lab tools from the command line: results, and every bad input of issue 2
+// answered with one line, exit status 1 and no file written.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_tool.hpp"
+
+using namespace mesowave::test;
+using nlohmann::json;
+
+namespace {
+
+const std::vector<std::string> kUpv = {"--path-mm", "150", "--t-p-us", "35", "--t-s-us", "55.1", "--density-kg-m3", "2129.56"};
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+// The contract for bad input: exit 1, a single line "error: ..." naming
+// `needle`, nothing on stdout, no file in `dir`.
+void expect_rejected(const ToolResult& r, const std::string& needle, const TempDir& dir) {
+  EXPECT_EQ(r.exit_status, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(count_files(dir.path()), 0u);
+}
+
+}  // namespace
+
+TEST(UpvCli, PrintsThePaperModuli) {
+  TempDir dir;
+  const auto r = run_tool("mw-upv", with(kUpv, {"--out", (dir / "upv.json").string()}));
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const auto j = json::parse(r.out);
+  EXPECT_NEAR(j["E_d_GPa"].get<double>(), 36.6714, 1e-4);
+  EXPECT_NEAR(j["nu_d"].get<double>(), 0.16179, 1e-5);
+  EXPECT_EQ(json::parse(read_file(dir / "upv.json")), j);
+}
+
+TEST(UpvCli, RejectsBadInput) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string needle;
+  };
+  const std::vector<Case> cases = {
+      {{"--path-mm", "0", "--t-p-us", "35", "--t-s-us", "55", "--density-kg-m3", "2129"}, "--path-mm (0 mm)"},
+      {{"--path-mm", "150", "--t-p-us", "-35", "--t-s-us", "55", "--density-kg-m3", "2129"}, "--t-p-us (-35 us)"},
+      {{"--path-mm", "150", "--t-p-us", "nan", "--t-s-us", "55", "--density-kg-m3", "2129"}, "--t-p-us (nan us)"},
+      {{"--path-mm", "150", "--t-p-us", "35", "--t-s-us", "inf", "--density-kg-m3", "2129"}, "--t-s-us (inf us)"},
+      {{"--path-mm", "150", "--t-p-us", "35", "--t-s-us", "55", "--density-kg-m3", "-1"}, "--density-kg-m3 (-1"},
+      {{"--path-mm", "150", "--t-p-us", "35", "--t-s-us", "30", "--density-kg-m3", "2129"}, "t_s (30 us) must exceed t_p (35 us)"},
+      {{"--path-mm", "150", "--t-p-us", "35", "--t-s-us", "35", "--density-kg-m3", "2129"}, "must exceed t_p"},
+      {{"--path-mm", "150", "--t-p-us", "35", "--t-s-us", "45", "--density-kg-m3", "2129"}, "sqrt(2)"},
+      {{"--path-mm", "150", "--t-p-us", "35", "--density-kg-m3", "2129"}, "--nu-assumed"},
+      {{"--path-mm", "150", "--t-p-us", "abc", "--t-s-us", "55", "--density-kg-m3", "2129"}, "--t-p-us"},
+  };
+  for (const auto& c : cases) {
+    TempDir dir;
+    SCOPED_TRACE(c.needle);
+    expect_rejected(run_tool("mw-upv", with(c.args, {"--out", (dir / "upv.json").string()})), c.needle, dir);
+  }
+}
+
+TEST(EstaticCli, WritesTable1) {
+  TempDir dir;
+  const auto r = run_tool("mw-estatic", {"--E-d-GPa", "36.68", "--density-kg-m3", "2129.56", "--E-st-measured-GPa",
+                                         "27.42", "--table", (dir / "t1.csv").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const auto j = json::parse(r.out);
+  EXPECT_NEAR(j["E_st_bs8110_GPa"].get<double>(), 26.85, 1e-9);
+  EXPECT_NEAR(j["rel_error_mean_pct"].get<double>(), 9.109, 1e-3);
+  const auto table = read_file(dir / "t1.csv");
+  EXPECT_NE(table.find("Popovics,Eq. (13)"), std::string::npos);
+  EXPECT_NE(table.find("static test"), std::string::npos);
+}
+
+TEST(EstaticCli, RejectsBadInput) {
+  TempDir dir;
+  const auto table = (dir / "t1.csv").string();
+  expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "12", "--density-kg-m3", "2129", "--table", table}),
+                  "too small for BS 8110-2", dir);
+  expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "0", "--density-kg-m3", "2129", "--table", table}),
+                  "--E-d-GPa (0 GPa)", dir);
+  expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "36", "--density-kg-m3", "0", "--table", table}),
+                  "--density-kg-m3 (0 kg/m3)", dir);
+  expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "36", "--density-kg-m3", "2129", "--E-st-measured-GPa", "-3",
+                                          "--table", table}),
+                  "--E-st-measured-GPa (-3 GPa)", dir);
+}
+
+TEST(SpecimenCli, OneCubeAndABatch) {
+  TempDir dir;
+  auto r = run_tool("mw-specimen", {"--shape", "cube", "--side-mm", "150", "--mass-g", "7187.265"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NEAR(json::parse(r.out)["density_kg_m3"].get<double>(), 2129.56, 1e-9);
+
+  write_file(dir / "batch.csv",
+             "specimen,shape,mass_g,side_mm,diameter_mm,height_mm\nA,cube,7187.265,150,,\n"
+             "B,cylinder,3000,,100,180\n");
+  r = run_tool("mw-specimen", {"--csv", (dir / "batch.csv").string(), "--table", (dir / "each.csv").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const auto j = json::parse(r.out);
+  const double cylinder = 3.0 / (3.14159265358979323846 / 4 * 0.1 * 0.1 * 0.18);
+  EXPECT_EQ(j["specimens"].get<int>(), 2);
+  EXPECT_NEAR(j["density_kg_m3"].get<double>(), (2129.56 + cylinder) / 2, 1e-9);
+  EXPECT_NE(read_file(dir / "each.csv").find("B,cylinder"), std::string::npos);
+}
+
+TEST(SpecimenCli, RejectsBadInput) {
+  {
+    TempDir dir;
+    expect_rejected(run_tool("mw-specimen", {"--side-mm", "150", "--mass-g", "0", "--out", (dir / "o").string()}),
+                    "--mass-g (0 g)", dir);
+  }
+  {
+    TempDir dir;
+    expect_rejected(run_tool("mw-specimen", {"--side-mm", "-1", "--mass-g", "7", "--out", (dir / "o").string()}),
+                    "--side-mm (-1 mm)", dir);
+  }
+  {
+    TempDir dir;
+    expect_rejected(run_tool("mw-specimen", {"--shape", "cylinder", "--diameter-mm", "100", "--mass-g", "7",
+                                             "--out", (dir / "o").string()}),
+                    "--height-mm", dir);
+  }
+  TempDir data;
+  write_file(data / "bad.csv", "specimen,mass_kg,side_mm\nA,7.2,150\n");
+  TempDir out;
+  expect_rejected(run_tool("mw-specimen", {"--csv", (data / "bad.csv").string(), "--out", (out / "o").string()}),
+                  "unknown column 'mass_kg'", out);
+  write_file(data / "nan.csv", "specimen,mass_g,side_mm\nA,7200,abc\n");
+  expect_rejected(run_tool("mw-specimen", {"--csv", (data / "nan.csv").string(), "--out", (out / "o").string()}),
+                  "nan.csv:2: column 'side_mm'", out);
+}
+
+TEST(FromFiles, LabDataTomlAndToolJsonFillOptions) {
+  TempDir dir;
+  write_file(dir / "upv.toml",
+             "[path]\nvalue = 150.0\nunit = \"mm\"\nsource = \"paper\"\ncite = \"s\"\n"
+             "[t_p]\nvalue = 35.0\nunit = \"us\"\nsource = \"paper\"\ncite = \"s\"\n"
+             "[t_s]\nvalue = 55.1\nunit = \"us\"\nsource = \"paper\"\ncite = \"s\"\n");
+  write_file(dir / "density.json", "{\"density_kg_m3\": 2129.56, \"unrelated_key\": 1}");
+  const auto r = run_tool("mw-upv", {"--from", (dir / "density.json").string(), "--from", (dir / "upv.toml").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NEAR(json::parse(r.out)["E_d_GPa"].get<double>(), 36.6714, 1e-4);
+  // The command line wins over the files.
+  const auto o = run_tool("mw-upv", {"--from", (dir / "density.json").string(), "--from", (dir / "upv.toml").string(),
+                                     "--path-mm", "300"});
+  EXPECT_NEAR(json::parse(o.out)["v_p_m_s"].get<double>(), 300e-3 / 35e-6, 1e-6);
+}
+
+TEST(FromFiles, ABadLabFileIsNamed) {
+  TempDir dir;
+  write_file(dir / "bad.toml", "[t_p]\nvalue = 35.0\nunit = \"us\"\nsource = \"measured\"\n");
+  TempDir out;
+  expect_rejected(run_tool("mw-upv", {"--from", (dir / "bad.toml").string(), "--out", (out / "o").string()}),
+                  "bad.toml: [t_p] has source 'measured'", out);
+}
+
+TEST(Help, EveryToolTeachesAndVersions) {
+  for (const std::string tool : {"mw-specimen", "mw-upv", "mw-estatic", "mw-compare", "mw-prov"}) {
+    const auto h = run_tool(tool, {"--help"});
+    EXPECT_EQ(h.exit_status, 0) << tool;
+    EXPECT_NE(h.out.find("--db"), std::string::npos) << tool;
+    const auto v = run_tool(tool, {"--version"});
+    EXPECT_EQ(v.exit_status, 0) << tool;
+    EXPECT_EQ(v.out.rfind(tool + " ", 0), 0u) << v.out;
+  }
+}
