@@ -19,9 +19,13 @@ namespace fs = std::filesystem;
 fs::path tool_path(const std::string& tool) { return fs::path(MESOWAVE_BIN_DIR) / tool; }
 
 ToolResult run_tool(const std::string& tool, const std::vector<std::string>& args, const std::vector<std::string>& env) {
+  return run_command(tool_path(tool), args, env);
+}
+
+ToolResult run_command(const fs::path& program, const std::vector<std::string>& args, const std::vector<std::string>& env) {
   TempDir capture;
   const fs::path out_file = capture / "stdout", err_file = capture / "stderr";
-  std::vector<std::string> argv_s = {tool_path(tool).string()};
+  std::vector<std::string> argv_s = {program.string()};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : argv_s) argv.push_back(a.data());

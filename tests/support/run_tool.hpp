@@ -17,6 +17,10 @@ struct ToolResult {
 ToolResult run_tool(const std::string& tool, const std::vector<std::string>& args,
                     const std::vector<std::string>& env = {});
 
+/// Runs any program (absolute path) the same way.
+ToolResult run_command(const std::filesystem::path& program, const std::vector<std::string>& args,
+                       const std::vector<std::string>& env = {});
+
 /// As run_tool, but the tool runs as user `uid` (for read-only checks when
 /// the tests run as root, who can write anywhere). Only root can do this.
 ToolResult run_tool_as(unsigned uid, const std::string& tool, const std::vector<std::string>& args);

@@ -1,9 +1,12 @@
 #include "mesowave/prov/queries.hpp"
 
 #include <filesystem>
+#include <functional>
+#include <limits>
 #include <set>
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
 #include "mesowave/io/sha256.hpp"
 
 namespace mesowave::prov {
@@ -161,6 +164,107 @@ std::vector<StaleInput> stale_inputs(const Database& db) {
     }
   }
   return stale;
+}
+
+namespace {
+
+void flatten(const nlohmann::ordered_json& j, const std::string& prefix, std::map<std::string, std::string>& out) {
+  if (j.is_object()) {
+    for (const auto& [k, v] : j.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, out);
+  } else {
+    out[prefix] = j.is_string() ? j.get<std::string>() : j.dump();
+  }
+}
+
+std::vector<RunDiff::Value> diff_maps(const std::map<std::string, std::string>& a,
+                                      const std::map<std::string, std::string>& b) {
+  std::set<std::string> keys;
+  for (const auto& [k, v] : a) keys.insert(k);
+  for (const auto& [k, v] : b) keys.insert(k);
+  std::vector<RunDiff::Value> out;
+  for (const auto& k : keys) {
+    const auto ia = a.find(k), ib = b.find(k);
+    const std::string va = ia == a.end() ? "" : ia->second, vb = ib == b.end() ? "" : ib->second;
+    if (ia == a.end() || ib == b.end() || va != vb) out.push_back({k, va, vb});
+  }
+  return out;
+}
+
+std::map<std::string, std::string> file_map(const std::vector<FileRecord>& files) {
+  std::map<std::string, std::string> m;
+  for (const auto& f : files) m[f.path] = f.sha256;
+  return m;
+}
+
+}  // namespace
+
+RunDiff diff_runs(const Database& db, std::int64_t a, std::int64_t b) {
+  const RunRecord ra = load_run(db, a), rb = load_run(db, b);
+  RunDiff d;
+  std::map<std::string, std::string> pa, pb;
+  flatten(ra.params, "", pa);
+  flatten(rb.params, "", pb);
+  if (ra.tool != rb.tool) pa["(tool)"] = ra.tool, pb["(tool)"] = rb.tool;
+  if (ra.version != rb.version) pa["(version)"] = ra.version, pb["(version)"] = rb.version;
+  d.params = diff_maps(pa, pb);
+  d.inputs = diff_maps(file_map(ra.inputs), file_map(rb.inputs));
+  d.outputs = diff_maps(file_map(ra.outputs), file_map(rb.outputs));
+  std::map<std::string, std::string> ma, mb;
+  for (const auto& m : ra.metrics) ma[m.name] = format_exact(m.value) + (m.unit.empty() ? "" : " " + m.unit);
+  for (const auto& m : rb.metrics) mb[m.name] = format_exact(m.value) + (m.unit.empty() ? "" : " " + m.unit);
+  d.metrics = diff_maps(ma, mb);
+  return d;
+}
+
+std::vector<OutputCheck> verify_outputs(const Database& db) {
+  auto rows = db.prepare(
+      "SELECT f.path, f.run_id, f.sha256 FROM files f JOIN runs r ON r.id = f.run_id"
+      " WHERE f.role = 'output' AND r.exit_status = 0 AND f.run_id ="
+      " (SELECT max(g.run_id) FROM files g JOIN runs s ON s.id = g.run_id"
+      "  WHERE g.path = f.path AND g.role = 'output' AND s.exit_status = 0) ORDER BY f.path");
+  HashCache hashes;
+  std::vector<OutputCheck> checks;
+  while (rows.step()) checks.push_back({rows.text(0), rows.integer(1), rows.text(2), hashes(rows.text(0))});
+  return checks;
+}
+
+std::vector<MetricRow> metric_history(const Database& db, const std::string& name, const std::optional<std::string>& tool,
+                                      const std::string& by_param) {
+  std::string sql = std::string("SELECT r.id, r.tool, r.version, r.started_at, r.exit_status, r.wall_s, r.error,") +
+                    " m.value, m.unit, r.params FROM metrics m JOIN runs r ON r.id = m.run_id WHERE m.name = ?1";
+  if (tool) sql += " AND r.tool = ?2";
+  sql += " ORDER BY r.id";
+  auto rows = db.prepare(sql);
+  rows.bind(1, name);
+  if (tool) rows.bind(2, *tool);
+  std::vector<MetricRow> out;
+  while (rows.step()) {
+    MetricRow row{summary_from(rows), rows.real(7), rows.text(8), ""};
+    if (!by_param.empty()) {
+      std::map<std::string, std::string> params;
+      flatten(nlohmann::ordered_json::parse(rows.text(9)), "", params);
+      // A bare option name matches it at any depth (a subcommand's options nest).
+      for (const auto& [k, v] : params)
+        if (k == by_param || (k.size() > by_param.size() && k.ends_with("." + by_param))) row.by_value = v;
+    }
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
+std::vector<ChangedUpstream> why_changed(const Database& db, const std::string& path) {
+  const LineageNode root = lineage(db, path);
+  std::vector<ChangedUpstream> changed;
+  std::function<void(const LineageNode&, std::size_t)> walk = [&](const LineageNode& n, std::size_t depth) {
+    if (!n.producer) return;
+    for (const auto& input : n.inputs)
+      if (input.current_sha256 != input.sha256)
+        changed.push_back({input.path, input.sha256, input.current_sha256, *n.producer, depth});
+    for (const auto& input : n.inputs) walk(input, depth + 1);
+  };
+  walk(root, 1);
+  std::stable_sort(changed.begin(), changed.end(), [](const auto& a, const auto& b) { return a.depth < b.depth; });
+  return changed;
 }
 
 }  // namespace mesowave::prov

@@ -62,6 +62,57 @@ struct StaleInput {
 
 std::vector<StaleInput> stale_inputs(const Database& db);
 
+/// What differs between two runs: parameters (flattened to dotted keys),
+/// input and output files (by path: content changed, only in A, only in B),
+/// and metrics.
+struct RunDiff {
+  struct Value {
+    std::string key;
+    std::string a, b;  ///< "" where absent
+  };
+  std::vector<Value> params, inputs, outputs, metrics;
+  bool empty() const { return params.empty() && inputs.empty() && outputs.empty() && metrics.empty(); }
+};
+
+RunDiff diff_runs(const Database& db, std::int64_t a, std::int64_t b);
+
+/// Every output path's live version (newest successful run that wrote it)
+/// against the file on disk now.
+struct OutputCheck {
+  std::string path;
+  std::int64_t run_id = 0;
+  std::string recorded_sha256;
+  std::string current_sha256;  ///< empty if missing
+  bool ok() const { return recorded_sha256 == current_sha256; }
+};
+
+std::vector<OutputCheck> verify_outputs(const Database& db);
+
+/// One named metric across runs, oldest first, with an optional parameter
+/// alongside (e.g. the centre frequency of each run).
+struct MetricRow {
+  RunSummary run;
+  double value = 0;
+  std::string unit;
+  std::string by_value;  ///< the requested parameter, "" if absent
+};
+
+std::vector<MetricRow> metric_history(const Database& db, const std::string& name,
+                                      const std::optional<std::string>& tool = std::nullopt,
+                                      const std::string& by_param = "");
+
+/// Why make would re-run FILE: every file in its lineage whose content now
+/// differs from what the run downstream of it read, nearest first.
+struct ChangedUpstream {
+  std::string path;
+  std::string recorded_sha256;
+  std::string current_sha256;  ///< empty if missing
+  RunSummary read_by;          ///< the run that read the recorded version
+  std::size_t depth = 0;       ///< 1 = a direct input of the file's own run
+};
+
+std::vector<ChangedUpstream> why_changed(const Database& db, const std::string& path);
+
 /// Current SHA-256 of a file, or "" if it does not exist; memoised per path.
 class HashCache {
 public:

@@ -188,4 +188,115 @@ nlohmann::ordered_json stale_json(const std::vector<StaleInput>& stale) {
   return list;
 }
 
+namespace {
+
+std::string file_state(const std::string& recorded, const std::string& current) {
+  if (current.empty()) return "missing";
+  return recorded == current ? "unchanged" : "changed";
+}
+
+}  // namespace
+
+std::string diff_text(std::int64_t a, std::int64_t b, const RunDiff& d, const fs::path& base) {
+  if (d.empty()) return "runs " + std::to_string(a) + " and " + std::to_string(b) + " do not differ\n";
+  std::ostringstream out;
+  const std::string ra = "run " + std::to_string(a), rb = "run " + std::to_string(b);
+  auto section = [&](const std::string& title, const std::vector<RunDiff::Value>& values, bool files) {
+    if (values.empty()) return;
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& v : values) {
+      auto show = [&](const std::string& x) { return x.empty() ? std::string("-") : files ? short_hash(x) : x; };
+      rows.push_back({files ? display_path(v.key, base) : v.key, show(v.a), show(v.b)});
+    }
+    out << title << ":\n" << io::format_text_table({files ? "path" : "name", ra, rb}, rows) << "\n";
+  };
+  section("parameters", d.params, false);
+  section("inputs (sha256)", d.inputs, true);
+  section("outputs (sha256)", d.outputs, true);
+  section("metrics", d.metrics, false);
+  return out.str();
+}
+
+nlohmann::ordered_json diff_json(std::int64_t a, std::int64_t b, const RunDiff& d) {
+  auto list = [](const std::vector<RunDiff::Value>& values) {
+    auto out = nlohmann::ordered_json::array();
+    for (const auto& v : values) out.push_back({{"key", v.key}, {"a", v.a}, {"b", v.b}});
+    return out;
+  };
+  return {{"a", a}, {"b", b}, {"params", list(d.params)}, {"inputs", list(d.inputs)},
+          {"outputs", list(d.outputs)}, {"metrics", list(d.metrics)}};
+}
+
+std::string verify_text(const std::vector<OutputCheck>& checks, const fs::path& base) {
+  std::vector<std::vector<std::string>> rows;
+  std::size_t bad = 0;
+  for (const auto& c : checks) {
+    if (c.ok()) continue;
+    ++bad;
+    rows.push_back({display_path(c.path, base), std::to_string(c.run_id), file_state(c.recorded_sha256, c.current_sha256),
+                    short_hash(c.recorded_sha256), short_hash(c.current_sha256)});
+  }
+  std::string out = std::to_string(checks.size()) + " recorded outputs re-hashed: " +
+                    std::to_string(checks.size() - bad) + " as recorded, " + std::to_string(bad) + " missing or changed\n";
+  if (bad) out += io::format_text_table({"output", "run", "state", "recorded", "now"}, rows);
+  return out;
+}
+
+nlohmann::ordered_json verify_json(const std::vector<OutputCheck>& checks) {
+  auto list = nlohmann::ordered_json::array();
+  for (const auto& c : checks)
+    list.push_back({{"path", c.path}, {"run", c.run_id}, {"state", file_state(c.recorded_sha256, c.current_sha256)},
+                    {"recorded_sha256", c.recorded_sha256}, {"current_sha256", c.current_sha256}});
+  return list;
+}
+
+std::string metrics_text(const std::string& name, const std::vector<MetricRow>& rows, const std::string& by) {
+  if (rows.empty()) return "no run recorded a metric named '" + name + "'\n";
+  std::vector<std::vector<std::string>> table;
+  for (const auto& r : rows) {
+    std::vector<std::string> row = {std::to_string(r.run.id), r.run.tool, r.run.started_at};
+    if (!by.empty()) row.push_back(r.by_value);
+    row.push_back(format_number(r.value));
+    row.push_back(r.unit);
+    table.push_back(row);
+  }
+  std::vector<std::string> header = {"run", "tool", "started (UTC)"};
+  if (!by.empty()) header.push_back(by);
+  header.push_back(name);
+  header.push_back("unit");
+  return io::format_text_table(header, table);
+}
+
+nlohmann::ordered_json metrics_json(const std::string& name, const std::vector<MetricRow>& rows, const std::string& by) {
+  auto list = nlohmann::ordered_json::array();
+  for (const auto& r : rows) {
+    nlohmann::ordered_json j = {{"run", r.run.id}, {"tool", r.run.tool}, {"started_at", r.run.started_at},
+                                {"name", name},     {"value", r.value},   {"unit", r.unit}};
+    if (!by.empty()) j[by] = r.by_value;
+    list.push_back(j);
+  }
+  return list;
+}
+
+std::string why_text(const std::string& path, const std::vector<ChangedUpstream>& changed, const fs::path& base) {
+  const std::string shown = display_path(fs::absolute(path).lexically_normal().string(), base);
+  if (changed.empty()) return shown + " is up to date: every file it was made from is as its runs read it\n";
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& c : changed)
+    rows.push_back({std::to_string(c.depth), display_path(c.path, base), file_state(c.recorded_sha256, c.current_sha256),
+                    "run " + std::to_string(c.read_by.id) + " " + c.read_by.tool, short_hash(c.recorded_sha256),
+                    short_hash(c.current_sha256)});
+  return shown + " would be re-made: these files changed since the runs that made it read them\n" +
+         io::format_text_table({"depth", "file", "state", "read by", "recorded", "now"}, rows);
+}
+
+nlohmann::ordered_json why_json(const std::string& path, const std::vector<ChangedUpstream>& changed) {
+  auto list = nlohmann::ordered_json::array();
+  for (const auto& c : changed)
+    list.push_back({{"path", c.path}, {"depth", c.depth}, {"state", file_state(c.recorded_sha256, c.current_sha256)},
+                    {"read_by", summary_json(c.read_by)}, {"recorded_sha256", c.recorded_sha256},
+                    {"current_sha256", c.current_sha256}});
+  return {{"file", path}, {"up_to_date", changed.empty()}, {"changed", list}};
+}
+
 }  // namespace mesowave::prov

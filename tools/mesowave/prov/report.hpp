@@ -26,4 +26,16 @@ nlohmann::ordered_json lineage_json(const LineageNode& root);
 std::string stale_text(const std::vector<StaleInput>& stale, const std::filesystem::path& base);
 nlohmann::ordered_json stale_json(const std::vector<StaleInput>& stale);
 
+std::string diff_text(std::int64_t a, std::int64_t b, const RunDiff& diff, const std::filesystem::path& base);
+nlohmann::ordered_json diff_json(std::int64_t a, std::int64_t b, const RunDiff& diff);
+
+std::string verify_text(const std::vector<OutputCheck>& checks, const std::filesystem::path& base);
+nlohmann::ordered_json verify_json(const std::vector<OutputCheck>& checks);
+
+std::string metrics_text(const std::string& name, const std::vector<MetricRow>& rows, const std::string& by_param);
+nlohmann::ordered_json metrics_json(const std::string& name, const std::vector<MetricRow>& rows, const std::string& by_param);
+
+std::string why_text(const std::string& path, const std::vector<ChangedUpstream>& changed, const std::filesystem::path& base);
+nlohmann::ordered_json why_json(const std::string& path, const std::vector<ChangedUpstream>& changed);
+
 }  // namespace mesowave::prov
