@@ -63,7 +63,13 @@ ToolResult run_tool_as(unsigned uid, const std::string& tool, const std::vector<
   TempDir capture;
   fs::permissions(capture.path(), fs::perms::all, fs::perm_options::add);
   const fs::path out_file = capture / "stdout", err_file = capture / "stderr";
-  std::vector<std::string> argv_s = {tool_path(tool).string()};
+  // The checkout may sit in a home directory the other user cannot enter:
+  // run a copy of the tool from the world-readable capture directory.
+  const fs::path program = capture / tool;
+  fs::copy_file(tool_path(tool), program);
+  fs::permissions(program, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                               fs::perms::others_read | fs::perms::others_exec);
+  std::vector<std::string> argv_s = {program.string()};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : argv_s) argv.push_back(a.data());
