@@ -31,8 +31,6 @@ void append(std::vector<Segment>& program, double duration, double to) {
 
 double eps_c1_of(double f_c_Pa) { return 0.7 * std::pow(f_c_Pa / 1e6, 0.31) * 1e-3; }  // EN 1992-1-1 Table 3.1
 
-double sargin_stress(double eta, double k, double f_c) { return f_c * (k * eta - eta * eta) / (1 + (k - 2) * eta); }
-
 }  // namespace
 
 double sargin_strain(double sigma, double E, double f_c, double eps_c1) {
@@ -126,14 +124,11 @@ SyntheticCompressionTests synthetic_compression_tests(const SyntheticCompression
     const double t = t_first + double(i) * dtf, sigma = spec.failure_rate_Pa_s * t;
     push_failure(t, sigma, sargin_strain(sigma, spec.E_Pa, spec.strength_Pa, eps_c1));
   }
-  // Past the peak: a moment on the descending branch, then the specimen breaks.
+  // Past the peak the specimen crushes within a second: the stress falls while
+  // the shortening grows.
   double eta = 1.0;
-  for (int j = 0; j < 3; ++j, ++i) {
-    eta += 0.04;
-    push_failure(t_first + double(i) * dtf, sargin_stress(eta, k, spec.strength_Pa), eta * eps_c1);
-  }
-  for (double fraction : {0.4, 0.1, 0.02}) {
-    eta += 0.1;
+  for (double fraction : {0.97, 0.9, 0.75, 0.45, 0.15, 0.03}) {
+    eta += 0.05;
     push_failure(t_first + double(i++) * dtf, fraction * spec.strength_Pa, eta * eps_c1);
   }
   return out;

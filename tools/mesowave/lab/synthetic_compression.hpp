@@ -19,8 +19,8 @@
 //     sigma / f_c = (k eta - eta^2) / (1 + (k - 2) eta),  eta = eps / eps_c1,
 //     k = 1.05 E eps_c1 / f_c,  eps_c1 = 0.7 f_c^0.31 permille (Table 3.1, f_c in MPa),
 // whose secant to 0.4 f_c is close to E and whose peak is exactly f_c at
-// eps_c1 (the realistic softening near failure); after the peak it follows the
-// descending branch for a moment, then the specimen breaks and the force drops.
+// eps_c1 (the realistic softening near failure); after the peak the specimen
+// crushes within a second: the stress falls to nothing while the shortening grows.
 //
 // Hard cases for tests: a cycle left out (the machine holds at the lower
 // stress instead), and an extensometer channel that drops out (empty fields or
