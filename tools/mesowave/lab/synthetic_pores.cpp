@@ -77,7 +77,12 @@ SyntheticCtStack synthetic_ct_stack(const SyntheticCtSpec& spec) {
   const double target = spec.porosity * double(voxels) * kSubN;
   SyntheticCtStack out;
   while (double(covered) < target) {
-    const double r = log_uniform(rng, spec.pore_radius_min_px, spec.pore_radius_max_px);
+    // Near the target, smaller pores: the last one must not overshoot it by much.
+    const double deficit = (target - double(covered)) / kSubN;  // voxels
+    const double cluster = spec.shape == PoreShape::irregular ? 3.2 : 1.0;
+    const double r_fit = std::cbrt(3.0 * deficit / (4.0 * M_PI * cluster));
+    const double r = log_uniform(rng, spec.pore_radius_min_px,
+                                 std::clamp(r_fit, spec.pore_radius_min_px, spec.pore_radius_max_px));
     const double cx = rng.uniform(0, n), cy = rng.uniform(0, n), cz = rng.uniform(0, nz);
     for (const Ball& b : pore_balls(rng, cx, cy, cz, r, spec.shape, false))
       for (int z = std::max(0, int(std::floor(b.z - b.r))); z <= std::min(nz - 1, int(b.z + b.r)); ++z)
@@ -162,7 +167,11 @@ SyntheticFace synthetic_face(const SyntheticFaceSpec& spec) {
   const double target = spec.porosity * double(pixels) * kSubN;
   SyntheticFace out;
   while (double(covered) < target) {
-    const double r = log_uniform(rng, spec.pore_radius_min_px, spec.pore_radius_max_px);
+    const double deficit = (target - double(covered)) / kSubN;  // pixels
+    const double cluster = spec.shape == PoreShape::irregular ? 2.5 : 1.0;
+    const double r_fit = std::sqrt(deficit / (M_PI * cluster));
+    const double r = log_uniform(rng, spec.pore_radius_min_px,
+                                 std::clamp(r_fit, spec.pore_radius_min_px, spec.pore_radius_max_px));
     const double cx = rng.uniform(0, w), cy = rng.uniform(0, h);
     const double tone = spec.plaster_level + rng.uniform(-6, 6);
     for (const Ball& b : pore_balls(rng, cx, cy, 0, r, spec.shape, true))

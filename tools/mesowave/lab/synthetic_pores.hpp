@@ -11,7 +11,8 @@
 //
 // Pores are added one by one at random places (spheres/discs, or irregular
 // clusters of 2-4 overlapping ones) until the pore fraction reaches the target;
-// overlaps are unions. Each voxel (pixel) is split into 3x3x3 (4x4) subsamples
+// overlaps are unions, and near the target the radii shrink so that the last
+// pore does not overshoot it by much. Each voxel (pixel) is split into 3x3x3 (4x4) subsamples
 // and its pore coverage c in [0, 1] is the fraction of subsamples inside a
 // pore; its gray level mixes pore and solid by c (partial volume), plus
 // Gaussian noise. The TRUE porosity is sum(c) / (number of specimen voxels):
