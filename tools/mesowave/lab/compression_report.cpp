@@ -140,20 +140,25 @@ std::string figure5_script(const CompressionAnalysis& a, const std::filesystem::
     const auto& rec = *a.cyclic_record;
     const auto eps = mean_extensometer_strain(rec, *a.cyclic, a.gauge_length_m);
     std::vector<double> t, sig, e, x;
-    for (std::size_t i = 0; i < rec.t_s.size(); ++i) {
+    // Up to the end of the last cycle: what follows (unloading, sensors taken
+    // off) is not part of the test.
+    const std::size_t last = std::min(rec.t_s.size() - 1, a.cyclic->cycles.back().end + 1);
+    // From the start - or, when an extensometer was zeroed as the first ramp
+    // began, from the end of the first lower reading.
+    bool zeroed = false;
+    for (const auto& c : a.cyclic->cycles) zeroed = zeroed || c.note.find("jumps") != std::string::npos;
+    const auto& c1 = a.cyclic->cycles.front();
+    const std::size_t first = zeroed && c1.lower ? c1.lower->last + 1 : 0;
+    for (std::size_t i = first; i <= last; ++i) {
       t.push_back(rec.t_s[i]);
       sig.push_back(rec.stress_Pa[i] / 1e6);
       e.push_back(std::isfinite(eps[i]) ? eps[i] * 1e3 : NAN);
       x.push_back(!rec.crosshead_m.empty() && a.specimen_height_m
-                      ? (rec.crosshead_m[i] - rec.crosshead_m.front()) / *a.specimen_height_m * 1e3
+                      ? (rec.crosshead_m[i] - rec.crosshead_m[first]) / *a.specimen_height_m * 1e3
                       : NAN);
     }
-    // Strains from the first sample, so that the curves start at the origin -
-    // unless an extensometer was zeroed during the record: then from the lower
-    // reading of the evaluated cycle.
-    bool jumped = false;
-    for (const auto& c : a.cyclic->cycles) jumped = jumped || c.note.find("jumps") != std::string::npos;
-    const double e0 = (!jumped && std::isfinite(e.front())) ? e.front() : a.cyclic->eps_b * 1e3;
+    // Strains from the first plotted sample, so that the curves start at the origin.
+    const double e0 = std::isfinite(e.front()) ? e.front() : a.cyclic->eps_b * 1e3;
     for (double& v : e) v -= e0;
     s += io::gnuplot_datablock("cyc", {t, sig, e, x});
     std::vector<double> rt, rs;
@@ -167,7 +172,14 @@ std::string figure5_script(const CompressionAnalysis& a, const std::filesystem::
   if (a.failure) {
     const auto& rec = *a.failure_record;
     std::vector<double> sig, e;
-    for (std::size_t i = 0; i < rec.t_s.size(); ++i) {
+    // Up to the first sample after the peak below 20 % of it: the crushed
+    // specimen and the retracting crosshead tell nothing more.
+    std::size_t last = a.failure->peak_index;
+    const auto& fs = a.failure->strain;
+    while (last + 1 < rec.t_s.size() && rec.stress_Pa[last] >= 0.2 * a.failure->sigma_max_Pa &&
+           (fs.empty() || fs[last + 1] >= fs[last]))
+      ++last;
+    for (std::size_t i = 0; i <= last; ++i) {
       sig.push_back(rec.stress_Pa[i] / 1e6);
       e.push_back(a.failure->strain.empty() ? NAN : a.failure->strain[i] * 1e3);
     }
