@@ -143,6 +143,7 @@ int main(int argc, char** argv) {
       picks[k + "_located_us"] = onset.locator.time_s / units::us;
       picks[k + "_locator"] = onset.locator.method;
       picks[k + "_delay_us"] = delay;
+      if (onset.contrast > 0) picks[k + "_onset_contrast"] = onset.contrast;
       warnings.insert(warnings.end(), onset.warnings.begin(), onset.warnings.end());
       traces.push_back({nullptr, onset, delay * units::us, wave + " wave", k, colour});
       return std::pair{std::move(record), tof_us};

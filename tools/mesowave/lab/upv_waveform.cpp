@@ -14,6 +14,7 @@
 #include "mesowave/io/csv.hpp"
 #include "mesowave/io/gnuplot.hpp"
 #include "mesowave/lab/compression_record.hpp"
+#include "mesowave/signal/envelope.hpp"
 #include "mesowave/signal/fft.hpp"
 #include "mesowave/signal/validate.hpp"
 
@@ -254,6 +255,27 @@ Onset pick_onset(const signal::Signal& raw, const OnsetOptions& o) {
     if (onset.locator.index <= first_index + 1)
       throw InputError("record " + s.name + ": the envelope is largest at the start of the search window (" +
                        us(onset.search_begin_s) + "): the arrival lies before it - " + before);
+    if (onset.locator.quality < 1.5)
+      onset.warnings.push_back("record " + s.name + ": the envelope has competing peaks in " + us(onset.search_begin_s) +
+                               " .. " + us(onset.search_end_s) + " (peak ratio " + format_fixed(onset.locator.quality, 2) +
+                               "): the arrival is ambiguous there");
+    // A stronger arrival right after the window: the wave may come later than
+    // the window allows (an S wave in a material with nu > 0.45, fresh paste).
+    const auto e = signal::envelope(std::span<const double>(s.samples), env.hilbert);
+    const auto in_window = [&](double a, double b) {
+      double m = 0;
+      for (std::size_t i = 0; i < s.size(); ++i)
+        if (s.time(i) >= a && s.time(i) <= b) m = std::max(m, e[i]);
+      return m;
+    };
+    const double width = onset.search_end_s - onset.search_begin_s;
+    const double inside = in_window(onset.search_begin_s, onset.search_end_s);
+    const double after = in_window(onset.search_end_s, onset.search_end_s + 3 * width);
+    if (after > 1.5 * inside)
+      onset.warnings.push_back("record " + s.name + ": a stronger arrival follows the search window (envelope " +
+                               format_fixed(after / inside, 1) + " x higher before " +
+                               us(onset.search_end_s + 3 * width) + "): the wave may arrive after " +
+                               us(onset.search_end_s) + " (widen the search window)");
   } else {
     signal::ThresholdOptions th;
     th.noise_begin_s = noise_begin;
@@ -290,6 +312,21 @@ Onset pick_onset(const signal::Signal& raw, const OnsetOptions& o) {
     if (onset.pick.index <= first_index + 2)
       throw InputError("record " + s.name + ": the AIC onset falls on the start of the search window (" +
                        us(onset.search_begin_s) + "): the onset lies before it - " + before);
+    // An onset is a change from quiet to signal: within a wave train (an S pick
+    // inside the P wave's ringing) the record is as strong before the pick as after.
+    {
+      const auto k = onset.pick.index;
+      const auto w = std::max<std::size_t>(8, std::size_t(o.aic_after_s / s.dt_s));
+      if (k >= w && k + w <= s.size()) {
+        const double contrast = rms(s.samples, k, k + w) / std::max(rms(s.samples, k - w, k), 1e-300);
+        onset.contrast = contrast;
+        if (contrast < o.min_contrast)
+          onset.warnings.push_back("record " + s.name + ": the record is nearly as strong before the onset at " +
+                                   us(onset.pick.time_s) + " as after it (RMS ratio " + format_fixed(contrast, 2) +
+                                   " < " + format_fixed(o.min_contrast, 1) +
+                                   "): not a clear arrival, perhaps inside an earlier wave train");
+      }
+    }
     if (o.locator == "threshold" && onset.pick.time_s > onset.locator.time_s + s.dt_s)
       onset.warnings.push_back("record " + s.name + ": the AIC onset (" + us(onset.pick.time_s) +
                                ") lies after the threshold crossing (" + us(onset.locator.time_s) + ")");

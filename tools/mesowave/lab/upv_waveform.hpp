@@ -69,6 +69,7 @@ struct OnsetOptions {
   double aic_after_s = 10e-6;     ///< AIC window reaches this far past the threshold pick
   double lowpass_Hz = 0;          ///< zero-phase low-pass before picking (0: none), see lowpass()
   double min_arrival_snr = 3;     ///< RMS over aic_after from the located arrival / noise RMS, at least
+  double min_contrast = 2;        ///< AIC onset: RMS over aic_after after it / before it; less is warned
 };
 
 /// Zero-phase low-pass (FFT, record padded to twice its length, mean of the
@@ -82,6 +83,7 @@ struct Onset {
   signal::Pick pick;              ///< the chosen picker's
   signal::Pick locator;           ///< the locating pick (threshold crossing or envelope peak)
   double search_begin_s = 0, search_end_s = 0;
+  double contrast = 0;            ///< AIC onset: RMS after / RMS before (0 if not computed)
   std::vector<std::string> warnings;
 };
 
