@@ -15,11 +15,10 @@
 // with sigma^m the measured stresses, eps_a,3 the mean strain of the
 // extensometers at the upper stress of cycle 3 and eps_b,2 the mean strain at
 // the lower stress that ends cycle 2. (Symbols of clause 3.2: sigma_a upper,
-// sigma_b lower, sigma_p preload stress; in method B the lower stress of the
-// cycles is the preload level. The standard's text is not freely available;
-// the clause numbers and symbols were checked against the BSI catalogue entry
-// and the German summary at betontechnische-daten.de - see
-// docs/lab-raw-data.md.) Readings are averaged over the last
+// sigma_b lower, sigma_p preload stress. The standard's text is not freely
+// available: the clause numbers and symbols were checked against the BSI
+// catalogue entry and the German summary at betontechnische-daten.de, which do
+// not print the formula - see docs/lab-raw-data.md.) Readings are averaged over the last
 // `reading_window` seconds of each hold; where a level is not held (a turning
 // point) the single extreme sample is read and the cycle says so.
 //

@@ -371,9 +371,10 @@ std::string upv_figure_script(const std::vector<PickedTrace>& traces, const std:
     const double tp = tr.onset.pick.time_s * 1e6, tof = (tr.onset.pick.time_s - tr.delay_s) * 1e6;
     s += "set arrow from " + format_exact(tp) + ", " + format_exact(offset - 1.15) + " to " + format_exact(tp) + ", " +
          format_exact(offset + 1.15) + " nohead dt 2 lw 2 lc rgb '" + tr.colour + "'\n";
-    const std::string how = tr.delay_s != 0 ? tr.onset.pick.method + ": pick " + format_fixed(tp, 1) + " - delay " +
-                                                  format_fixed(tr.delay_s * 1e6, 1)
-                                            : tr.onset.pick.method;
+    std::string how = tr.delay_s != 0 ? tr.onset.pick.method + ": pick " + format_fixed(tp, 1) + " - delay " +
+                                            format_fixed(tr.delay_s * 1e6, 1)
+                                      : tr.onset.pick.method;
+    if (!tr.onset.warnings.empty()) how += "; FLAGGED, see the warnings";
     labels += "set label '" + tr.symbol + " = " + format_fixed(tof, 1) + " {/Symbol m}s (" + how + ")' at " + format_exact(tp) + ", " + format_exact(offset + 1.3) + " left offset 0.5,0 tc rgb '" +
               tr.colour + "'\n";
     plots += std::string(plots.empty() ? "" : ", ") + "$" + block + " using 1:2 with lines lw 1.5 lc rgb '" + tr.colour +
