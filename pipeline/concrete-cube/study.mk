@@ -84,12 +84,13 @@ concrete-cube-summary: concrete-cube
 CC_RAW := $(CC_LAB)/raw
 
 # Step 2: micro-CT stack (pores dark, one Otsu threshold for the stack, specimen ROI).
-$(CC_OUT)/raw-porosity-ct.json $(CC_OUT)/raw-porosity-ct-slices.csv $(CC_OUT)/raw-porosity-ct-overlay.png &: \
-    $(CC_RAW)/ct-stack.tif $(CC_RAW)/ct-truth.toml $(BIN)/mw-porosity
+$(CC_OUT)/raw-porosity-ct.json $(CC_OUT)/raw-porosity-ct-slices.csv $(CC_OUT)/raw-porosity-ct-overlay.png \
+    $(CC_OUT)/raw-porosity-ct-profile.png &: $(CC_RAW)/ct-stack.tif $(CC_RAW)/ct-truth.toml $(BIN)/mw-porosity
 	@mkdir -p $(@D)
 	$(BIN)/mw-porosity --kind ct $(CC_RAW)/ct-stack.tif --roi 6,6,96,96 --from $(CC_RAW)/ct-truth.toml \
 	  --csv $(CC_OUT)/raw-porosity-ct-slices.csv --overlay $(CC_OUT)/raw-porosity-ct-overlay.png \
-	  --overlay-max-images 9 --out $(CC_OUT)/raw-porosity-ct.json > /dev/null
+	  --overlay-max-images 9 --profile-plot $(CC_OUT)/raw-porosity-ct-profile.png \
+	  --out $(CC_OUT)/raw-porosity-ct.json > /dev/null
 
 # Step 2: microscope images of the faces (plaster-filled pores bright, Otsu per image).
 CC_RAW_FACES := $(CC_RAW)/face-1.png $(CC_RAW)/face-2.png $(CC_RAW)/face-3.png

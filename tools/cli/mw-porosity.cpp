@@ -11,11 +11,9 @@
 
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
-#include "mesowave/core/format.hpp"
-#include "mesowave/io/csv.hpp"
 #include "mesowave/io/gnuplot.hpp"
 #include "mesowave/io/image.hpp"
-#include "mesowave/lab/porosity.hpp"
+#include "mesowave/lab/porosity_report.hpp"
 
 using namespace mesowave;
 
@@ -114,95 +112,16 @@ int main(int argc, char** argv) {
       if (!image.note.empty()) std::cerr << "note: " << image.origin << ": " << image.note << "\n";
     for (const auto& w : result.warnings) std::cerr << "warning: " << w << "\n";
 
-    // Per image and statistics over images.
-    const double dz_mm = spacing_um ? *spacing_um * 1e-3 : (pixel_um ? *pixel_um * 1e-3 : 0.0);
-    std::vector<double> p_pct, index, z_mm;
-    std::vector<std::vector<std::string>> rows;
-    std::size_t removed_regions = 0, removed_px = 0, regions = 0;
-    for (std::size_t i = 0; i < result.images.size(); ++i) {
-      const auto& ip = result.images[i];
-      p_pct.push_back(100.0 * ip.porosity());
-      index.push_back(double(i + 1));
-      z_mm.push_back(double(i) * dz_mm);
-      removed_regions += ip.segmentation.regions_removed;
-      removed_px += ip.segmentation.removed_px;
-      regions += ip.segmentation.regions;
-      std::vector<std::string> row = {std::to_string(i + 1), ip.origin, std::to_string(ip.width),
-                                      std::to_string(ip.height)};
-      if (dz_mm > 0) row.push_back(format_fixed(z_mm.back(), 4));
-      row.insert(row.end(), {std::to_string(ip.threshold), format_fixed(ip.separability, 4),
-                             std::to_string(ip.segmentation.roi_px), std::to_string(ip.segmentation.pore_px),
-                             format_fixed(p_pct.back(), 4), std::to_string(ip.segmentation.regions),
-                             std::to_string(ip.segmentation.regions_removed),
-                             std::to_string(ip.segmentation.removed_px)});
-      rows.push_back(row);
-    }
-    double mean = 0, sd = 0;
-    for (double p : p_pct) mean += p / double(p_pct.size());
-    for (double p : p_pct) sd += (p - mean) * (p - mean);
-    sd = p_pct.size() > 1 ? std::sqrt(sd / double(p_pct.size() - 1)) : 0.0;
-
-    nlohmann::ordered_json j;
-    j["images"] = result.images.size();
-    j["files"] = files.size();
-    j["kind"] = kind.empty() ? "unspecified" : kind;
-    j["pores"] = bright ? "bright" : "dark";
-    j["bit_depth"] = images.front().bit_depth;
-    j["threshold_method"] = level ? "given level" : (per_image ? "Otsu per image" : "Otsu over the whole set");
-    if (level) j["threshold"] = *level;
-    else if (result.set_threshold) {
-      j["threshold"] = result.set_threshold->level;
-      j["otsu_separability"] = result.set_threshold->separability;
-    }
-    j["porosity_pct"] = 100.0 * result.porosity;
-    j["porosity_image_mean_pct"] = mean;
-    j["porosity_image_sd_pct"] = sd;
-    j["porosity_image_min_pct"] = *std::min_element(p_pct.begin(), p_pct.end());
-    j["porosity_image_max_pct"] = *std::max_element(p_pct.begin(), p_pct.end());
-    j["roi_px"] = result.roi_px;
-    j["pore_px"] = result.pore_px;
-    j["pore_regions"] = regions;
-    j["min_pore_area_px"] = min_area_px;
-    j["removed_regions"] = removed_regions;
-    j["removed_px"] = removed_px;
-    if (pixel_um) {
-      j["pixel_size_um"] = *pixel_um;
-      j["roi_area_mm2"] = double(result.roi_px) * std::pow(*pixel_um * 1e-3, 2);
-    }
-    j["warnings"] = result.warnings;
+    lab::PorosityReportContext context{kind, files.size(), options, pixel_um,
+                                       spacing_um ? *spacing_um * 1e-3 : (pixel_um ? *pixel_um * 1e-3 : 0.0)};
+    const auto j = lab::porosity_summary(result, images, context);
     run.metric("porosity", 100.0 * result.porosity, "%");
     run.param("pores", bright ? "bright" : "dark");
-
-    if (!csv_file.empty()) {
-      std::vector<std::string> header = {"index", "source", "width_px", "height_px"};
-      if (dz_mm > 0) header.push_back("z_mm");
-      header.insert(header.end(), {"threshold", "otsu_separability", "roi_px", "pore_px", "porosity_pct",
-                                   "pore_regions", "removed_regions", "removed_px"});
-      run.write_text(csv_file, io::to_csv(header, rows));
-    }
-    if (!overlay_file.empty()) {
-      const std::size_t n = images.size(), m = std::min<std::size_t>(n, std::size_t(overlay_max));
-      std::vector<io::RgbImage> tiles;
-      for (std::size_t k = 0; k < m; ++k) {
-        const std::size_t i = m == 1 ? n / 2 : std::size_t(std::lround(double(k) * double(n - 1) / double(m - 1)));
-        tiles.push_back(lab::pore_overlay(images[i], result.images[i].segmentation, rois[i], overlay_tile));
-      }
-      io::write_png_rgb(run.output(overlay_file), lab::montage(tiles));
-    }
-    if (!profile_file.empty()) {
-      const bool have_z = dz_mm > 0;
-      std::string script = "set terminal pngcairo size 900,500 font 'Sans,11'\nset output " +
-                           io::gnuplot_quote(run.output(profile_file)) + "\n" +
-                           io::gnuplot_datablock("p", {have_z ? z_mm : index, p_pct}) +
-                           "set xlabel '" + std::string(have_z ? "z [mm]" : "slice") +
-                           "'\nset ylabel 'porosity [%]'\nset grid\nset key top right\n"
-                           "set title 'Porosity profile (" + std::string(bright ? "bright" : "dark") +
-                           " pores)'\nplot $p using 1:2 with linespoints pt 7 ps 0.6 lc rgb '#c0392b' title 'per slice', " +
-                           format_exact(100.0 * result.porosity) +
-                           " with lines dt 2 lw 2 lc rgb '#2c3e50' title sprintf('whole set %.2f %%', " +
-                           format_exact(100.0 * result.porosity) + ")\n";
-      io::run_gnuplot(script);
-    }
+    if (!csv_file.empty()) run.write_text(csv_file, lab::porosity_csv(result, context));
+    if (!overlay_file.empty())
+      io::write_png_rgb(run.output(overlay_file),
+                        lab::porosity_overlay_grid(result, images, rois, std::size_t(overlay_max), overlay_tile));
+    if (!profile_file.empty()) io::run_gnuplot(lab::porosity_profile_script(result, context, run.output(profile_file)));
     run.emit_json(j, out);
   });
 }

@@ -13,6 +13,7 @@
 // transducer/couplant delay.
 #include <iostream>
 #include <optional>
+#include <tuple>
 
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
@@ -111,57 +112,34 @@ int main(int argc, char** argv) {
 
     nlohmann::ordered_json picks;
     std::vector<std::string> warnings;
-    std::optional<signal::Signal> p_rec, s_rec;
-    std::vector<lab::PickedTrace> traces;
-    // The S onset is searched between 1.3 t_p and 3.5 t_p (0 < nu < 0.45), located
-    // by its envelope peak: S transducers also receive the P wave, whose coda
-    // would trip a threshold.
-    auto pick_on = [&](const std::filesystem::path& file, const std::string& wave, const std::vector<double>& window,
-                       std::optional<double> p_arrival_s, double delay, const std::string& colour) {
-      run.input(file);
-      auto record = lab::read_upv_waveform(file, read, wave + " wave (" + file.filename().string() + ")");
-      lab::OnsetOptions o = pick;
-      if (wave == "S" && s_lowpass_kHz) o.lowpass_Hz = *s_lowpass_kHz * units::kHz;
+    std::optional<lab::TimeOfFlightPick> p_pick, s_pick;
+    auto windowed = [&](lab::OnsetOptions o, const std::vector<double>& window) {
       if (!window.empty()) o.search_begin_s = window[0] * units::us, o.search_end_s = window[1] * units::us;
-      else if (p_arrival_s) {
-        const double d = delay * units::us, tp = *p_arrival_s - d;
-        o.search_begin_s = d + 1.3 * tp;
-        o.search_end_s = d + 3.5 * tp;
-      }
-      if (wave == "S" && s_locator.empty() && (p_arrival_s || !window.empty())) o.locator = "envelope-peak";
-      if (wave == "S" && !s_locator.empty()) o.locator = s_locator;
-      const auto onset = lab::pick_onset(record, o);
-      const double tof_us = (onset.pick.time_s / units::us) - delay;
-      if (!(tof_us > 0))
-        throw InputError(wave + " onset at " + format_number(onset.pick.time_s / units::us) + " us is not after the delay " +
-                         format_number(delay) + " us");
-      const std::string k = wave == "P" ? "t_p" : "t_s";
-      picks[k + "_pick_us"] = onset.pick.time_s / units::us;
-      picks[k + "_picker"] = onset.pick.method;
-      if (onset.pick.quality_name == "aic_sd_s") picks[k + "_pick_aic_sd_us"] = onset.pick.quality / units::us;
-      else picks[k + "_pick_" + onset.pick.quality_name] = onset.pick.quality;
-      picks[k + "_located_us"] = onset.locator.time_s / units::us;
-      picks[k + "_locator"] = onset.locator.method;
-      picks[k + "_delay_us"] = delay;
-      if (onset.contrast > 0) picks[k + "_onset_contrast"] = onset.contrast;
-      warnings.insert(warnings.end(), onset.warnings.begin(), onset.warnings.end());
-      traces.push_back({nullptr, onset, delay * units::us, wave + " wave", k, colour});
-      return std::pair{std::move(record), tof_us};
+      return o;
     };
     if (!p_wave.empty()) {
-      auto [rec, tof] = pick_on(p_wave, "P", p_search_us, std::nullopt, delay_us, "#1f4e9c");
-      p_rec = std::move(rec);
-      t_p_us = tof;
+      run.input(p_wave);
+      p_pick = lab::pick_time_of_flight(p_wave, read, windowed(pick, p_search_us), delay_us * units::us, "P wave");
+      t_p_us = p_pick->tof_s / units::us;
     }
     if (!s_wave.empty()) {
-      const double d = s_delay_us.value_or(delay_us);
-      std::optional<double> from;
-      if (t_p_us) from = (*t_p_us + d) * units::us;
-      auto [rec, tof] = pick_on(s_wave, "S", s_search_us, from, d, "#c0392b");
-      s_rec = std::move(rec);
-      t_s_us = tof;
+      run.input(s_wave);
+      const double d = s_delay_us.value_or(delay_us) * units::us;
+      auto o = windowed(pick, s_search_us);
+      if (s_lowpass_kHz) o.lowpass_Hz = *s_lowpass_kHz * units::kHz;
+      if (t_p_us) o = lab::shear_wave_options(o, *t_p_us * units::us + d, d);
+      if (!s_locator.empty()) o.locator = s_locator;
+      s_pick = lab::pick_time_of_flight(s_wave, read, o, d, "S wave");
+      t_s_us = s_pick->tof_s / units::us;
     }
-    for (auto& tr : traces) tr.record = tr.symbol == "t_p" ? &*p_rec : &*s_rec;
+    std::vector<lab::PickedTrace> traces;
+    for (auto [pk, key, label, colour] : {std::tuple{&p_pick, "t_p", "P wave", "#1f4e9c"},
+                                          std::tuple{&s_pick, "t_s", "S wave", "#c0392b"}}) {
+      if (!*pk) continue;
+      lab::describe_pick(picks, key, **pk);
+      warnings.insert(warnings.end(), (*pk)->onset.warnings.begin(), (*pk)->onset.warnings.end());
+      traces.push_back({&(*pk)->record, (*pk)->onset, (*pk)->delay_s, label, key, colour});
+    }
 
     require_positive("--t-p-us", *t_p_us, "us");
     if (t_s_us) require_positive("--t-s-us", *t_s_us, "us");

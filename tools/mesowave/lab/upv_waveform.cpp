@@ -339,6 +339,42 @@ Onset pick_onset(const signal::Signal& raw, const OnsetOptions& o) {
   return onset;
 }
 
+OnsetOptions shear_wave_options(OnsetOptions base, double p_arrival_s, double delay_s) {
+  const double tp = p_arrival_s - delay_s;
+  if (!(tp > 0)) throw InputError("the P arrival must come after the delay to place the S search window");
+  if (!base.search_begin_s && !base.search_end_s) {
+    base.search_begin_s = delay_s + 1.3 * tp;
+    base.search_end_s = delay_s + 3.5 * tp;
+  }
+  base.locator = "envelope-peak";
+  return base;
+}
+
+TimeOfFlightPick pick_time_of_flight(const std::filesystem::path& path, const WaveformReadOptions& read,
+                                     const OnsetOptions& options, double delay_s, const std::string& name) {
+  TimeOfFlightPick p;
+  p.record = read_upv_waveform(path, read, name + " (" + path.filename().string() + ")");
+  p.onset = pick_onset(p.record, options);
+  p.delay_s = delay_s;
+  p.tof_s = p.onset.pick.time_s - delay_s;
+  if (!(p.tof_s > 0))
+    throw InputError(p.record.name + ": the onset at " + us(p.onset.pick.time_s) + " does not come after the delay " +
+                     us(delay_s));
+  return p;
+}
+
+void describe_pick(nlohmann::ordered_json& j, const std::string& k, const TimeOfFlightPick& p) {
+  const auto& o = p.onset;
+  j[k + "_pick_us"] = o.pick.time_s * 1e6;
+  j[k + "_picker"] = o.pick.method;
+  if (o.pick.quality_name == "aic_sd_s") j[k + "_pick_aic_sd_us"] = o.pick.quality * 1e6;
+  else j[k + "_pick_" + o.pick.quality_name] = o.pick.quality;
+  j[k + "_located_us"] = o.locator.time_s * 1e6;
+  j[k + "_locator"] = o.locator.method;
+  j[k + "_delay_us"] = p.delay_s * 1e6;
+  if (o.contrast > 0) j[k + "_onset_contrast"] = o.contrast;
+}
+
 }  // namespace mesowave::lab
 
 namespace mesowave::lab {

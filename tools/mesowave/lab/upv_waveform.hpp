@@ -32,6 +32,7 @@
 //     on the window's start), or envelope-peak (the group arrival: later than
 //     the onset, said so).
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -88,6 +89,28 @@ struct Onset {
 };
 
 Onset pick_onset(const signal::Signal& record, const OnsetOptions& options);
+
+/// The S-wave search once the P arrival (record time, `p_arrival_s`) is known:
+/// between 1.3 t_p (nu > 0) and 3.5 t_p (nu < 0.45) after the delay, located by
+/// the envelope peak - shear transducers also receive the P wave, whose coda
+/// would trip a threshold. Explicit search windows in `base` are kept.
+OnsetOptions shear_wave_options(OnsetOptions base, double p_arrival_s, double delay_s);
+
+/// A time of flight from a recorded waveform.
+struct TimeOfFlightPick {
+  signal::Signal record;
+  Onset onset;
+  double delay_s = 0;
+  double tof_s = 0;                 ///< onset - delay
+};
+
+/// Reads `path`, picks the onset and subtracts the delay. InputError if the
+/// onset does not come after the delay.
+TimeOfFlightPick pick_time_of_flight(const std::filesystem::path& path, const WaveformReadOptions& read,
+                                     const OnsetOptions& options, double delay_s, const std::string& name);
+
+/// The pick's details as JSON keys prefixed `key` (t_p_pick_us, t_p_picker, ...).
+void describe_pick(nlohmann::ordered_json& json, const std::string& key, const TimeOfFlightPick& pick);
 
 }  // namespace mesowave::lab
 
