@@ -42,6 +42,9 @@ nlohmann::ordered_json compression_summary(const CompressionAnalysis& a) {
     j["hold_lower_s"] = ev.lower->hold ? ev.lower->hold_s : 0.0;
     j["reading_upper_s"] = ev.upper.t1_s - ev.upper.t0_s;
     j["loading_rate_MPa_s"] = ev.loading_rate_Pa_s / 1e6;
+    auto per_cycle = nlohmann::ordered_json::array();  // null where a cycle could not be evaluated
+    for (const auto& c : r.cycles) per_cycle.push_back(c.E_Pa ? nlohmann::ordered_json(*c.E_Pa / 1e9) : nullptr);
+    j["E_cycles_GPa"] = per_cycle;
     if (r.cycles.front().E_ramp_Pa) j["E_first_ramp_GPa"] = *r.cycles.front().E_ramp_Pa / 1e9;
     auto used = nlohmann::ordered_json::array();
     for (const auto& c : r.channels)
