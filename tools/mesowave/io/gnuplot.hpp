@@ -1,0 +1,21 @@
+#pragma once
+// Plots through gnuplot (Debian gnuplot-nox): a tool builds a script with its
+// data inline (datablocks), and gnuplot renders it to the staged output path.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace mesowave::io {
+
+/// `$name << EOD` ... `EOD`: one line per row, columns separated by spaces,
+/// numbers with enough digits to plot faithfully.
+std::string gnuplot_datablock(const std::string& name, const std::vector<std::vector<double>>& columns);
+
+/// Quotes a path for a gnuplot string ('...'; single quotes doubled).
+std::string gnuplot_quote(const std::filesystem::path& path);
+
+/// Runs gnuplot on `script` (written to a temporary file). InputError if
+/// gnuplot is not installed or fails (its message is passed on).
+void run_gnuplot(const std::string& script);
+
+}  // namespace mesowave::io

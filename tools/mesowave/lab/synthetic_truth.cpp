@@ -1,0 +1,41 @@
+#include "mesowave/lab/synthetic_truth.hpp"
+
+#include <sstream>
+
+#include "mesowave/core/format.hpp"
+
+namespace mesowave::lab {
+
+namespace {
+std::string toml_string(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+// TOML floats need a decimal point or an exponent ("7" would be an integer).
+std::string toml_float(double v) {
+  std::string text = format_exact(v);
+  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+  return text;
+}
+}  // namespace
+
+std::string truth_toml(const std::string& title, const std::string& command, const std::vector<TruthEntry>& entries) {
+  std::ostringstream s;
+  s << "# " << title << "\n"
+    << "# source: synthetic - made by mesowave's generator from the values below, not measured.\n"
+    << "# Regenerate with:\n#   " << command << "\n";
+  for (const auto& e : entries) {
+    s << "\n[" << e.name << "]\n"
+      << "value = " << toml_float(e.value) << "\n"
+      << "unit = " << toml_string(e.unit) << "\n"
+      << "source = " << toml_string(e.source) << "\n"
+      << "cite = " << toml_string(e.cite) << "\n";
+  }
+  return s.str();
+}
+
+}  // namespace mesowave::lab

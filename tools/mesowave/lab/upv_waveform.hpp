@@ -1,0 +1,134 @@
+#pragma once
+// Flowchart step 3 from the pulse analyser's waveforms (concrete paper,
+// Section 3.2, Fig. 7): the time of flight of the P and S waves picked on the
+// recorded signals with the signal library's pickers, before Eqs. (8)-(10).
+//
+// Records (docs/formats.md, "Lab raw data"):
+//  - CSV as instruments export it: a time column and an amplitude column. With
+//    a header, the time unit is the name's suffix (t_us, time_s); without one
+//    (--no-header), columns are chosen by 1-based index and the time unit is
+//    stated. Time 0 is the trigger; samples before it are the pre-trigger.
+//  - WAV (PCM 16 bit or float 32, mono): samples as they are; the sample
+//    interval and the trigger sample must be stated when the header's rate is
+//    nominal (audio exports of ultrasonic records often are).
+//
+// Onset picking (pick_onset):
+//  1. noise window: the pre-trigger (t < 0), or a stated window;
+//  2. a stationarity check of that window - an onset inside the pre-trigger
+//     (a late trigger) shows as unequal noise in its first and last quarters,
+//     and is refused rather than picked;
+//  3. search window: after the noise window and after the electrical
+//     cross-talk window that follows the trigger;
+//  4. the arrival is located: by default the first crossing of a threshold,
+//     the larger of factor x noise RMS and a fraction of the window's peak (so
+//     that small wiggles before a weak arrival do not count); or the envelope
+//     peak (the S wave in a shear-transducer record, which also carries the P
+//     wave's energy). If the record is above the threshold, or its envelope
+//     largest, at the very start of the search window, the onset lies before
+//     it and is refused;
+//  5. the chosen picker: threshold (the crossing), aic (Maeda's AIC on the
+//     window from the search start to the crossing + aic_after, or to the
+//     envelope peak: the onset where the variance changes; refused if it falls
+//     on the window's start), or envelope-peak (the group arrival: later than
+//     the onset, said so).
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mesowave/signal/signal.hpp"
+#include "mesowave/signal/time_of_flight.hpp"
+
+namespace mesowave::lab {
+
+struct WaveformReadOptions {
+  std::string time_column;        ///< name, or 1-based index with no_header; default: first t_* / time* column
+  std::string amplitude_column;   ///< name or 1-based index; default: the first column after the time column
+  bool no_header = false;
+  std::string time_unit;          ///< s, ms or us; for headerless CSV (default s)
+  std::optional<double> sample_interval_s;  ///< WAV: overrides the header's rate
+  std::optional<long> trigger_sample;       ///< WAV: 0-based sample at t = 0 (default 0)
+};
+
+/// The record as a signal (t0_s = time of its first sample, uniform dt_s).
+/// InputError for non-monotonic or non-uniform time columns (more than 1 % of
+/// dt), unreadable fields, or fewer than 8 samples.
+signal::Signal read_upv_waveform(const std::filesystem::path& path, const WaveformReadOptions& options,
+                                 const std::string& name);
+
+struct OnsetOptions {
+  std::string picker = "aic";     ///< threshold | aic | envelope-peak
+  std::string locator = "threshold";  ///< threshold | envelope-peak: what finds the arrival the AIC window ends at
+  double threshold_factor = 5;
+  double threshold_relative = 0.2;    ///< ... or this fraction of the window's peak, whichever is larger
+  double crosstalk_s = 0;         ///< after the trigger: excluded from the search
+  std::optional<double> noise_begin_s, noise_end_s;  ///< default: the pre-trigger
+  bool check_quiet_noise = true;  ///< refuse a noise window whose quarters differ (an onset inside it);
+                                  ///< off for the P coda that precedes an S onset, which decays by nature
+  std::optional<double> search_begin_s, search_end_s;
+  double aic_after_s = 10e-6;     ///< AIC window reaches this far past the threshold pick
+  double lowpass_Hz = 0;          ///< zero-phase low-pass before picking (0: none), see lowpass()
+  double min_arrival_snr = 3;     ///< RMS over aic_after from the located arrival / noise RMS, at least
+  double min_contrast = 2;        ///< AIC onset: RMS over aic_after after it / before it; less is warned
+};
+
+/// Zero-phase low-pass (FFT, record padded to twice its length, mean of the
+/// noise window removed first): gain 1 below `corner`, a raised-cosine taper to
+/// 0 at 2 x corner. White noise above the pulse's band is what hides the first
+/// half-cycle of an onset; removing it sharpens the picks. Zero phase moves no
+/// arrival; its symmetric smear is about 1/(4 corner).
+signal::Signal lowpass(const signal::Signal& record, double corner_Hz);
+
+struct Onset {
+  signal::Pick pick;              ///< the chosen picker's
+  signal::Pick locator;           ///< the locating pick (threshold crossing or envelope peak)
+  double search_begin_s = 0, search_end_s = 0;
+  double contrast = 0;            ///< AIC onset: RMS after / RMS before (0 if not computed)
+  std::vector<std::string> warnings;
+};
+
+Onset pick_onset(const signal::Signal& record, const OnsetOptions& options);
+
+/// The S-wave search once the P arrival (record time, `p_arrival_s`) is known:
+/// between 1.3 t_p (nu > 0) and 3.5 t_p (nu < 0.45) after the delay, located by
+/// the envelope peak - shear transducers also receive the P wave, whose coda
+/// would trip a threshold. Explicit search windows in `base` are kept.
+OnsetOptions shear_wave_options(OnsetOptions base, double p_arrival_s, double delay_s);
+
+/// A time of flight from a recorded waveform.
+struct TimeOfFlightPick {
+  signal::Signal record;
+  Onset onset;
+  double delay_s = 0;
+  double tof_s = 0;                 ///< onset - delay
+};
+
+/// Reads `path`, picks the onset and subtracts the delay. InputError if the
+/// onset does not come after the delay.
+TimeOfFlightPick pick_time_of_flight(const std::filesystem::path& path, const WaveformReadOptions& read,
+                                     const OnsetOptions& options, double delay_s, const std::string& name);
+
+/// The pick's details as JSON keys prefixed `key` (t_p_pick_us, t_p_picker, ...).
+void describe_pick(nlohmann::ordered_json& json, const std::string& key, const TimeOfFlightPick& pick);
+
+}  // namespace mesowave::lab
+
+namespace mesowave::lab {
+
+struct PickedTrace {
+  const signal::Signal* record = nullptr;
+  Onset onset;
+  double delay_s = 0;
+  std::string label;   ///< "P wave"
+  std::string symbol;  ///< "t_p"
+  std::string colour;  ///< gnuplot colour, "#1f4e9c"
+};
+
+/// gnuplot script for a figure like the paper's Fig. 7: the records
+/// (normalised, one below the other) with the picked onsets marked and the
+/// times of flight written beside them.
+std::string upv_figure_script(const std::vector<PickedTrace>& traces, const std::filesystem::path& png,
+                              const std::string& title);
+
+}  // namespace mesowave::lab
