@@ -43,7 +43,7 @@ reproduce: build
 
 include pipeline/concrete-cube/study.mk
 
-pipeline: concrete-cube-summary
+pipeline: concrete-cube-summary concrete-cube-raw-summary
 
 bench: build
 	@if [ -x bench/run ]; then bench/run; else echo "no benchmarks yet"; fi
