@@ -8,6 +8,7 @@
 #include "mesowave/io/signal_csv.hpp"
 #include "mesowave/io/signal_file.hpp"
 #include "mesowave/signal/hann_burst.hpp"
+#include "mesowave/io/hdf5.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -109,4 +110,37 @@ TEST(SignalCsv, RefusesSignalsItCannotHold) {
   signals[1].samples[3] = NAN;
   EXPECT_THROW(io::signals_to_csv(signals), InputError);
   EXPECT_THROW(io::signals_to_csv({}), InputError);
+}
+
+TEST(SignalFile, ReadsStringsAsH5pyWritesThem) {
+  // h5py stores str attributes as variable-length UTF-8 strings (mesowave
+  // writes fixed-length ASCII); both must read.
+  test::TempDir dir;
+  const auto path = dir / "h5py.h5";
+  auto utf8 = [](hid_t object, const char* name, const char* value) {
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t attr = H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(attr, type, &value);
+    H5Aclose(attr), H5Sclose(space), H5Tclose(type);
+  };
+  {
+    auto file = io::h5::create_file(path);
+    utf8(file.id(), "format", "mesowave-signals");
+    auto group = io::h5::create_group(file.id(), "signals");
+    auto b = io::h5::create_group(group.id(), "B");
+    io::h5::write_doubles(b.id(), "samples", {0.0, 1.0, -1.0, 0.5});
+    io::h5::set_attribute(b.id(), "t0_s", 0.0);
+    io::h5::set_attribute(b.id(), "dt_s", 1e-7);
+    utf8(b.id(), "quantity", "acceleration");
+    utf8(b.id(), "unit", "m/s\xc2\xb2");  // m/s², not ASCII
+  }
+  const auto signals = io::read_signal_file(path);
+  ASSERT_EQ(signals.size(), 1u);
+  EXPECT_EQ(signals[0].quantity, "acceleration");
+  EXPECT_EQ(signals[0].unit, "m/s\xc2\xb2");
+  EXPECT_EQ(signals[0].component, "");
+  EXPECT_EQ(signals[0].samples.size(), 4u);
 }
