@@ -85,6 +85,16 @@ TEST(SignalCli, ConvertRoundTripAndNoise) {
   ASSERT_EQ(run_tool("mw-signal", {"convert", (dir / "a.csv").string(), (dir / "b.h5").string()}).exit_status, 0);
   const auto a = io::read_signal_file(dir / "a.h5"), b = io::read_signal_file(dir / "b.h5");
   EXPECT_EQ(a[0].samples, b[0].samples);
+  // Several inputs merge into one file, in order.
+  make_burst(dir, "d.h5", {"--name", "D"});
+  ASSERT_EQ(run_tool("mw-signal", {"convert", (dir / "a.h5").string(), (dir / "d.h5").string(),
+                                   (dir / "ad.h5").string()})
+                .exit_status,
+            0);
+  const auto merged = io::read_signal_file(dir / "ad.h5");
+  ASSERT_EQ(merged.size(), 2u);
+  EXPECT_EQ(merged[0].name, "B");
+  EXPECT_EQ(merged[1].name, "D");
   // The same seed gives the same noise.
   make_burst(dir, "c.h5", {"--noise-rms", "0.01", "--seed", "7", "--name", "B"});
   EXPECT_EQ(io::read_signal_file(dir / "c.h5")[0].samples, a[0].samples);

@@ -7,6 +7,7 @@
 //   mw-signal spectrum burst.h5 --pad 65536 --max-frequency-kHz 300 --out spectrum.csv
 //   mw-signal tof upv.csv --method aic --window-end-us 60
 //   mw-signal convert sensors.h5 sensors.csv
+//   mw-signal convert B.csv C.csv D.csv experiment.h5
 #include <cmath>
 #include <optional>
 
@@ -73,7 +74,8 @@ int main(int argc, char** argv) {
                  "  mw-signal envelope burst.h5 --pad double --out envelope.h5\n"
                  "  mw-signal spectrum burst.h5 --pad 65536 --max-frequency-kHz 300 --out spectrum.csv\n"
                  "  mw-signal tof upv.csv --method aic --window-end-us 60\n"
-                 "  mw-signal convert sensors.h5 sensors.csv");
+                 "  mw-signal convert sensors.h5 sensors.csv\n"
+                 "  mw-signal convert B.csv C.csv D.csv experiment.h5");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
   cli.fallthrough();  // --db and --from may follow the subcommand
@@ -165,12 +167,15 @@ int main(int argc, char** argv) {
   tof->add_option("--json", json_out, "Also write the picks as JSON to FILE")->type_name("FILE");
 
   // convert
-  auto* conv = cli.add_subcommand("convert", "Signal file HDF5 <-> CSV (by the extensions)");
-  Input conv_in;
-  fs::path conv_out;
+  auto* conv = cli.add_subcommand("convert", "Signal files HDF5 <-> CSV (by the extensions); several inputs merge");
+  std::vector<fs::path> conv_files;
+  std::vector<std::string> conv_names;
   std::string csv_unit, csv_quantity;
-  add_input(conv, conv_in);
-  conv->add_option("output", conv_out, "File to write (.h5 or .csv)")->required();
+  conv->add_option("files", conv_files, "IN... OUT: signal files to read (.h5 or .csv, their signals gathered in "
+                                        "order), then the file to write (.h5 or .csv)")
+      ->required()
+      ->expected(2, -1);
+  conv->add_option("--signals", conv_names, "Only these signals, by name (comma separated; default all)")->delimiter(',');
   conv->add_option("--unit", csv_unit, "CSV input: unit of columns whose header has no [unit]");
   conv->add_option("--quantity", csv_quantity, "CSV input: quantity of signals without a '# signal' line");
   add_json(conv);
@@ -306,14 +311,24 @@ int main(int argc, char** argv) {
       if (!json_out.empty()) run.write_text(json_out, result.dump(2) + "\n");
       return;
     } else if (conv->parsed()) {
-      run.input(conv_in.file);
-      const auto signals =
-          select_signals(io::read_signals(conv_in.file, {csv_unit, csv_quantity}), conv_in.names, conv_in.file.string());
-      write_signal_output(run, conv_out, signals, {{"converted_from", conv_in.file.string()}});
-      result["input"] = conv_in.file.string();
+      if (conv_files.size() < 2) throw InputError("convert needs an input file and an output file");
+      const std::vector<fs::path> conv_in(conv_files.begin(), conv_files.end() - 1);
+      const fs::path conv_out = conv_files.back();
+      io::signal_format_of(conv_out);  // refuse a bad output name before reading
+      std::vector<Signal> all;
+      std::string from;
+      for (const auto& file : conv_in) {
+        run.input(file);
+        for (auto& s : io::read_signals(file, {csv_unit, csv_quantity})) all.push_back(std::move(s));
+        from += (from.empty() ? "" : " ") + file.string();
+      }
+      const auto signals = select_signals(all, conv_names, from);
+      write_signal_output(run, conv_out, signals, {{"converted_from", from}});
+      result["inputs"] = from;
       result["output"] = conv_out.string();
-      result["signals"] = signals.size();
-      result["samples"] = signals.front().size();
+      json names = json::array();
+      for (const auto& s : signals) names.push_back(s.name);
+      result["signals"] = names;
     }
     run.emit_json(result, json_out);
   });

@@ -14,24 +14,17 @@
 namespace mesowave::signal {
 namespace {
 
-
-// Sums in four interleaved partial sums, combined in a fixed order: the
-// loops vectorise, and the result is the same whatever the thread count.
-double mean_of(std::span<const double> x) {
-  double s[4] = {0, 0, 0, 0};
-  const std::size_t n = x.size(), n4 = n - n % 4;
-  for (std::size_t i = 0; i < n4; i += 4)
-    for (int k = 0; k < 4; ++k) s[k] += x[i + std::size_t(k)];
-  for (std::size_t i = n4; i < n; ++i) s[0] += x[i];
-  return ((s[0] + s[1]) + (s[2] + s[3])) / double(n);
-}
+double mean_of(std::span<const double> x) { return internal::sum4(x) / double(x.size()); }
 
 // A record is constant when its spread is below the rounding of its values;
 // its "variance" is then noise from the mean's rounding and r meaningless.
-bool constant(std::span<const double> x, double ss) {
+// Since max |x| <= sqrt(ss) + |mean|, most records pass without a scan.
+bool constant(std::span<const double> x, double mean, double ss) {
+  const double rms = std::sqrt(ss / double(x.size()));
+  if (rms > 1e-13 * (std::sqrt(ss) + std::abs(mean))) return false;
   double peak = 0;
   for (double v : x) peak = std::max(peak, std::abs(v));
-  return !(std::sqrt(ss / double(x.size())) > 1e-13 * peak);
+  return !(rms > 1e-13 * peak);
 }
 
 std::size_t offset_in(const TimeBase& outer, const TimeBase& inner) {
@@ -44,26 +37,12 @@ double internal::pearson_unchecked(std::span<const double> a, std::span<const do
   // Two passes (means, then centred sums): the one-pass formula cancels
   // catastrophically for a signal riding on an offset.
   const double ma = mean_of(a), mb = mean_of(b);
-  double saa[4] = {0, 0, 0, 0}, sbb[4] = {0, 0, 0, 0}, sab[4] = {0, 0, 0, 0};
-  const std::size_t n = a.size(), n4 = n - n % 4;
-  for (std::size_t i = 0; i < n4; i += 4)
-    for (std::size_t k = 0; k < 4; ++k) {
-      const double da = a[i + k] - ma, db = b[i + k] - mb;
-      saa[k] += da * da;
-      sbb[k] += db * db;
-      sab[k] += da * db;
-    }
-  for (std::size_t i = n4; i < n; ++i) {
-    const double da = a[i] - ma, db = b[i] - mb;
-    saa[0] += da * da;
-    sbb[0] += db * db;
-    sab[0] += da * db;
-  }
-  auto total = [](const double* v) { return (v[0] + v[1]) + (v[2] + v[3]); };
+  double saa = 0, sbb = 0, sab = 0;
+  internal::centred_sums(a, b, ma, mb, saa, sbb, sab);
   const std::string w(what);
-  if (constant(a, total(saa))) throw InputError(w + ": the first record has zero variance (constant), r is undefined");
-  if (constant(b, total(sbb))) throw InputError(w + ": the second record has zero variance (constant), r is undefined");
-  return std::clamp(total(sab) / std::sqrt(total(saa) * total(sbb)), -1.0, 1.0);  // |r| <= 1 up to rounding
+  if (constant(a, ma, saa)) throw InputError(w + ": the first record has zero variance (constant), r is undefined");
+  if (constant(b, mb, sbb)) throw InputError(w + ": the second record has zero variance (constant), r is undefined");
+  return std::clamp(sab / std::sqrt(saa * sbb), -1.0, 1.0);  // |r| <= 1 up to rounding
 }
 
 double pearson(std::span<const double> a, std::span<const double> b, std::string_view what) {
@@ -96,7 +75,7 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
       throw InputError(what + ": unequal lengths (" + std::to_string(ta.count) + " and " + std::to_string(tb.count) +
                        " samples on the same sampling); cut both to a common window or resample explicitly");
     throw InputError(what + ": different time bases (" + describe(ta) + " vs " + describe(tb) +
-                     "); ask for resampling (linear or cubic) to interpolate one onto the other");
+                     "); ask for a resampling (mw-pcc --resample linear|cubic) to interpolate one onto the other");
   } else {
     common = restrict_time_base(ta, std::max(ta.t0_s, tb.t0_s), std::min(ta.end_s(), tb.end_s()),
                                 what + ": the records do not overlap in time");
@@ -109,8 +88,16 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
   // Envelopes in per-thread scratch (slots 10 and 11, see ScratchBuffer).
   ScratchBuffer<double> env_a(10, xa.size()), env_b(11, xb.size());
   const std::span<const double> ea(env_a.data(), xa.size()), eb(env_b.data(), xb.size());
-  internal::envelope_into_unchecked(xa, std::span<double>(env_a.data(), xa.size()), options.envelope);
-  internal::envelope_into_unchecked(xb, std::span<double>(env_b.data(), xb.size()), options.envelope);
+  SensorCorrelation c;
+  if (options.spectra) {
+    internal::envelope_and_spectrum_unchecked(xa, std::span<double>(env_a.data(), xa.size()), options.envelope,
+                                              common.dt_s, *options.spectra, c.spectrum_a);
+    internal::envelope_and_spectrum_unchecked(xb, std::span<double>(env_b.data(), xb.size()), options.envelope,
+                                              common.dt_s, *options.spectra, c.spectrum_b);
+  } else {
+    internal::envelope_into_unchecked(xa, std::span<double>(env_a.data(), xa.size()), options.envelope);
+    internal::envelope_into_unchecked(xb, std::span<double>(env_b.data(), xb.size()), options.envelope);
+  }
 
   TimeBase window = common;
   if (options.begin_s || options.end_s)
@@ -118,7 +105,6 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
                                 what + ": the comparison window");
   const std::size_t first = offset_in(common, window), count = window.count;
 
-  SensorCorrelation c;
   c.sensor = a.name;
   c.compared = window;
   c.envelope_samples = common.count;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -62,8 +63,12 @@ constexpr int slot_real = 4, slot_imag = 5, slot_spectrum = 6, slot_padded = 7;
 // Since Re z = x, only Im z needs transforms, and Im z is real: its spectrum
 // is -i sgn(k) X_k (zero at k = 0 and k = N/2), the anti-Hermitian half of
 // X h. One r2c and one c2r transform instead of the complex round trip.
+// `bins`, if given, sees the record's spectrum (bins 0..m/2, unscaled) before
+// it becomes the Hilbert transform's; it is called on the direct path only
+// (the return value says whether it was).
 template <class Use>
-void hilbert_core(std::span<const double> x, const HilbertOptions& options, Use&& use, bool checked = true) {
+bool hilbert_core(std::span<const double> x, const HilbertOptions& options, Use&& use, bool checked = true,
+                  const std::function<void(const Complex*)>* bins = nullptr) {
   if (checked) require_samples(x, "record");
   const std::size_t n = x.size();
   const std::size_t m = options.padding.fft_length(n);
@@ -83,10 +88,11 @@ void hilbert_core(std::span<const double> x, const HilbertOptions& options, Use&
     for (std::size_t k = 0; k <= L / 2; ++k) spectrum[k] *= kernel.spectrum[k];
     irfft_unscaled(spectrum.data(), padded.data(), L);
     use(real.data(), padded.data() + (m - 1));
-    return;
+    return false;
   }
   ScratchBuffer<Complex> spectrum(slot_spectrum, m / 2 + 1);
   rfft_unscaled(real.data(), spectrum.data(), m);
+  if (bins) (*bins)(spectrum.data());
   const double scale = 1.0 / double(m);
   spectrum[0] = 0.0;
   for (std::size_t k = 1; k <= m / 2; ++k) {
@@ -97,6 +103,7 @@ void hilbert_core(std::span<const double> x, const HilbertOptions& options, Use&
   ScratchBuffer<double> imag(slot_imag, m);
   irfft_unscaled(spectrum.data(), imag.data(), m);
   use(real.data(), imag.data());
+  return bins != nullptr;
 }
 
 }  // namespace
@@ -124,7 +131,7 @@ std::vector<double> hilbert_transform(std::span<const double> x, const HilbertOp
 void envelope_into(std::span<const double> x, std::span<double> out, const HilbertOptions& options) {
   if (out.size() != x.size()) throw std::logic_error("envelope_into: output and record differ in length");
   hilbert_core(x, options, [&](const double* re, const double* im) {
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = std::sqrt(re[i] * re[i] + im[i] * im[i]);
+    internal::magnitudes(re, im, out.data(), out.size());
   });
 }
 
@@ -132,9 +139,23 @@ void internal::envelope_into_unchecked(std::span<const double> x, std::span<doub
   hilbert_core(
       x, options,
       [&](const double* re, const double* im) {
-        for (std::size_t i = 0; i < out.size(); ++i) out[i] = std::sqrt(re[i] * re[i] + im[i] * im[i]);
+        internal::magnitudes(re, im, out.data(), out.size());
       },
       false);
+}
+
+void internal::envelope_and_spectrum_unchecked(std::span<const double> x, std::span<double> env,
+                                               const HilbertOptions& hilbert, double dt_s,
+                                               const SpectrumOptions& spectrum_options, Spectrum& spectrum) {
+  const std::size_t n = x.size(), m = hilbert.padding.fft_length(n);
+  const bool shared = spectrum_options.detrend == hilbert.detrend && spectrum_options.padding.fft_length(n) == m;
+  const std::function<void(const Complex*)> fill = [&](const Complex* bins) {
+    fill_spectrum(bins, n, m, dt_s, spectrum_options.scaling, spectrum);
+  };
+  const bool filled = hilbert_core(
+      x, hilbert, [&](const double* re, const double* im) { magnitudes(re, im, env.data(), env.size()); }, false,
+      shared ? &fill : nullptr);
+  if (!filled) amplitude_spectrum(x, dt_s, spectrum_options, spectrum);
 }
 
 std::vector<double> envelope(std::span<const double> x, const HilbertOptions& options) {
