@@ -151,6 +151,17 @@ TEST(PccCli, TwoFilesPerSensorTableAndMean) {
   EXPECT_DOUBLE_EQ(result["mean_pcc_signal"].get<double>(), pcc);
   const auto csv = io::read_csv(dir / "pcc.csv");
   EXPECT_EQ(csv.text(csv.rows.size() - 1, 0), "mean");
+
+  // Both sets' spectra beside each other; the second burst is half as strong.
+  ASSERT_EQ(run_tool("mw-pcc", {(dir / "a.h5").string(), (dir / "b.h5").string(), "--spectra",
+                                (dir / "spectra.csv").string(), "--max-frequency-kHz", "300"})
+                .exit_status,
+            0);
+  const auto spectra = io::read_csv(dir / "spectra.csv");
+  EXPECT_EQ(spectra.header, (std::vector<std::string>{"f_kHz", "B a [N]", "B b [N]"}));
+  const std::size_t k100 = 15;  // 100 kHz on the 150 us record's 6.67 kHz grid
+  EXPECT_NEAR(spectra.number(k100, 0), 100.0, 1e-9);
+  EXPECT_NEAR(spectra.number(k100, 2) / spectra.number(k100, 1), 0.5, 1e-9);
 }
 
 TEST(PccCli, TimeBasesAndBadRecordsAreRefused) {

@@ -4,6 +4,7 @@
 //
 //   mw-pcc experiment.h5 simulation.h5
 //   mw-pcc --a exp-100kHz.csv --b sim-100kHz.h5 --sensors B,C,D --resample linear --csv pcc.csv --out pcc.json
+//   mw-pcc experiment.h5 simulation.h5 --spectra spectra.csv --max-frequency-kHz 600
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/format.hpp"
@@ -45,13 +46,15 @@ int main(int argc, char** argv) {
                  "Signals must share their time base unless --resample names an interpolation; zero variance, "
                  "NaN, empty or unequal records are errors.\n\n"
                  "  mw-pcc experiment.h5 simulation.h5\n"
-                 "  mw-pcc --a exp-B.csv exp-C.csv --b sim.h5 --sensors B,C --resample linear --csv pcc.csv");
+                 "  mw-pcc --a exp-B.csv exp-C.csv --b sim.h5 --sensors B,C --resample linear --csv pcc.csv\n"
+                 "  mw-pcc experiment.h5 simulation.h5 --spectra spectra.csv --max-frequency-kHz 600");
   std::vector<fs::path> files, set_a, set_b;
   std::vector<std::string> sensors;
   std::optional<std::string> resample_text;
   std::optional<double> begin_us, end_us;
   std::string detrend_text = "none", pad_text = "none";
-  fs::path csv_out, out;
+  fs::path csv_out, spectra_out, out;
+  std::optional<double> max_frequency_kHz;
   auto& cli = tool.cli();
   cli.add_option("files", files, "Two signal files (HDF5 .h5 or CSV .csv): the first set and the second");
   cli.add_option("--a", set_a, "The first set as one or more files (e.g. experiment)")->type_name("FILE ...");
@@ -66,6 +69,11 @@ int main(int argc, char** argv) {
   cli.add_option("--detrend", detrend_text, "Envelopes: none | mean | linear")->capture_default_str();
   cli.add_option("--pad", pad_text, "Envelopes: none | double | pow2 | an FFT length")->capture_default_str();
   cli.add_option("--csv", csv_out, "Write the table as CSV (a last row 'mean')")->type_name("FILE");
+  cli.add_option("--spectra", spectra_out,
+                 "Also write the amplitude spectra of both sets (concrete paper Fig. 15) as CSV: f_kHz, then "
+                 "'<sensor> a [unit]', '<sensor> b [unit]' per sensor")
+      ->type_name("FILE");
+  cli.add_option("--max-frequency-kHz", max_frequency_kHz, "--spectra: up to this frequency [kHz] only");
   app::add_out_option(cli, out, "the JSON result");
 
   return tool.run(argc, argv, [&](app::Run& run) {
@@ -84,6 +92,8 @@ int main(int argc, char** argv) {
       throw InputError("--window-end-us (" + format_number(*end_us) + ") must exceed --window-begin-us (" +
                        format_number(*begin_us) + ")");
     options.envelope = {parse_detrend(detrend_text), Padding::parse(pad_text)};
+    if (!spectra_out.empty()) options.spectra = SpectrumOptions{options.envelope.detrend, options.envelope.padding};
+    if (max_frequency_kHz) require_positive("--max-frequency-kHz", *max_frequency_kHz, "kHz");
 
     const auto a = read_set(run, set_a), b = read_set(run, set_b);
     const auto table = correlate_sensors(a, b, options, sensors);
@@ -117,6 +127,34 @@ int main(int argc, char** argv) {
       text << "not compared: " << list << "\n";
     }
     if (!csv_out.empty()) run.write_text(csv_out, io::to_csv(header, rows));
+    if (!spectra_out.empty()) {
+      const auto& axis = table.sensors.front().spectrum_a;
+      std::vector<std::string> spectra_header = {"f_kHz"};
+      for (const auto& s : table.sensors) {
+        for (const auto* sp : {&s.spectrum_a, &s.spectrum_b})
+          if (sp->amplitude.size() != axis.amplitude.size() || sp->df_hz != axis.df_hz)
+            throw InputError("sensor " + s.sensor + " has another frequency axis than " + table.sensors.front().sensor +
+                             " (record length or sampling); write its spectra separately (mw-signal spectrum)");
+        const auto unit_of = [&](std::span<const Signal> set) {
+          for (const auto& sig : set)
+            if (sig.name == s.sensor) return sig.unit;
+          return std::string();
+        };
+        spectra_header.push_back(s.sensor + " a [" + s.spectrum_a.unit(unit_of(a)) + "]");
+        spectra_header.push_back(s.sensor + " b [" + s.spectrum_b.unit(unit_of(b)) + "]");
+      }
+      std::vector<std::vector<std::string>> spectra_rows;
+      for (std::size_t k = 0; k < axis.frequency_hz.size(); ++k) {
+        if (max_frequency_kHz && axis.frequency_hz[k] > *max_frequency_kHz * units::kHz) break;
+        std::vector<std::string> row = {format_exact(axis.frequency_hz[k] / units::kHz)};
+        for (const auto& s : table.sensors) {
+          row.push_back(format_exact(s.spectrum_a.amplitude[k]));
+          row.push_back(format_exact(s.spectrum_b.amplitude[k]));
+        }
+        spectra_rows.push_back(std::move(row));
+      }
+      run.write_text(spectra_out, io::to_csv(spectra_header, spectra_rows));
+    }
     if (!out.empty()) {
       json result;
       result["a"] = join(set_a);
