@@ -214,3 +214,30 @@ TEST(EnvelopePeak, OffsetDriftAndTenDecibelNoise) {
     EXPECT_LE(a.time_s, 112.5e-6) << "seed " << seed;
   }
 }
+
+TEST(Pickers, RecordsOfOneTwoAndThreeSamples) {
+  // Too short for a picker's statistics: an InputError, never a crash or a NaN.
+  for (std::size_t n : {1, 2, 3}) {
+    std::vector<double> x(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = double(i + 1);
+    EXPECT_THROW(aic_pick(record(x)), InputError) << n;
+    ThresholdOptions o;
+    o.noise_end_s = 1.5 * dt;
+    if (n < 3) {
+      EXPECT_THROW(threshold_pick(record(x), o), InputError) << n;
+    }
+  }
+  // Three samples, two of noise: the third crosses.
+  ThresholdOptions o;
+  o.noise_end_s = 1.5 * dt;
+  const auto p = threshold_pick(record({0.0, 0.1, 5.0}), o);
+  EXPECT_EQ(p.index, 2u);
+  // One sample: its mean removed (the default), nothing is left to pick;
+  // kept, the envelope is |x| and the pick is that sample.
+  EXPECT_THROW(envelope_peak_pick(record({-2.0})), InputError);
+  EnvelopePeakOptions keep;
+  keep.hilbert.detrend = Detrend::none;
+  const auto e = envelope_peak_pick(record({-2.0}), keep);
+  EXPECT_EQ(e.index, 0u);
+  EXPECT_TRUE(std::isfinite(e.quality));
+}

@@ -141,7 +141,16 @@ int main(int argc, char** argv) {
   add_json(spec);
 
   // tof
-  auto* tof = cli.add_subcommand("tof", "Time of flight of every (or the chosen) signal");
+  auto* tof = cli.add_subcommand("tof", "Time of flight of every (or the chosen) signal, with a quality measure");
+  tof->footer(
+      "\nthreshold: the first sample whose "
+      "deviation from the pre-trigger mean reaches max(factor x noise RMS, relative x peak), refined between "
+      "samples (quality snr_dB). aic: Maeda's picker, the minimum of AIC(k) = k log var(x[1..k]) + (N-k-1) log "
+      "var(x[k+1..N]) over the window, by default from the start to the largest |x| (quality aic_sd_us: the spread "
+      "of the pick under the Akaike weights). envelope-peak: the maximum of the Hilbert envelope, the group "
+      "arrival (quality peak_ratio: over the next highest packet).\n\n"
+      "  mw-signal tof upv.csv --method threshold --noise-end-us 0\n"
+      "  mw-signal tof sensors.h5 --method envelope-peak --window-begin-us 20 --window-end-us 120");
   Input tof_in;
   std::string method = "aic";
   std::optional<std::string> tof_detrend;
@@ -154,7 +163,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"threshold", "aic", "envelope-peak"}))
       ->capture_default_str();
   tof->add_option("--window-begin-us", begin_us, "Pick no earlier than this [us]");
-  tof->add_option("--window-end-us", end_us, "Pick no later than this [us] (aim AIC at the first arrival)");
+  tof->add_option("--window-end-us", end_us,
+                  "Pick no later than this [us] (aim AIC at the first arrival; default for AIC: the largest |x|)");
   tof->add_option("--noise-begin-us", noise_begin_us, "threshold: start of the pre-trigger noise window [us]");
   tof->add_option("--noise-end-us", noise_end_us, "threshold: end of the noise window [us] (default 0, the trigger)");
   tof->add_option("--factor", factor, "threshold: multiple of the noise RMS")->capture_default_str();
