@@ -153,6 +153,27 @@ TEST(Correlate, PerSensorTableAndMeanAsInTable3) {
   EXPECT_THROW(correlate_sensors(a, b, {}, {"A"}), InputError);  // not in the first set
 }
 
+TEST(Correlate, SpectraOfBothSetsComeWithTheTable) {
+  std::vector<Signal> a{modulated("B", 3000, 0.0), modulated("C", 2999, 0.0)};
+  std::vector<Signal> b{modulated("B", 3000, 0.3), modulated("C", 2999, 0.6)};
+  for (auto pad : {Padding{}, Padding{Padding::Mode::to_length, 8192}}) {
+    CorrelationOptions opt;
+    opt.spectra = SpectrumOptions{Detrend::none, pad, SpectrumScaling::amplitude};
+    const auto table = correlate_sensors(a, b, opt);
+    for (std::size_t i = 0; i < 2; ++i) {
+      // Shared with the envelope's transform or not, the same numbers as a spectrum on its own.
+      const auto ref_a = amplitude_spectrum(a[i], *opt.spectra), ref_b = amplitude_spectrum(b[i], *opt.spectra);
+      EXPECT_EQ(table.sensors[i].spectrum_a.amplitude, ref_a.amplitude) << i;
+      EXPECT_EQ(table.sensors[i].spectrum_b.amplitude, ref_b.amplitude) << i;
+      EXPECT_EQ(table.sensors[i].spectrum_b.fft_length, pad.fft_length(a[i].size()));
+    }
+    // The tone of `modulated` (150 periods in the record) sits at bin 150 unpadded.
+    if (pad.mode == Padding::Mode::none) {
+      EXPECT_NEAR(peak_frequency_hz(table.sensors[0].spectrum_a), 150.0 / 300e-6, 1.0);
+    }
+  }
+}
+
 TEST(Correlate, SameBitsWhateverTheThreadCount) {
   std::vector<Signal> a, b;
   for (int i = 0; i < 8; ++i) {
@@ -180,7 +201,7 @@ TEST(Correlate, DifferentTimeBasesNeedAnExplicitResampling) {
   Signal coarse{"B", "velocity", "m/s", "", -5e-6, 2.5e-7, burst.sample(2.5e-7, 440, -5e-6), std::nullopt};
   EXPECT_EQ(message_of([&] { correlate(fine, coarse); }),
             "sensor B: different time bases (1000 samples, dt 0.1 us, t0 0 us vs 440 samples, dt 0.25 us, t0 -5 us); "
-            "ask for resampling (linear or cubic) to interpolate one onto the other");
+            "ask for a resampling (mw-pcc --resample linear|cubic) to interpolate one onto the other");
   CorrelationOptions opt;
   opt.resampling = Interpolation::cubic_spline;
   const auto c = correlate(fine, coarse, opt);

@@ -98,6 +98,17 @@ TEST(Aic, SineOnsetAtTenDecibels) {
   }
 }
 
+TEST(Aic, WithoutAWindowEndItStopsAtThePeak) {
+  // A noiseless simulated record: zeros, a burst, zeros. Over the whole
+  // record the burst's end (followed by more zeros than precede it) would be
+  // the better split; the default window ends at the largest |x|.
+  const HannBurst burst(100e3, 5, 1.0, 20e-6);
+  const auto s = record(burst.sample(dt, 2000));
+  const auto p = aic_pick(s);
+  EXPECT_EQ(p.index, 201u);  // the first nonzero sample (the burst is exactly 0 at 20 us)
+  EXPECT_GT(aic_pick(s, {TimeWindow{0.0, 199.9e-6}}).time_s, 69e-6);  // the whole record: its end
+}
+
 TEST(Aic, WindowTooShortOrOutsideTheRecord) {
   const auto s = sine_onset(100, 50, 100e3, 0.0, 1);
   EXPECT_THROW(aic_pick(s, {TimeWindow{1e-6, 1.2e-6}}), InputError);  // 3 samples
@@ -202,4 +213,31 @@ TEST(EnvelopePeak, OffsetDriftAndTenDecibelNoise) {
     EXPECT_GE(a.time_s, 100e-6) << "seed " << seed;
     EXPECT_LE(a.time_s, 112.5e-6) << "seed " << seed;
   }
+}
+
+TEST(Pickers, RecordsOfOneTwoAndThreeSamples) {
+  // Too short for a picker's statistics: an InputError, never a crash or a NaN.
+  for (std::size_t n : {1, 2, 3}) {
+    std::vector<double> x(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = double(i + 1);
+    EXPECT_THROW(aic_pick(record(x)), InputError) << n;
+    ThresholdOptions o;
+    o.noise_end_s = 1.5 * dt;
+    if (n < 3) {
+      EXPECT_THROW(threshold_pick(record(x), o), InputError) << n;
+    }
+  }
+  // Three samples, two of noise: the third crosses.
+  ThresholdOptions o;
+  o.noise_end_s = 1.5 * dt;
+  const auto p = threshold_pick(record({0.0, 0.1, 5.0}), o);
+  EXPECT_EQ(p.index, 2u);
+  // One sample: its mean removed (the default), nothing is left to pick;
+  // kept, the envelope is |x| and the pick is that sample.
+  EXPECT_THROW(envelope_peak_pick(record({-2.0})), InputError);
+  EnvelopePeakOptions keep;
+  keep.hilbert.detrend = Detrend::none;
+  const auto e = envelope_peak_pick(record({-2.0}), keep);
+  EXPECT_EQ(e.index, 0u);
+  EXPECT_TRUE(std::isfinite(e.quality));
 }

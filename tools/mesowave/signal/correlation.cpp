@@ -8,37 +8,23 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/signal/internal.hpp"
 #include "mesowave/signal/validate.hpp"
 
 namespace mesowave::signal {
 namespace {
 
-
-// Sum of squared deviations from the mean, by two passes (the one-pass
-// formula cancels catastrophically for a signal riding on an offset).
-double centred(std::span<const double> x, std::vector<double>& d) {
-  double mean = 0;
-  for (double v : x) mean += v;
-  mean /= double(x.size());
-  d.resize(x.size());
-  double ss = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    d[i] = x[i] - mean;
-    ss += d[i] * d[i];
-  }
-  return ss;
-}
+double mean_of(std::span<const double> x) { return internal::sum4(x) / double(x.size()); }
 
 // A record is constant when its spread is below the rounding of its values;
 // its "variance" is then noise from the mean's rounding and r meaningless.
-bool constant(std::span<const double> x, double ss) {
+// Since max |x| <= sqrt(ss) + |mean|, most records pass without a scan.
+bool constant(std::span<const double> x, double mean, double ss) {
+  const double rms = std::sqrt(ss / double(x.size()));
+  if (rms > 1e-13 * (std::sqrt(ss) + std::abs(mean))) return false;
   double peak = 0;
   for (double v : x) peak = std::max(peak, std::abs(v));
-  return !(std::sqrt(ss / double(x.size())) > 1e-13 * peak);
-}
-
-std::span<const double> slice(const std::vector<double>& x, std::size_t first, std::size_t count) {
-  return std::span<const double>(x).subspan(first, count);
+  return !(rms > 1e-13 * peak);
 }
 
 std::size_t offset_in(const TimeBase& outer, const TimeBase& inner) {
@@ -46,6 +32,18 @@ std::size_t offset_in(const TimeBase& outer, const TimeBase& inner) {
 }
 
 }  // namespace
+
+double internal::pearson_unchecked(std::span<const double> a, std::span<const double> b, std::string_view what) {
+  // Two passes (means, then centred sums): the one-pass formula cancels
+  // catastrophically for a signal riding on an offset.
+  const double ma = mean_of(a), mb = mean_of(b);
+  double saa = 0, sbb = 0, sab = 0;
+  internal::centred_sums(a, b, ma, mb, saa, sbb, sab);
+  const std::string w(what);
+  if (constant(a, ma, saa)) throw InputError(w + ": the first record has zero variance (constant), r is undefined");
+  if (constant(b, mb, sbb)) throw InputError(w + ": the second record has zero variance (constant), r is undefined");
+  return std::clamp(sab / std::sqrt(saa * sbb), -1.0, 1.0);  // |r| <= 1 up to rounding
+}
 
 double pearson(std::span<const double> a, std::span<const double> b, std::string_view what) {
   const std::string w(what);
@@ -55,13 +53,7 @@ double pearson(std::span<const double> a, std::span<const double> b, std::string
                      " samples)");
   require_samples(a, w + " (first)");
   require_samples(b, w + " (second)");
-  std::vector<double> da, db;
-  const double saa = centred(a, da), sbb = centred(b, db);
-  if (constant(a, saa)) throw InputError(w + ": the first record has zero variance (constant), r is undefined");
-  if (constant(b, sbb)) throw InputError(w + ": the second record has zero variance (constant), r is undefined");
-  double sab = 0;
-  for (std::size_t i = 0; i < da.size(); ++i) sab += da[i] * db[i];
-  return std::clamp(sab / std::sqrt(saa * sbb), -1.0, 1.0);  // |r| <= 1 up to rounding
+  return internal::pearson_unchecked(a, b, what);
 }
 
 SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationOptions& options) {
@@ -71,11 +63,11 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
   const TimeBase ta = time_base(a), tb = time_base(b);
 
   TimeBase common = ta;
-  std::vector<double> xa, xb;
+  std::span<const double> xa = a.samples, xb = b.samples;
+  std::vector<double> b_resampled;
   bool resampled = false;
   if (same_time_base(ta, tb)) {
-    xa = a.samples;
-    xb = b.samples;
+    // compared as they are
   } else if (!options.resampling) {
     const bool same_sampling = std::abs(ta.dt_s - tb.dt_s) <= 1e-9 * ta.dt_s &&
                                std::abs(ta.t0_s - tb.t0_s) <= 1e-6 * ta.dt_s;
@@ -83,18 +75,29 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
       throw InputError(what + ": unequal lengths (" + std::to_string(ta.count) + " and " + std::to_string(tb.count) +
                        " samples on the same sampling); cut both to a common window or resample explicitly");
     throw InputError(what + ": different time bases (" + describe(ta) + " vs " + describe(tb) +
-                     "); ask for resampling (linear or cubic) to interpolate one onto the other");
+                     "); ask for a resampling (mw-pcc --resample linear|cubic) to interpolate one onto the other");
   } else {
     common = restrict_time_base(ta, std::max(ta.t0_s, tb.t0_s), std::min(ta.end_s(), tb.end_s()),
                                 what + ": the records do not overlap in time");
-    const std::size_t first = offset_in(ta, common);
-    xa.assign(a.samples.begin() + long(first), a.samples.begin() + long(first + common.count));
-    xb = resample(b, common, *options.resampling).samples;
+    xa = xa.subspan(offset_in(ta, common), common.count);
+    b_resampled = resample(b, common, *options.resampling).samples;
+    xb = b_resampled;
     resampled = true;
   }
 
-  const auto ea = envelope(std::span<const double>(xa), options.envelope);
-  const auto eb = envelope(std::span<const double>(xb), options.envelope);
+  // Envelopes in per-thread scratch (slots 10 and 11, see ScratchBuffer).
+  ScratchBuffer<double> env_a(10, xa.size()), env_b(11, xb.size());
+  const std::span<const double> ea(env_a.data(), xa.size()), eb(env_b.data(), xb.size());
+  SensorCorrelation c;
+  if (options.spectra) {
+    internal::envelope_and_spectrum_unchecked(xa, std::span<double>(env_a.data(), xa.size()), options.envelope,
+                                              common.dt_s, *options.spectra, c.spectrum_a);
+    internal::envelope_and_spectrum_unchecked(xb, std::span<double>(env_b.data(), xb.size()), options.envelope,
+                                              common.dt_s, *options.spectra, c.spectrum_b);
+  } else {
+    internal::envelope_into_unchecked(xa, std::span<double>(env_a.data(), xa.size()), options.envelope);
+    internal::envelope_into_unchecked(xb, std::span<double>(env_b.data(), xb.size()), options.envelope);
+  }
 
   TimeBase window = common;
   if (options.begin_s || options.end_s)
@@ -102,13 +105,12 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
                                 what + ": the comparison window");
   const std::size_t first = offset_in(common, window), count = window.count;
 
-  SensorCorrelation c;
   c.sensor = a.name;
   c.compared = window;
   c.envelope_samples = common.count;
   c.resampled = resampled;
-  c.pcc_signal = pearson(slice(xa, first, count), slice(xb, first, count), what);
-  c.pcc_envelope = pearson(slice(ea, first, count), slice(eb, first, count), what + " (envelopes)");
+  c.pcc_signal = internal::pearson_unchecked(xa.subspan(first, count), xb.subspan(first, count), what);
+  c.pcc_envelope = internal::pearson_unchecked(ea.subspan(first, count), eb.subspan(first, count), what + " (envelopes)");
   return c;
 }
 

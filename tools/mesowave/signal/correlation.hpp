@@ -14,6 +14,7 @@
 #include "mesowave/signal/envelope.hpp"
 #include "mesowave/signal/resample.hpp"
 #include "mesowave/signal/signal.hpp"
+#include "mesowave/signal/spectrum.hpp"
 
 namespace mesowave::signal {
 
@@ -31,6 +32,10 @@ struct CorrelationOptions {
   std::optional<double> begin_s, end_s;
   /// How the envelopes are computed (their PCC is reported beside the signals').
   HilbertOptions envelope{};
+  /// Also the spectra of both records of every sensor (over the records the
+  /// envelopes were computed on); with the envelopes' detrending and FFT
+  /// length they share the envelopes' forward transform.
+  std::optional<SpectrumOptions> spectra;
 };
 
 struct SensorCorrelation {
@@ -40,6 +45,7 @@ struct SensorCorrelation {
   TimeBase compared;        ///< the samples r was computed over
   std::size_t envelope_samples = 0;  ///< the record the envelopes were computed over
   bool resampled = false;   ///< whether b was interpolated onto a's samples
+  Spectrum spectrum_a, spectrum_b;  ///< when CorrelationOptions::spectra asks for them
 };
 
 struct CorrelationTable {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mesowave/core/check.hpp"
+#include "mesowave/signal/internal.hpp"
 #include "mesowave/signal/validate.hpp"
 
 namespace mesowave::signal {
@@ -34,36 +35,45 @@ std::string Spectrum::unit(std::string_view signal_unit) const {
   return u;
 }
 
-Spectrum amplitude_spectrum(std::span<const double> x, double dt_s, const SpectrumOptions& options) {
+void internal::fill_spectrum(const Complex* bins, std::size_t n, std::size_t m, double dt_s, SpectrumScaling scaling,
+                             Spectrum& s) {
+  const std::size_t nbins = m / 2 + 1;
+  s.samples = n;
+  s.fft_length = m;
+  s.scaling = scaling;
+  s.df_hz = 1.0 / (double(m) * dt_s);
+  s.frequency_hz.resize(nbins);
+  s.amplitude.resize(nbins);
+  const double scale = scaling == SpectrumScaling::amplitude ? 2.0 / double(n)
+                       : scaling == SpectrumScaling::density ? dt_s
+                                                              : 1.0;
+  for (std::size_t k = 0; k < nbins; ++k) s.frequency_hz[k] = double(k) * s.df_hz;
+  internal::magnitudes(bins, scale, s.amplitude.data(), nbins);
+  if (scaling == SpectrumScaling::amplitude) {
+    s.amplitude[0] *= 0.5;  // DC and Nyquist have no mirror image to fold in
+    if (m % 2 == 0 && m > 1) s.amplitude[m / 2] *= 0.5;
+  }
+}
+
+void amplitude_spectrum(std::span<const double> x, double dt_s, const SpectrumOptions& options, Spectrum& s) {
   require_positive("sampling interval dt", dt_s, "s");
   require_samples(x, "record");
   const std::size_t n = x.size();
   const std::size_t m = options.padding.fft_length(n);
-  FftBuffer<double> record(m);
+  ScratchBuffer<double> record(8, m);  // scratch slots 8 and 9 (see ScratchBuffer)
   std::copy(x.begin(), x.end(), record.begin());
   detrend(std::span<double>(record.data(), n), options.detrend);
-  std::fill(record.begin() + n, record.end(), 0.0);
-  FftBuffer<Complex> bins(m / 2 + 1);
-  rfft_into(record, bins);
+  std::fill(record.begin() + n, record.begin() + m, 0.0);
+  const std::size_t nbins = m / 2 + 1;
+  ScratchBuffer<Complex> bins(9, nbins);
+  rfft_unscaled(record.data(), bins.data(), m);
 
+  internal::fill_spectrum(bins.data(), n, m, dt_s, options.scaling, s);
+}
+
+Spectrum amplitude_spectrum(std::span<const double> x, double dt_s, const SpectrumOptions& options) {
   Spectrum s;
-  s.samples = n;
-  s.fft_length = m;
-  s.scaling = options.scaling;
-  s.df_hz = 1.0 / (double(m) * dt_s);
-  s.frequency_hz.resize(bins.size());
-  s.amplitude.resize(bins.size());
-  const double scale = options.scaling == SpectrumScaling::amplitude ? 2.0 / double(n)
-                       : options.scaling == SpectrumScaling::density ? dt_s
-                                                                      : 1.0;
-  for (std::size_t k = 0; k < bins.size(); ++k) {
-    s.frequency_hz[k] = double(k) * s.df_hz;
-    s.amplitude[k] = std::abs(bins[k]) * scale;
-  }
-  if (options.scaling == SpectrumScaling::amplitude) {
-    s.amplitude[0] *= 0.5;  // DC and Nyquist have no mirror image to fold in
-    if (m % 2 == 0 && m > 1) s.amplitude[m / 2] *= 0.5;
-  }
+  amplitude_spectrum(x, dt_s, options, s);
   return s;
 }
 
