@@ -34,12 +34,12 @@ $(CC_OUT)/table1-printed-Ed.csv $(CC_OUT)/table1-printed-Ed.json &: $(CC_OUT)/de
 $(CC_OUT)/density-vs-paper.txt: $(CC_OUT)/density.json $(CC_LAB)/paper/printed-results.toml $(BIN)/mw-compare
 	$(BIN)/mw-compare --ours $(CC_OUT)/density.json --paper $(CC_LAB)/paper/printed-results.toml \
 	  --title "Step 1: density (the mass is derived from the printed density, so this checks the arithmetic)" \
-	  --text $@ > /dev/null
+	  --csv $(CC_OUT)/density-vs-paper.csv --text $@ > /dev/null
 
 $(CC_OUT)/upv-vs-paper.txt: $(CC_OUT)/upv.json $(CC_LAB)/paper/printed-results.toml $(BIN)/mw-compare
 	$(BIN)/mw-compare --ours $(CC_OUT)/upv.json --paper $(CC_LAB)/paper/printed-results.toml \
 	  --title "Step 3: dynamic moduli from t_p, t_s, path and density (Eqs. 9-10) vs the paper" \
-	  --text $@ > /dev/null
+	  --csv $(CC_OUT)/upv-vs-paper.csv --text $@ > /dev/null
 
 $(CC_OUT)/table1-vs-paper.txt: $(CC_OUT)/table1.csv $(CC_LAB)/paper/table1.csv $(BIN)/mw-compare
 	$(BIN)/mw-compare --ours $(CC_OUT)/table1.csv --paper $(CC_LAB)/paper/table1.csv --key method \
@@ -125,20 +125,21 @@ $(CC_OUT)/raw-porosity-vs-paper.txt: $(CC_OUT)/raw-porosity-ct.json $(CC_OUT)/ra
     $(CC_LAB)/porosity.toml $(BIN)/mw-compare
 	$(BIN)/mw-compare --ours $(CC_OUT)/raw-porosity-ct.json --paper $(CC_LAB)/porosity.toml \
 	  --title "Step 2 from the synthetic micro-CT stack (truth: lab-data/concrete-cube/raw/ct-truth.toml)" \
-	  --text $(CC_OUT)/raw-porosity-ct-vs-paper.txt > /dev/null
+	  --csv $(CC_OUT)/raw-porosity-ct-vs-paper.csv --text $(CC_OUT)/raw-porosity-ct-vs-paper.txt > /dev/null
 	$(BIN)/mw-compare --ours $(CC_OUT)/raw-porosity-faces.json --paper $(CC_LAB)/porosity.toml \
 	  --title "Step 2 from the synthetic face images (truth: lab-data/concrete-cube/raw/faces-truth.toml)" \
-	  --text $(CC_OUT)/raw-porosity-faces-vs-paper.txt > /dev/null
+	  --csv $(CC_OUT)/raw-porosity-faces-vs-paper.csv --text $(CC_OUT)/raw-porosity-faces-vs-paper.txt > /dev/null
 	cat $(CC_OUT)/raw-porosity-ct-vs-paper.txt $(CC_OUT)/raw-porosity-faces-vs-paper.txt > $@
 
 $(CC_OUT)/raw-upv-vs-paper.txt: $(CC_OUT)/raw-upv.json $(CC_LAB)/upv.toml $(BIN)/mw-compare
 	$(BIN)/mw-compare --ours $(CC_OUT)/raw-upv.json --paper $(CC_LAB)/upv.toml \
-	  --title "Step 3 from the synthetic UPV waveforms: picked times of flight" --text $@ > /dev/null
+	  --title "Step 3 from the synthetic UPV waveforms: picked times of flight" \
+	  --csv $(CC_OUT)/raw-upv-vs-paper.csv --text $@ > /dev/null
 
 $(CC_OUT)/raw-compress-vs-paper.txt: $(CC_OUT)/raw-compress.json $(CC_LAB)/static-test.toml $(BIN)/mw-compare
 	$(BIN)/mw-compare --ours $(CC_OUT)/raw-compress.json --paper $(CC_LAB)/static-test.toml \
 	  --title "Step 4 from the synthetic load-frame records (truth: lab-data/concrete-cube/raw/compression-truth.toml)" \
-	  --text $@ > /dev/null
+	  --csv $(CC_OUT)/raw-compress-vs-paper.csv --text $@ > /dev/null
 
 CC_RAW_RESULTS := $(CC_OUT)/raw-porosity-ct.json $(CC_OUT)/raw-porosity-faces.json $(CC_OUT)/raw-upv.json \
                   $(CC_OUT)/raw-compress.json $(CC_OUT)/raw-porosity-vs-paper.txt $(CC_OUT)/raw-upv-vs-paper.txt \

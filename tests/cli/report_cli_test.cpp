@@ -1,0 +1,79 @@
+// mw-report: a small report made from recorded runs, rendered in headless
+// Chromium by scripts/check-report (every table there, every figure decoded).
+#include <gtest/gtest.h>
+
+#include "support/run_tool.hpp"
+
+using namespace mesowave::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kSource = MESOWAVE_SOURCE_DIR;
+
+struct SmallReport : ::testing::Test {
+  TempDir dir;
+  std::string db = (dir / "p.sqlite").string();
+  void SetUp() override {
+    ASSERT_EQ(run_tool("mw-upv", {"--path-mm", "150", "--t-p-us", "35", "--t-s-us", "55.1", "--density-kg-m3", "2129.56",
+                                  "--out", (dir / "upv.json").string(), "--db", db})
+                  .exit_status,
+              0);
+    ASSERT_EQ(run_tool("mw-compare", {"--ours", (dir / "upv.json").string(), "--paper",
+                                      (kSource / "lab-data/concrete-cube/paper/printed-results.toml").string(), "--csv",
+                                      (dir / "upv-vs-paper.csv").string(), "--db", db})
+                  .exit_status,
+              0);
+    write_file(dir / "sketch.svg",
+               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"120\" height=\"40\"><rect width=\"120\" height=\"40\" "
+               "fill=\"#8ab\"/></svg>\n");
+    fs::copy_file(kSource / "docs/figures/signal-burst.png", dir / "burst.png");
+    write_file(dir / "spec.toml",
+               "title = \"test report\"\n[[section]]\ntitle = \"Moduli\"\ntext = \"From `mw-upv`.\"\n"
+               "[[section.item]]\ntable = \"upv-vs-paper.csv\"\ncaption = \"E_d vs the paper\"\n"
+               "[[section.item]]\nfigure = \"sketch.svg\"\ncaption = \"an SVG\"\n"
+               "[[section.item]]\nfigure = \"burst.png\"\ncaption = \"a PNG\"\n");
+  }
+  ToolResult report() {
+    return run_tool("mw-report", {"--spec", (dir / "spec.toml").string(), "--base", dir.path().string(), "--out-dir",
+                                  (dir / "report").string(), "--db", db});
+  }
+  ToolResult check(const std::vector<std::string>& counts) {
+    std::vector<std::string> args = {(dir / "report/index.html").string()};
+    args.insert(args.end(), counts.begin(), counts.end());
+    return run_command(kSource / "scripts/check-report", args);
+  }
+};
+
+}  // namespace
+
+TEST_F(SmallReport, RendersEveryTableAndFigureWithProvenance) {
+  const auto r = report();
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.out.find("1 tables, 2 figures"), std::string::npos) << r.out;
+  const auto html = read_file(dir / "report/index.html");
+  EXPECT_NE(html.find("run 2 <code>mw-compare</code>"), std::string::npos);
+  EXPECT_NE(html.find("&lt;- run 1 mw-upv"), std::string::npos);  // lineage reaches the mw-upv run
+  EXPECT_NE(html.find("<code>mw-upv</code>"), std::string::npos);   // backticks become code
+  EXPECT_TRUE(fs::exists(dir / "report/figures/sketch.svg"));
+  const auto c = check({"1", "2"});
+  EXPECT_EQ(c.exit_status, 0) << c.out << c.err;
+  EXPECT_EQ(c.out.rfind("report OK: 1 tables", 0), 0u) << c.out;
+}
+
+TEST_F(SmallReport, ChromiumCatchesAFigureThatDoesNotDecode) {
+  ASSERT_EQ(report().exit_status, 0);
+  write_file(dir / "report/figures/burst.png", "not a png");
+  const auto c = check({"1", "2"});
+  EXPECT_EQ(c.exit_status, 1) << c.out;
+  EXPECT_NE(c.out.find("1 images failed to load"), std::string::npos) << c.out;
+  EXPECT_EQ(check({"2", "2"}).exit_status, 1);  // and a missing table
+}
+
+TEST_F(SmallReport, AMissingItemIsNamedAndNothingIsWritten) {
+  fs::remove(dir / "sketch.svg");
+  const auto r = report();
+  EXPECT_EQ(r.exit_status, 1);
+  EXPECT_NE(r.err.find("sketch.svg"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "report"));
+}
