@@ -83,24 +83,7 @@ struct Region {
 
 // Fixed blocks summed in a fixed order: the partition does not depend on the
 // number of threads, so neither does the rounding.
-constexpr std::size_t kBlock = 2048;
-
-template <int K, class Fn>
-std::array<double, K> blocked_sums(std::size_t n, Fn&& term) {
-  const std::size_t blocks = (n + kBlock - 1) / kBlock;
-  std::vector<std::array<double, K>> partial(blocks);
-#pragma omp parallel for schedule(static)
-  for (std::size_t b = 0; b < blocks; ++b) {
-    std::array<double, K> s{};
-    const std::size_t end = std::min(n, (b + 1) * kBlock);
-    for (std::size_t i = b * kBlock; i < end; ++i) term(i, s);
-    partial[b] = s;
-  }
-  std::array<double, K> total{};
-  for (const auto& s : partial)
-    for (int k = 0; k < K; ++k) total[k] += s[k];
-  return total;
-}
+constexpr std::size_t kBlock = 256;
 
 // ---- Verlet neighbour lists ------------------------------------------------
 
@@ -114,7 +97,7 @@ struct NeighbourList {
 };
 
 void build_neighbours(const std::vector<Vec3>& x, const std::vector<double>& r, double r_max, double skin,
-                      const Region& region, NeighbourList& list) {
+                      const Region& region, bool parallel, NeighbourList& list) {
   const std::size_t n = x.size();
   const double cell = 2 * r_max + skin;
   std::array<std::int64_t, 3> dims{};
@@ -164,7 +147,7 @@ void build_neighbours(const std::vector<Vec3>& x, const std::vector<double>& r, 
     list.count.assign(n, 0);
     list.index.resize(n * slots);
     bool overflow = false;
-#pragma omp parallel for schedule(static) reduction(|| : overflow)
+#pragma omp parallel for schedule(static) reduction(|| : overflow) if (parallel)
     for (std::size_t i = 0; i < n; ++i) {
       std::uint32_t at = 0;
       std::uint32_t* out = list.index.data() + i * slots;
@@ -195,45 +178,69 @@ Vec3 fallback_direction(std::size_t i, std::size_t j) {
   return {sign * s * std::cos(phi), sign * s * std::sin(phi), sign * z};
 }
 
-// Net force -dE/dx_i of E = 1/2 sum (delta/r_min)^2 on every sphere; returns
-// {sum of |f_ij| over contacts, number of contacts} (each contact once).
-std::array<double, 2> overlap_forces(const std::vector<Vec3>& x, const std::vector<double>& r, const NeighbourList& list,
-                                     std::vector<Vec3>& force) {
+// What one force pass gathers, summed block by block (see kBlock).
+struct ForceSums {
+  double power = 0;         // sum F . v
+  double v2 = 0, f2 = 0;    // sum |v|^2, sum |F|^2
+  double max_f2 = 0;        // largest |F|^2 on one sphere
+  double contact_force = 0; // sum over contacts of |f_ij| (each counted from both sides)
+  double contacts = 0;      // number of contacts, counted from both sides
+};
+
+// Net force F_i = -dE/dx_i of E = 1/2 sum (delta/r_min)^2 on every sphere,
+// less the components the walls carry (Region::constrain), with the sums
+// FIRE needs. One pass, so one synchronisation per iteration.
+ForceSums overlap_forces(const std::vector<Vec3>& x, const std::vector<double>& r, const std::vector<double>& inv_r2,
+                         const NeighbourList& list, const Region& region, bool parallel, std::vector<Vec3>& force,
+                         std::vector<Vec3>& v) {
   const std::size_t n = x.size();
-  std::vector<double> contact_force(n), contact_count(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    Vec3 f{0, 0, 0};
-    double sum = 0, count = 0;
-    const std::uint32_t* partners = list.index.data() + i * list.slots;
-    for (std::uint32_t s = 0; s < list.count[i]; ++s) {
-      const std::uint32_t j = partners[s];
-      const double ax = x[i][0] - x[j][0], ay = x[i][1] - x[j][1], az = x[i][2] - x[j][2];
-      const double reach = r[i] + r[j];
-      const double d2 = ax * ax + ay * ay + az * az;
-      if (d2 >= reach * reach) continue;
-      const double dist = std::sqrt(d2);
-      const double r_min = std::min(r[i], r[j]);
-      const double magnitude = (reach - dist) / (r_min * r_min);
-      if (dist > 0) {
-        const double k = magnitude / dist;
-        f[0] += k * ax, f[1] += k * ay, f[2] += k * az;
-      } else {
-        const Vec3 e = fallback_direction(i, j);
-        f[0] += magnitude * e[0], f[1] += magnitude * e[1], f[2] += magnitude * e[2];
+  const std::size_t blocks = (n + kBlock - 1) / kBlock;
+  std::vector<ForceSums> partial(blocks);
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t b = 0; b < blocks; ++b) {
+    ForceSums sums;
+    const std::size_t end = std::min(n, (b + 1) * kBlock);
+    for (std::size_t i = b * kBlock; i < end; ++i) {
+      Vec3 f{0, 0, 0};
+      const std::uint32_t* partners = list.index.data() + i * list.slots;
+      for (std::uint32_t s = 0; s < list.count[i]; ++s) {
+        const std::uint32_t j = partners[s];
+        const double ax = x[i][0] - x[j][0], ay = x[i][1] - x[j][1], az = x[i][2] - x[j][2];
+        const double reach = r[i] + r[j];
+        const double d2 = ax * ax + ay * ay + az * az;
+        if (d2 >= reach * reach) continue;
+        const double dist = std::sqrt(d2);
+        const double magnitude = (reach - dist) * std::max(inv_r2[i], inv_r2[j]);  // / r_min^2
+        if (dist > 0) {
+          const double k = magnitude / dist;
+          f[0] += k * ax, f[1] += k * ay, f[2] += k * az;
+        } else {
+          const Vec3 e = fallback_direction(i, j);
+          f[0] += magnitude * e[0], f[1] += magnitude * e[1], f[2] += magnitude * e[2];
+        }
+        sums.contact_force += magnitude;
+        sums.contacts += 1;
       }
-      sum += magnitude;
-      count += 1;
+      region.constrain(x[i], r[i], f, v[i]);
+      force[i] = f;
+      const double ff = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+      sums.power += f[0] * v[i][0] + f[1] * v[i][1] + f[2] * v[i][2];
+      sums.v2 += v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
+      sums.f2 += ff;
+      sums.max_f2 = std::max(sums.max_f2, ff);
     }
-    force[i] = f;
-    contact_force[i] = sum;
-    contact_count[i] = count;
+    partial[b] = sums;
   }
-  const auto totals = blocked_sums<2>(n, [&](std::size_t i, std::array<double, 2>& s) {
-    s[0] += contact_force[i];
-    s[1] += contact_count[i];
-  });
-  return {totals[0] / 2, totals[1] / 2};
+  ForceSums total;
+  for (const auto& p : partial) {
+    total.power += p.power;
+    total.v2 += p.v2;
+    total.f2 += p.f2;
+    total.max_f2 = std::max(total.max_f2, p.max_f2);
+    total.contact_force += p.contact_force;
+    total.contacts += p.contacts;
+  }
+  return total;
 }
 
 // ---- containers -------------------------------------------------------------
@@ -363,43 +370,39 @@ Packing generate_packing(const Container& container, const PackingOptions& o, Pa
   // FIRE minimisation of the overlap energy (unit masses).
   // The stiffest contact, 1/r_min^2 in internal units, sets the stable step:
   // the steps scale with the smallest radius (tuned on d = 1.6-2.0 mm, where
-  // r_min/r_max = 0.8 and dt_max = 0.3). The skin is half the largest radius.
+  // r_min/r_max = 0.8 and dt_max = 0.3). The list skin is 0.4 of the largest radius (fastest of 0.3-0.7).
   const double r_small = *std::min_element(r.begin(), r.end());
-  const double skin = 0.5, max_step = 0.1;
+  const double skin = 0.4, max_step = 0.1;
   const double dt_max = 0.375 * r_small, dt_start = dt_max / 6, dt_min = dt_max / 150;
   const double alpha_start = 0.25, f_alpha = 0.99, f_inc = 1.1, f_dec = 0.5;
   const std::size_t n_delay = 20;
   double dt = dt_start, alpha = alpha_start;
   std::size_t positive_steps = 0;
 
+  // Threads only pay off for large packings; small ones run serially and skip
+  // the per-loop synchronisation. Either way each sphere's result is computed
+  // the same way, so the bits agree.
+  const bool parallel = n >= o.parallel_from;
   NeighbourList list;
   PackingRun run;
-  build_neighbours(x, r, 1.0, skin, region, list);
+  build_neighbours(x, r, 1.0, skin, region, parallel, list);
   ++run.neighbour_rebuilds;
   std::vector<Vec3> v(n, Vec3{0, 0, 0}), f(n);
+  std::vector<double> inv_r2(n);
+  for (std::size_t i = 0; i < n; ++i) inv_r2[i] = 1 / (r[i] * r[i]);
 
-  auto residual_of = [&](const std::array<double, 2>& contacts) {
-    // The walls carry the outward force of spheres resting on them.
-    double max_f2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : max_f2)
-    for (std::size_t i = 0; i < n; ++i) {
-      region.constrain(x[i], r[i], f[i], v[i]);
-      max_f2 = std::max(max_f2, f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]);
-    }
-    const double mean_contact = contacts[1] > 0 ? contacts[0] / contacts[1] : 0.0;
-    return mean_contact > 0 ? std::sqrt(max_f2) / mean_contact : 0.0;
+  // Largest net force on a sphere over the mean contact force.
+  auto residual_of = [](const ForceSums& sums) {
+    return sums.contacts > 0 && sums.contact_force > 0 ? std::sqrt(sums.max_f2) / (sums.contact_force / sums.contacts)
+                                                        : 0.0;
   };
-  double residual = residual_of(overlap_forces(x, r, list, f));
+  ForceSums sums = overlap_forces(x, r, inv_r2, list, region, parallel, f, v);
+  double residual = residual_of(sums);
 
   std::size_t it = 0;
   for (; it < o.max_iterations && residual > o.force_tolerance; ++it) {
-    const auto s = blocked_sums<3>(n, [&](std::size_t i, std::array<double, 3>& acc) {
-      acc[0] += f[i][0] * v[i][0] + f[i][1] * v[i][1] + f[i][2] * v[i][2];
-      acc[1] += v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
-      acc[2] += f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
-    });
-    const double power = s[0];
-    if (power > 0) {
+    const bool downhill = sums.power > 0;
+    if (downhill) {
       if (++positive_steps > n_delay) {
         dt = std::min(dt * f_inc, dt_max);
         alpha *= f_alpha;
@@ -408,30 +411,28 @@ Packing generate_packing(const Container& container, const PackingOptions& o, Pa
       positive_steps = 0;
       if (it >= n_delay) dt = std::max(dt * f_dec, dt_min);
       alpha = alpha_start;
-#pragma omp parallel for schedule(static)
-      for (std::size_t i = 0; i < n; ++i)
-        for (int d = 0; d < 3; ++d) x[i][d] -= 0.5 * dt * v[i][d], v[i][d] = 0;
     }
-    // Semi-implicit Euler with the FIRE velocity mixing (FIRE 2.0 order).
-    const auto s2 = blocked_sums<2>(n, [&](std::size_t i, std::array<double, 2>& acc) {
-      for (int d = 0; d < 3; ++d) v[i][d] += dt * f[i][d];
-      acc[0] += v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
-    });
-    const double v_norm = std::sqrt(s2[0]), f_norm = std::sqrt(s[2]);
-    const double mix = (power > 0 && f_norm > 0) ? alpha * v_norm / f_norm : 0.0;
-    const double keep = (power > 0) ? 1 - alpha : 1.0;
+    // Semi-implicit Euler with the FIRE velocity mixing (FIRE 2.0 order): on
+    // an uphill step, back up half a step and stop. |v + dt F|^2 follows from
+    // the sums of the force pass, so the update needs no further reduction.
+    const double v2_new = downhill ? sums.v2 + 2 * dt * sums.power + dt * dt * sums.f2 : dt * dt * sums.f2;
+    const double f_norm = std::sqrt(sums.f2);
+    const double mix = (downhill && f_norm > 0) ? alpha * std::sqrt(std::max(v2_new, 0.0)) / f_norm : 0.0;
+    const double keep = downhill ? 1 - alpha : 1.0;
     double moved2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : moved2)
+#pragma omp parallel for schedule(static) reduction(max : moved2) if (parallel)
     for (std::size_t i = 0; i < n; ++i) {
+      if (!downhill)
+        for (int d = 0; d < 3; ++d) x[i][d] -= 0.5 * dt * v[i][d], v[i][d] = 0;
       Vec3 step;
       for (int d = 0; d < 3; ++d) {
-        v[i][d] = keep * v[i][d] + mix * f[i][d];
+        v[i][d] = keep * (v[i][d] + dt * f[i][d]) + mix * f[i][d];
         step[d] = dt * v[i][d];
       }
       const double len2 = step[0] * step[0] + step[1] * step[1] + step[2] * step[2];
       if (len2 > max_step * max_step) {
-        const double s3 = max_step / std::sqrt(len2);
-        for (int d = 0; d < 3; ++d) step[d] *= s3;
+        const double shrink = max_step / std::sqrt(len2);
+        for (int d = 0; d < 3; ++d) step[d] *= shrink;
       }
       for (int d = 0; d < 3; ++d) x[i][d] += step[d];
       region.project(x[i], r[i]);
@@ -440,10 +441,11 @@ Packing generate_packing(const Container& container, const PackingOptions& o, Pa
       moved2 = std::max(moved2, mx * mx + my * my + mz * mz);
     }
     if (moved2 > 0.25 * skin * skin) {
-      build_neighbours(x, r, 1.0, skin, region, list);
+      build_neighbours(x, r, 1.0, skin, region, parallel, list);
       ++run.neighbour_rebuilds;
     }
-    residual = residual_of(overlap_forces(x, r, list, f));
+    sums = overlap_forces(x, r, inv_r2, list, region, parallel, f, v);
+    residual = residual_of(sums);
     if (o.progress && it % 50 == 0) o.progress(it, residual);
   }
   run.iterations = it;
@@ -454,7 +456,7 @@ Packing generate_packing(const Container& container, const PackingOptions& o, Pa
   // A sphere whose centre lies inside its partner is buried: the target
   // asks for more solid than overlapping spheres can hold evenly.
   double worst = 0;
-#pragma omp parallel for schedule(static) reduction(max : worst)
+#pragma omp parallel for schedule(static) reduction(max : worst) if (parallel)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t* partners = list.index.data() + i * list.slots;
     for (std::uint32_t k = 0; k < list.count[i]; ++k) {

@@ -54,6 +54,10 @@ struct PackingOptions {
   /// relative accuracy).
   double force_tolerance = 1e-3;
   std::size_t max_iterations = 100000;
+  /// Loops run on OpenMP threads from this many spheres on (serial below:
+  /// synchronisation would cost more than it saves). The result does not
+  /// depend on it.
+  std::size_t parallel_from = 4096;
   /// Called now and then with (iteration, relative residual force).
   std::function<void(std::size_t, double)> progress;
 };
