@@ -76,9 +76,10 @@ TEST(PackingGenerator, OverlapsAreBalancedAndNoSphereIsBuried) {
   EXPECT_GT(s.coordination_contacts, 8.0);
   EXPECT_GT(s.mean_overlap_ratio, 0.1);
   EXPECT_LT(s.mean_overlap_ratio, 0.3);
-  EXPECT_LT(s.max_overlap_ratio, 1.0);  // no centre inside another sphere
+  EXPECT_LT(s.max_overlap_ratio, 0.7);  // no centre inside another sphere, none near it
   // Force balance: on every sphere away from the walls the overlap forces
-  // (delta / r_min^2 along the centre line) cancel to the tolerance.
+  // dE/d(delta) = xi (1 + Q xi^2) / r_min, xi = delta / r_min, along the
+  // centre line, cancel to the tolerance (E = sum 1/2 xi^2 + Q/4 xi^4, Q = 3).
   const auto pairs = find_pairs_within(p.centres_m, p.radii_m, 1.0);
   std::vector<std::array<double, 3>> net(p.size(), {0, 0, 0});
   double sum = 0;
@@ -87,7 +88,8 @@ TEST(PackingGenerator, OverlapsAreBalancedAndNoSphereIsBuried) {
     for (int k = 0; k < 3; ++k) d[k] = p.centres_m[c.i][k] - p.centres_m[c.j][k];
     const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     const double r_min = std::min(p.radii_m[c.i], p.radii_m[c.j]);
-    const double f = (p.radii_m[c.i] + p.radii_m[c.j] - len) / (r_min * r_min);
+    const double xi = (p.radii_m[c.i] + p.radii_m[c.j] - len) / r_min;
+    const double f = xi * (1 + 3 * xi * xi) / r_min;
     sum += f;
     for (int k = 0; k < 3; ++k) net[c.i][k] += f * d[k] / len, net[c.j][k] -= f * d[k] / len;
   }
@@ -152,6 +154,23 @@ TEST(PackingGenerator, Cylinder) {
     EXPECT_GE(p.centres_m[i][2] - p.radii_m[i], -1e-15);
     EXPECT_LE(p.centres_m[i][2] + p.radii_m[i], 10e-3 + 1e-15);
   }
+}
+
+TEST(PackingGenerator, WideSieveCurveAtSevenPercentBuriesNoSphere) {
+  // A 0.5-2 mm sand (size ratio 4) at p = 7 %: the radius growth and the
+  // quartic term keep every small sphere out of the large ones' centres, and
+  // the packing's mass passing 1 mm is the curve's (27/65 of the kept range).
+  auto o = concrete(0.07, 4);
+  o.sizes = SizeDistribution::sieve(
+      parse_sieve_curve("d_mm,passing_pct\n0.25,12\n0.5,35\n1,62\n1.6,88\n2,100\n", "sand"), 0.5e-3);
+  const auto p = generate_packing(box_container({0, 0, 0}, {8e-3, 8e-3, 8e-3}), o);
+  EXPECT_NEAR(porosity(p), 0.07, 1e-12);
+  const auto s = packing_stats(p);
+  EXPECT_LT(s.max_overlap_ratio, 1.0);
+  EXPECT_EQ(s.spheres_outside, 0u);
+  double below = 0, total = 0;
+  for (double r : p.radii_m) (2 * r <= 1e-3 ? below : total) += r * r * r;
+  EXPECT_NEAR(below / (below + total), 27.0 / 65.0, 0.05);
 }
 
 TEST(PackingGenerator, LoosePackingsNeedNoOverlap) {

@@ -39,6 +39,7 @@ struct Options {
   std::optional<double> density_kg_m3, specimen_mass_g;
   double detection_factor = 1.1;
   double force_tolerance = 1e-3;
+  double overlap_stiffening = 3;
   std::uint64_t seed = 1;
   bool quiet = false;
 };
@@ -141,7 +142,8 @@ int main(int argc, char** argv) {
       "Section 3) and write it as a packing HDF5 file with a JSON summary.\n"
       "Porosity p = 1 - sum(V_sphere)/V_container; p = 7 % is reached with overlaps. Diameters are drawn until "
       "their volume is (1 - p) V_container, centres placed at random at least their radius from every wall, then "
-      "the overlap energy sum (delta/r_min)^2 is minimised (FIRE) so overlaps spread evenly. Particle density "
+      "the overlap energy sum 1/2 xi^2 + Q/4 xi^4 (xi = overlap / smaller radius) is minimised (FIRE) while the "
+      "radii grow to full size, so overlaps spread evenly and no sphere is buried. Particle density "
       "rho_p = m_specimen / sum(V_sphere), so the model weighs what the specimen weighs. A line of spheres (rod "
       "model) has n = ceil(L/d) spheres at spacing d on the rod axis (z).\n\n"
       "  mw-pack box --cube-side-mm 50 --porosity-pct 7 --d-min-mm 1.6 --d-max-mm 2 --density-kg-m3 2129.56 "
@@ -175,6 +177,9 @@ int main(int argc, char** argv) {
   cli.add_option("--seed", o.seed, "Random seed (same seed, same packing, bit for bit)")->capture_default_str();
   cli.add_option("--force-tolerance", o.force_tolerance,
                  "Relax until the largest net force on a sphere is below this fraction of the mean contact force")
+      ->capture_default_str();
+  cli.add_option("--overlap-stiffening", o.overlap_stiffening,
+                 "Q of the relaxed overlap energy 1/2 xi^2 + Q/4 xi^4, xi = overlap / smaller radius (0: harmonic)")
       ->capture_default_str();
   cli.add_option("--sphere-radius-mm", o.sphere_radius_mm, "line: sphere radius R [mm] (rod paper: 5.1)");
   cli.add_option("--spacing-mm", o.spacing_mm, "line: centre spacing d [mm]");
@@ -223,13 +228,15 @@ int main(int argc, char** argv) {
       options.sizes = sizes_from(run, o);
       options.seed = o.seed;
       options.force_tolerance = require_positive("--force-tolerance", o.force_tolerance);
+      options.overlap_stiffening = require_in_range("--overlap-stiffening", o.overlap_stiffening, 0, 1000);
       packing = generate(container, options, relax, o.quiet, "mw-pack " + o.container);
-      origin.text = {{"method", "random centres, overlap-energy relaxation (FIRE), mw-pack"},
+      origin.text = {{"method", "random centres, radius growth and overlap-energy relaxation (FIRE), mw-pack"},
                      {"seed", std::to_string(o.seed)},
                      {"size_distribution", options.sizes.describe()}};
       if (!o.sieve_curve.empty()) origin.text.emplace_back("sieve_curve", o.sieve_curve.string());
       origin.numbers = {{"target_porosity", options.porosity},
                         {"force_tolerance", options.force_tolerance},
+                        {"overlap_stiffening", options.overlap_stiffening},
                         {"relaxation_iterations", double(relax.iterations)},
                         {"relaxation_residual", relax.residual}};
       summary["seed"] = o.seed;

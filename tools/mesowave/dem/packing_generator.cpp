@@ -187,12 +187,12 @@ struct ForceSums {
   double contacts = 0;      // number of contacts, counted from both sides
 };
 
-// Net force F_i = -dE/dx_i of E = 1/2 sum (delta/r_min)^2 on every sphere,
+// Net force F_i = -dE/dx_i of E = sum 1/2 xi^2 + Q/4 xi^4, xi = delta/r_min, on every sphere,
 // less the components the walls carry (Region::constrain), with the sums
 // FIRE needs. One pass, so one synchronisation per iteration.
 ForceSums overlap_forces(const std::vector<Vec3>& x, const std::vector<double>& r, const std::vector<double>& inv_r2,
-                         const NeighbourList& list, const Region& region, bool parallel, std::vector<Vec3>& force,
-                         std::vector<Vec3>& v) {
+                         double stiffening, const NeighbourList& list, const Region& region, bool parallel,
+                         std::vector<Vec3>& force, std::vector<Vec3>& v) {
   const std::size_t n = x.size();
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<ForceSums> partial(blocks);
@@ -210,7 +210,9 @@ ForceSums overlap_forces(const std::vector<Vec3>& x, const std::vector<double>& 
         const double d2 = ax * ax + ay * ay + az * az;
         if (d2 >= reach * reach) continue;
         const double dist = std::sqrt(d2);
-        const double magnitude = (reach - dist) * std::max(inv_r2[i], inv_r2[j]);  // / r_min^2
+        const double ir2 = std::max(inv_r2[i], inv_r2[j]);
+        const double xi2 = (reach - dist) * (reach - dist) * ir2;
+        const double magnitude = (reach - dist) * ir2 * (1 + stiffening * xi2);  // dE/d(delta)
         if (dist > 0) {
           const double k = magnitude / dist;
           f[0] += k * ax, f[1] += k * ay, f[2] += k * az;
@@ -370,14 +372,13 @@ Packing generate_packing(const Container& container, const PackingOptions& o, Pa
   // FIRE minimisation of the overlap energy (unit masses).
   // The stiffest contact, 1/r_min^2 in internal units, sets the stable step:
   // the steps scale with the smallest radius (tuned on d = 1.6-2.0 mm, where
-  // r_min/r_max = 0.8 and dt_max = 0.3). The list skin is 0.4 of the largest radius (fastest of 0.3-0.7).
+  // r_min/r_max = 0.8 and dt_max = 0.3). The list skin is 0.4 of the largest
+  // radius (the fastest of 0.3-0.7).
   const double r_small = *std::min_element(r.begin(), r.end());
   const double skin = 0.4, max_step = 0.1;
   const double dt_max = 0.375 * r_small, dt_start = dt_max / 6, dt_min = dt_max / 150;
   const double alpha_start = 0.25, f_alpha = 0.99, f_inc = 1.1, f_dec = 0.5;
   const std::size_t n_delay = 20;
-  double dt = dt_start, alpha = alpha_start;
-  std::size_t positive_steps = 0;
 
   // Threads only pay off for large packings; small ones run serially and skip
   // the per-loop synchronisation. Either way each sphere's result is computed
@@ -385,69 +386,97 @@ Packing generate_packing(const Container& container, const PackingOptions& o, Pa
   const bool parallel = n >= o.parallel_from;
   NeighbourList list;
   PackingRun run;
-  build_neighbours(x, r, 1.0, skin, region, parallel, list);
-  ++run.neighbour_rebuilds;
-  std::vector<Vec3> v(n, Vec3{0, 0, 0}), f(n);
-  std::vector<double> inv_r2(n);
-  for (std::size_t i = 0; i < n; ++i) inv_r2[i] = 1 / (r[i] * r[i]);
+  std::vector<Vec3> v(n), f(n);
+  std::vector<double> radius(n), inv_r2(n);
 
   // Largest net force on a sphere over the mean contact force.
   auto residual_of = [](const ForceSums& sums) {
     return sums.contacts > 0 && sums.contact_force > 0 ? std::sqrt(sums.max_f2) / (sums.contact_force / sums.contacts)
                                                         : 0.0;
   };
-  ForceSums sums = overlap_forces(x, r, inv_r2, list, region, parallel, f, v);
-  double residual = residual_of(sums);
-
   std::size_t it = 0;
-  for (; it < o.max_iterations && residual > o.force_tolerance; ++it) {
-    const bool downhill = sums.power > 0;
-    if (downhill) {
-      if (++positive_steps > n_delay) {
-        dt = std::min(dt * f_inc, dt_max);
-        alpha *= f_alpha;
-      }
-    } else {
-      positive_steps = 0;
-      if (it >= n_delay) dt = std::max(dt * f_dec, dt_min);
-      alpha = alpha_start;
-    }
-    // Semi-implicit Euler with the FIRE velocity mixing (FIRE 2.0 order): on
-    // an uphill step, back up half a step and stop. |v + dt F|^2 follows from
-    // the sums of the force pass, so the update needs no further reduction.
-    const double v2_new = downhill ? sums.v2 + 2 * dt * sums.power + dt * dt * sums.f2 : dt * dt * sums.f2;
-    const double f_norm = std::sqrt(sums.f2);
-    const double mix = (downhill && f_norm > 0) ? alpha * std::sqrt(std::max(v2_new, 0.0)) / f_norm : 0.0;
-    const double keep = downhill ? 1 - alpha : 1.0;
-    double moved2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : moved2) if (parallel)
+  double residual = 0;
+
+  // Relaxes at radii r * scale until the relative residual is below
+  // `tolerance`, the largest net force below `force_floor` (a loose stage
+  // with no contacts left), or `budget` iterations have run.
+  auto relax = [&](double scale, double tolerance, double force_floor, std::size_t budget) {
     for (std::size_t i = 0; i < n; ++i) {
-      if (!downhill)
-        for (int d = 0; d < 3; ++d) x[i][d] -= 0.5 * dt * v[i][d], v[i][d] = 0;
-      Vec3 step;
-      for (int d = 0; d < 3; ++d) {
-        v[i][d] = keep * (v[i][d] + dt * f[i][d]) + mix * f[i][d];
-        step[d] = dt * v[i][d];
-      }
-      const double len2 = step[0] * step[0] + step[1] * step[1] + step[2] * step[2];
-      if (len2 > max_step * max_step) {
-        const double shrink = max_step / std::sqrt(len2);
-        for (int d = 0; d < 3; ++d) step[d] *= shrink;
-      }
-      for (int d = 0; d < 3; ++d) x[i][d] += step[d];
-      region.project(x[i], r[i]);
-      const double mx = x[i][0] - list.reference[i][0], my = x[i][1] - list.reference[i][1],
-                   mz = x[i][2] - list.reference[i][2];
-      moved2 = std::max(moved2, mx * mx + my * my + mz * mz);
+      radius[i] = r[i] * scale;
+      inv_r2[i] = 1 / (radius[i] * radius[i]);
+      region.project(x[i], radius[i]);
+      v[i] = {0, 0, 0};
     }
-    if (moved2 > 0.25 * skin * skin) {
-      build_neighbours(x, r, 1.0, skin, region, parallel, list);
-      ++run.neighbour_rebuilds;
-    }
-    sums = overlap_forces(x, r, inv_r2, list, region, parallel, f, v);
+    double dt = dt_start, alpha = alpha_start;
+    std::size_t positive_steps = 0;
+    build_neighbours(x, radius, 1.0, skin, region, parallel, list);
+    ++run.neighbour_rebuilds;
+    ForceSums sums = overlap_forces(x, radius, inv_r2, o.overlap_stiffening, list, region, parallel, f, v);
     residual = residual_of(sums);
-    if (o.progress && it % 50 == 0) o.progress(it, residual);
+    for (std::size_t local = 0; it < o.max_iterations && local < budget && residual > tolerance &&
+                                sums.max_f2 > force_floor * force_floor;
+         ++it, ++local) {
+      const bool downhill = sums.power > 0;
+      if (downhill) {
+        if (++positive_steps > n_delay) {
+          dt = std::min(dt * f_inc, dt_max);
+          alpha *= f_alpha;
+        }
+      } else {
+        positive_steps = 0;
+        if (local >= n_delay) dt = std::max(dt * f_dec, dt_min);
+        alpha = alpha_start;
+      }
+      // Semi-implicit Euler with the FIRE velocity mixing (FIRE 2.0 order): on
+      // an uphill step, back up half a step and stop. |v + dt F|^2 follows from
+      // the sums of the force pass, so the update needs no further reduction.
+      const double v2_new = downhill ? sums.v2 + 2 * dt * sums.power + dt * dt * sums.f2 : dt * dt * sums.f2;
+      const double f_norm = std::sqrt(sums.f2);
+      const double mix = (downhill && f_norm > 0) ? alpha * std::sqrt(std::max(v2_new, 0.0)) / f_norm : 0.0;
+      const double keep = downhill ? 1 - alpha : 1.0;
+      double moved2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : moved2) if (parallel)
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!downhill)
+          for (int d = 0; d < 3; ++d) x[i][d] -= 0.5 * dt * v[i][d], v[i][d] = 0;
+        Vec3 step;
+        for (int d = 0; d < 3; ++d) {
+          v[i][d] = keep * (v[i][d] + dt * f[i][d]) + mix * f[i][d];
+          step[d] = dt * v[i][d];
+        }
+        const double len2 = step[0] * step[0] + step[1] * step[1] + step[2] * step[2];
+        if (len2 > max_step * max_step) {
+          const double shrink = max_step / std::sqrt(len2);
+          for (int d = 0; d < 3; ++d) step[d] *= shrink;
+        }
+        for (int d = 0; d < 3; ++d) x[i][d] += step[d];
+        region.project(x[i], radius[i]);
+        const double mx = x[i][0] - list.reference[i][0], my = x[i][1] - list.reference[i][1],
+                     mz = x[i][2] - list.reference[i][2];
+        moved2 = std::max(moved2, mx * mx + my * my + mz * mz);
+      }
+      if (moved2 > 0.25 * skin * skin) {
+        build_neighbours(x, radius, 1.0, skin, region, parallel, list);
+        ++run.neighbour_rebuilds;
+      }
+      sums = overlap_forces(x, radius, inv_r2, o.overlap_stiffening, list, region, parallel, f, v);
+      residual = residual_of(sums);
+      if (o.progress && it % 50 == 0) o.progress(it, residual);
+    }
+  };
+
+  // Radius growth (Lubachevsky-Stillinger style, by relaxation): from a
+  // solid fraction where the random centres leave room, grow every radius by
+  // the same factor in steps, relaxing a little at each, so that small
+  // spheres settle in the gaps between large ones instead of inside them.
+  const double phi = 1 - o.porosity;
+  const double phi_start = std::min(phi, 0.5);
+  const int stages = phi > phi_start ? o.growth_stages : 0;
+  for (int k = 0; k < stages; ++k) {
+    const double phi_k = phi_start + (phi - phi_start) * double(k) / double(stages);
+    relax(std::cbrt(phi_k / phi), 0.1, 1e-4, o.growth_stage_iterations);
   }
+  relax(1.0, o.force_tolerance, 1e-9, o.max_iterations);
   run.iterations = it;
   run.residual = residual;
   run.converged = residual <= o.force_tolerance;

@@ -12,15 +12,20 @@
 //     up to (1 - p) V_container (the count follows from the volume);
 //  2. centres are placed uniformly at random in the container, each at least
 //     its radius from every wall (so every sphere lies wholly inside);
-//  3. the overlap energy E = 1/2 sum_pairs (delta_ij / r_min,ij)^2, with
-//     delta_ij = r_i + r_j - |x_i - x_j| > 0 and r_min,ij the smaller radius,
-//     is minimised over the centres (FIRE, Bitzek et al. 2006, with the
-//     FIRE 2.0 refinements of Guenole et al. 2020) with the walls as hard
-//     constraints. The minimum spreads the overlaps as evenly as the geometry
-//     allows (least squares in the relative overlap) and leaves no sphere
-//     buried in another. Starting from random centres at full size (an
-//     "infinite-temperature quench", O'Hern et al. 2003) gives a disordered,
-//     statistically homogeneous and isotropic structure.
+//  3. the overlap energy E = sum_pairs 1/2 xi^2 + Q/4 xi^4, with
+//     xi = delta_ij / r_min,ij, delta_ij = r_i + r_j - |x_i - x_j| > 0 and
+//     r_min,ij the smaller radius, is minimised over the centres (FIRE,
+//     Bitzek et al. 2006, with the FIRE 2.0 refinements of Guenole et al.
+//     2020), the walls being hard constraints - first while all radii grow
+//     together from a solid fraction of 0.5 to 1 - p (so small spheres
+//     settle between large ones), then at full size until every sphere is in
+//     balance. The quartic term (Q = 3 by default) makes deep overlaps dear,
+//     so the overlaps spread evenly and no sphere ends up buried in another.
+// On the concrete paper's cube (50 mm, p = 7 %, d = 1.6-2.0 mm) this gives
+// about 37,600 spheres and 214,000 bonds at C_f = 1.1 (Yade: 37,605 and
+// 213,501). Random centres make the structure disordered, statistically
+// homogeneous and isotropic; the layer next to the walls is less dense,
+// because no sphere may cross a wall (PackingStats::core_porosity).
 // Deterministic for a given seed: same bits for any number of threads.
 #include <array>
 #include <cstddef>
@@ -54,6 +59,14 @@ struct PackingOptions {
   /// relative accuracy).
   double force_tolerance = 1e-3;
   std::size_t max_iterations = 100000;
+  /// Q of the overlap energy 1/2 xi^2 + Q/4 xi^4 (0: purely harmonic; larger
+  /// values even out the overlaps at the cost of iterations).
+  double overlap_stiffening = 3;
+  /// Radius growth before the final relaxation: the solid fraction rises from
+  /// min(0.5, 1 - p) to 1 - p in this many steps (0: relax at full size from
+  /// the random start), each relaxed for at most this many iterations.
+  int growth_stages = 10;
+  std::size_t growth_stage_iterations = 200;
   /// Loops run on OpenMP threads from this many spheres on (serial below:
   /// synchronisation would cost more than it saves). The result does not
   /// depend on it.

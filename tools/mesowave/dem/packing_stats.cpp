@@ -95,10 +95,10 @@ PackingStats packing_stats(const Packing& p, double detection_factor) {
     for (int d = 0; d < 3; ++d) {
       core.lower_m[d] += margin;
       core.upper_m[d] -= margin;
-      fits = fits && core.upper_m[d] > core.lower_m[d];
+      fits = fits && core.upper_m[d] - core.lower_m[d] >= margin;  // a core worth counting
     }
     core.radius_m -= margin;
-    if (fits && (core.shape == "box" || core.radius_m > 0)) {
+    if (fits && (core.shape == "box" || core.radius_m >= margin / 2)) {
       double v = 0;
       for (std::size_t i = 0; i < s.count; ++i)
         if (sphere_inside(core, p.centres_m[i], 0.0)) v += std::pow(p.radii_m[i], 3);

@@ -31,7 +31,8 @@ struct PackingStats {
   double solid_volume_m3 = 0;
   double porosity = 0;
   /// Porosity counted over the core (the container shrunk by 2 d_max on every
-  /// side; centres decide membership): the wall layer is less dense.
+  /// side; centres decide membership): the wall layer is less dense. Absent
+  /// for a line, or when the core would be thinner than 2 d_max.
   std::optional<double> core_porosity;
   double d_mean_m = 0, d_std_m = 0, d_min_m = 0, d_max_m = 0;
   std::size_t contacts = 0;  ///< overlapping or touching pairs (|x_i - x_j| <= r_i + r_j)
