@@ -16,14 +16,15 @@
 //     xi = delta_ij / r_min,ij, delta_ij = r_i + r_j - |x_i - x_j| > 0 and
 //     r_min,ij the smaller radius, is minimised over the centres (FIRE,
 //     Bitzek et al. 2006, with the FIRE 2.0 refinements of Guenole et al.
-//     2020), the walls being hard constraints - first while all radii grow
-//     together from a solid fraction of 0.5 to 1 - p (so small spheres
-//     settle between large ones), then at full size until every sphere is in
-//     balance. The quartic term (Q = 3 by default) makes deep overlaps dear,
-//     so the overlaps spread evenly and no sphere ends up buried in another.
+//     2020), the walls being hard constraints, until every sphere is in
+//     balance. For wide size ranges (d_max > 1.5 d_min) the radii first grow
+//     together from a solid fraction of 0.5 to 1 - p in steps, so that small
+//     spheres settle between large ones. The quartic term (Q = 3 by default)
+//     makes deep overlaps dear, so the overlaps spread evenly and no sphere
+//     ends up buried in another.
 // On the concrete paper's cube (50 mm, p = 7 %, d = 1.6-2.0 mm) this gives
-// about 37,600 spheres and 214,000 bonds at C_f = 1.1 (Yade: 37,605 and
-// 213,501). Random centres make the structure disordered, statistically
+// about 37,600 spheres and 214,000-215,000 bonds at C_f = 1.1 (Yade: 37,605
+// and 213,501). Random centres make the structure disordered, statistically
 // homogeneous and isotropic; the layer next to the walls is less dense,
 // because no sphere may cross a wall (PackingStats::core_porosity).
 // Deterministic for a given seed: same bits for any number of threads.
@@ -65,7 +66,9 @@ struct PackingOptions {
   /// Radius growth before the final relaxation: the solid fraction rises from
   /// min(0.5, 1 - p) to 1 - p in this many steps (0: relax at full size from
   /// the random start), each relaxed for at most this many iterations.
-  int growth_stages = 10;
+  /// -1 (default): 10 steps when d_max > 1.5 d_min, where small spheres would
+  /// otherwise end up buried, else none.
+  int growth_stages = -1;
   std::size_t growth_stage_iterations = 200;
   /// Loops run on OpenMP threads from this many spheres on (serial below:
   /// synchronisation would cost more than it saves). The result does not
