@@ -10,8 +10,11 @@
 //
 // The packing method (random centres, overlap-energy relaxation) lives in
 // dem/packing_generator.hpp; the statistics in dem/packing_stats.hpp.
+#include <omp.h>
+
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 
 #include "mesowave/app/progress.hpp"
@@ -108,6 +111,19 @@ dem::Packing generate(const dem::Container& container, dem::PackingOptions optio
   return packing;
 }
 
+// Threads for the relaxation. Each FIRE iteration ends at a barrier, so on a
+// machine already busier than its cores a second thread mostly waits for the
+// first to get a core back (measured: 2 threads 2-3x slower than 1 at load 8 on
+// 2 cores). Unless OMP_NUM_THREADS says otherwise, run on one thread then.
+// The packing is the same bits for any thread count.
+int choose_threads() {
+  if (std::getenv("OMP_NUM_THREADS")) return omp_get_max_threads();
+  double load = 0;
+  const int cores = omp_get_num_procs();
+  if (getloadavg(&load, 1) == 1 && load > cores - 0.5) omp_set_num_threads(1);
+  return omp_get_max_threads();
+}
+
 dem::Packing imported(app::Run& run, const Options& o) {
   if (o.input.empty()) throw InputError("import needs the file to read: mw-pack import FILE");
   run.input(o.input);
@@ -142,20 +158,23 @@ int main(int argc, char** argv) {
       "Section 3) and write it as a packing HDF5 file with a JSON summary.\n"
       "Porosity p = 1 - sum(V_sphere)/V_container; p = 7 % is reached with overlaps. Diameters are drawn until "
       "their volume is (1 - p) V_container, centres placed at random at least their radius from every wall, then "
-      "the overlap energy sum 1/2 xi^2 + Q/4 xi^4 (xi = overlap / smaller radius) is minimised (FIRE) while the "
-      "radii grow to full size, so overlaps spread evenly and no sphere is buried. Particle density "
+      "the overlap energy sum 1/2 xi^2 + Q/4 xi^4 (xi = overlap / smaller radius) is minimised (FIRE; for "
+      "d_max > 1.5 d_min while the radii grow to full size), so overlaps spread evenly and no sphere is buried. Particle density "
       "rho_p = m_specimen / sum(V_sphere), so the model weighs what the specimen weighs. A line of spheres (rod "
       "model) has n = ceil(L/d) spheres at spacing d on the rod axis (z).\n\n"
       "  mw-pack box --cube-side-mm 50 --porosity-pct 7 --d-min-mm 1.6 --d-max-mm 2 --density-kg-m3 2129.56 "
       "--packing cube.h5\n"
-      "  mw-pack box --from lab-data/concrete-cube/porosity.toml --d-min-mm 1.6 --d-max-mm 2 --packing cube.h5\n"
+      "  mw-pack box --from lab-data/concrete-cube/porosity.toml --from lab-data/concrete-cube/dem-packing.toml "
+      "--packing cube.h5\n"
       "  mw-pack cylinder --diameter-mm 50 --height-mm 100 --porosity-pct 10 --sieve-curve sand.csv --d-min-mm 1 "
       "--packing cyl.h5\n"
       "  mw-pack line --sphere-radius-mm 5.1 --spacing-R 1.03 --length-mm 1000 --density-kg-m3 7850.66 "
       "--packing rod.h5\n"
       "  mw-pack import spheres.txt --lower-mm 0 0 0 --upper-mm 50 50 50 --packing same.h5   (Yade textExt, metres)\n"
       "  mw-pack import spheres.csv --packing same.h5   (columns x_mm,y_mm,z_mm,r_mm or x_m,...; container = "
-      "bounding box)");
+      "bounding box)\n"
+      "Threads: OMP_NUM_THREADS; if unset, all cores, or one when the load average exceeds the cores (the packing "
+      "is the same bits either way).");
   Options o;
   auto& cli = tool.cli();
   cli.add_option("container", o.container, "box | cylinder | line | import")
@@ -229,8 +248,9 @@ int main(int argc, char** argv) {
       options.seed = o.seed;
       options.force_tolerance = require_positive("--force-tolerance", o.force_tolerance);
       options.overlap_stiffening = require_in_range("--overlap-stiffening", o.overlap_stiffening, 0, 1000);
+      summary["threads"] = choose_threads();
       packing = generate(container, options, relax, o.quiet, "mw-pack " + o.container);
-      origin.text = {{"method", "random centres, radius growth and overlap-energy relaxation (FIRE), mw-pack"},
+      origin.text = {{"method", "random centres, overlap-energy relaxation (FIRE), mw-pack"},
                      {"seed", std::to_string(o.seed)},
                      {"size_distribution", options.sizes.describe()}};
       if (!o.sieve_curve.empty()) origin.text.emplace_back("sieve_curve", o.sieve_curve.string());

@@ -85,6 +85,12 @@ struct Region {
 // number of threads, so neither does the rounding.
 constexpr std::size_t kBlock = 256;
 
+// Loops hand out work in chunks as threads come free (dynamic schedule): on a
+// shared machine a thread that loses its core does not hold up the other.
+// Each sphere's (or block's) result is stored by index, so which thread
+// computes it changes no bit.
+constexpr int kChunk = 256;
+
 // ---- Verlet neighbour lists ------------------------------------------------
 
 // For each sphere, every other sphere within r_i + r_j + skin (both
@@ -147,7 +153,7 @@ void build_neighbours(const std::vector<Vec3>& x, const std::vector<double>& r, 
     list.count.assign(n, 0);
     list.index.resize(n * slots);
     bool overflow = false;
-#pragma omp parallel for schedule(static) reduction(|| : overflow) if (parallel)
+#pragma omp parallel for schedule(dynamic, kChunk) reduction(|| : overflow) if (parallel)
     for (std::size_t i = 0; i < n; ++i) {
       std::uint32_t at = 0;
       std::uint32_t* out = list.index.data() + i * slots;
@@ -196,7 +202,7 @@ ForceSums overlap_forces(const std::vector<Vec3>& x, const std::vector<double>& 
   const std::size_t n = x.size();
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<ForceSums> partial(blocks);
-#pragma omp parallel for schedule(static) if (parallel)
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
   for (std::size_t b = 0; b < blocks; ++b) {
     ForceSums sums;
     const std::size_t end = std::min(n, (b + 1) * kBlock);
@@ -435,7 +441,7 @@ Packing generate_packing(const Container& container, const PackingOptions& o, Pa
       const double mix = (downhill && f_norm > 0) ? alpha * std::sqrt(std::max(v2_new, 0.0)) / f_norm : 0.0;
       const double keep = downhill ? 1 - alpha : 1.0;
       double moved2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : moved2) if (parallel)
+#pragma omp parallel for schedule(dynamic, kChunk) reduction(max : moved2) if (parallel)
       for (std::size_t i = 0; i < n; ++i) {
         if (!downhill)
           for (int d = 0; d < 3; ++d) x[i][d] -= 0.5 * dt * v[i][d], v[i][d] = 0;
@@ -488,7 +494,7 @@ Packing generate_packing(const Container& container, const PackingOptions& o, Pa
   // A sphere whose centre lies inside its partner is buried: the target
   // asks for more solid than overlapping spheres can hold evenly.
   double worst = 0;
-#pragma omp parallel for schedule(static) reduction(max : worst) if (parallel)
+#pragma omp parallel for schedule(dynamic, kChunk) reduction(max : worst) if (parallel)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t* partners = list.index.data() + i * list.slots;
     for (std::uint32_t k = 0; k < list.count[i]; ++k) {
