@@ -35,6 +35,7 @@ void write_dataset(hid_t parent, const std::string& name, const std::vector<T>& 
   const auto dims = dims_for(data.size(), cols);
   Handle space(check(H5Screate_simple(int(dims.size()), dims.data(), nullptr), "create dataspace for " + name));
   Handle props(check(H5Pcreate(H5P_DATASET_CREATE), "create dataset properties"));
+  H5Pset_obj_track_times(props.id(), false);  // same inputs, same bytes: no modification times
   if (compress && data.size() >= 4096) {
     std::vector<hsize_t> chunk = dims;
     chunk[0] = std::min<hsize_t>(dims[0], std::max<hsize_t>(1, 65536 / (cols ? cols : 1)));
@@ -117,6 +118,7 @@ Handle open_file(const std::filesystem::path& path) {
 
 Handle create_group(hid_t parent, const std::string& name) {
   Handle props(check(H5Pcreate(H5P_GROUP_CREATE), "create group properties"));
+  H5Pset_obj_track_times(props.id(), false);
   H5Pset_link_creation_order(props.id(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
   return Handle(check(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, props.id(), H5P_DEFAULT), "create group " + name));
 }
