@@ -126,7 +126,8 @@ void CohesiveFrictionalContact::contact_forces(double dt, bool evaluate_energy) 
       o.c = cross(n, fs);
       o.arm[0] = ri - 0.5 * u;
       o.arm[1] = rj - 0.5 * u;
-      if (evaluate_energy) elastic += 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 / ks : 0.0);
+      // The shear increment carries the factor (r_i + r_j)/|x_j - x_i|: the spring is that times K_s.
+      if (evaluate_energy) elastic += 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 * dist / (sum * ks) : 0.0);
     }
     block_elastic_[blk] = elastic;
     block_plastic_[blk] += plastic;

@@ -43,7 +43,8 @@ void LinearBondedNetwork::contact_forces(double /*dt*/, bool evaluate_energy) {
       const double fs2 = norm2(fs);
       const double r_min = std::min(ri, rj), r2 = r_min * r_min;
       peak2 = std::max(peak2, std::max(fn * fn * inv_T * inv_T, fs2 * inv_C * inv_C) / (r2 * r2));
-      if (evaluate_energy) elastic += 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 / ks : 0.0);
+      // The shear spring acting on a0 P_t dd is a0 K_s (Yade's incident-velocity factor).
+      if (evaluate_energy) elastic += 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 / (a0 * ks) : 0.0);
     }
     block_elastic_[blk] = elastic;
     block_peak_[blk] = std::sqrt(peak2);

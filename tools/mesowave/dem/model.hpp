@@ -24,7 +24,7 @@ namespace mesowave::dem {
 /// trapezoid g_n . (v_{n-1/2} + v_{n+1/2}) dt / 2.
 struct EnergyAccount {
   double kinetic_J = 0;        ///< at the last energy evaluation
-  double elastic_J = 0;        ///< springs: F_n^2 / (2 K_n) + |F_s|^2 / (2 K_s), same evaluation
+  double elastic_J = 0;        ///< springs: F_n^2 / (2 K_n) + |F_s|^2 / (2 a K_s), a = (r_i + r_j)/|x_j - x_i|
   double external_work_J = 0;  ///< done by actuators since step 0
   double damping_J = 0;        ///< dissipated by local damping since step 0
   double plastic_J = 0;        ///< dissipated by frictional sliding since step 0
