@@ -3,7 +3,7 @@
 // cheapest model that is valid for the scene.
 //
 //   mw-dem info pipeline/concrete-cube/scenes/cube-wave.toml
-//   mw-dem run pipeline/concrete-cube/scenes/cube-wave.toml --frequency-kHz 100 \
+//   mw-dem run pipeline/concrete-cube/scenes/cube-wave.toml --frequency-kHz 100
 //       --signals results/concrete-cube/dem-100kHz.h5 --summary results/concrete-cube/dem-100kHz.json
 #include <filesystem>
 #include <map>

@@ -133,7 +133,13 @@ std::string SphereTarget::describe() const {
   return "";
 }
 
-Vec3 direction_vector(const std::string& name, const SphereTarget& target, const std::string& who) {
+Vec3 direction_vector(const std::string& name, const SphereTarget& target, const std::string& who,
+                      const std::optional<Vec3>& line, bool check_only) {
+  if (name == "line" || name == "-line") {
+    if (check_only) return {1, 0, 0};
+    if (!line) throw InputError(who + ": direction \"" + name + "\" needs a packing whose centres lie on one line");
+    return name == "line" ? *line : -*line;
+  }
   if (name == "inward" || name == "normal") {
     if (target.kind != SphereTarget::Kind::patch)
       throw InputError(who + ": \"" + name + "\" needs a face; give x, -x, y, -y, z or -z instead");
@@ -144,7 +150,7 @@ Vec3 direction_vector(const std::string& name, const SphereTarget& target, const
   const bool minus = !name.empty() && name[0] == '-';
   const std::string axis = minus ? name.substr(1) : (name.size() == 2 && name[0] == '+' ? name.substr(1) : name);
   if (axis != "x" && axis != "y" && axis != "z")
-    throw InputError(who + ": direction \"" + name + "\" must be inward/normal, magnitude, or x, -x, y, -y, z, -z");
+    throw InputError(who + ": direction \"" + name + "\" must be inward/normal, line, magnitude, or x, -x, y, -y, z, -z");
   Vec3 v;
   v[axis[0] - 'x'] = minus ? -1.0 : 1.0;
   return v;
@@ -231,7 +237,7 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
       spec.target = read_target(k);
       spec.direction = k.text("direction", spec.target.kind == SphereTarget::Kind::patch ? "inward" : "");
       if (spec.direction.empty()) throw InputError(k.where() + " needs direction (x, -x, ...) when it is not on a face");
-      direction_vector(spec.direction, spec.target, k.where());
+      direction_vector(spec.direction, spec.target, k.where(), std::nullopt, true);
       if (spec.direction == "magnitude" || spec.direction == "normal")
         throw InputError(k.where() + ".direction must be inward or an axis (x, -x, ...)");
       if (spec.kind == "force") {
@@ -265,7 +271,7 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
       spec.component = k.text("component", spec.target.kind == SphereTarget::Kind::patch ? "normal" : "");
       if (spec.component.empty()) throw InputError(k.where() + " needs component (x, -x, ..., magnitude) when it is not on a face");
       if (spec.component == "inward") throw InputError(k.where() + ".component must be normal, an axis or magnitude");
-      direction_vector(spec.component, spec.target, k.where());
+      direction_vector(spec.component, spec.target, k.where(), std::nullopt, true);
       if (auto interval = k.number("sample_interval_ns"))
         spec.sample_interval_s = require_positive(k.where() + ".sample_interval_ns", *interval, "ns") * units::ns;
       k.finish();

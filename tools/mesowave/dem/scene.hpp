@@ -14,10 +14,10 @@
 //   [time]      dt_ns, duration_ms
 //   [model]     choice (auto | full | linear | chain), linear_validity_bound, energy_check_steps
 //   [[actuator]] name, kind (force | displacement), where (face + centre_mm + patch_mm
-//               [+ depth_mm] | point_mm | sphere = "first"/"last"), direction (inward | x | -x | ...),
+//               [+ depth_mm] | point_mm | sphere = "first"/"last"), direction (inward | line | x | -x | ...),
 //               amplitude_N (force) or amplitude_nm (displacement), frequency_kHz, cycles, delay_us
 //   [[sensor]]  name, quantity (acceleration | velocity | displacement), component
-//               (normal | x | -x | y | ... | magnitude), where (as for actuators), sample_interval_ns
+//               (normal | line | x | -x | y | ... | magnitude), where (as for actuators), sample_interval_ns
 //   [output]    snapshot_interval_us (0 = none)
 #include <filesystem>
 #include <optional>
@@ -43,7 +43,7 @@ struct ActuatorSpec {
   std::string name;
   std::string kind = "force";       ///< force | displacement
   SphereTarget target;
-  std::string direction = "inward"; ///< inward (needs a face) | x | -x | y | -y | z | -z
+  std::string direction = "inward"; ///< inward (needs a face) | line | -line | x | -x | y | -y | z | -z
   double amplitude = 0;             ///< N (force) or m (displacement)
   double frequency_hz = 0;
   double cycles = 5;
@@ -53,7 +53,7 @@ struct ActuatorSpec {
 struct SensorSpec {
   std::string name;
   MotionQuantity quantity = MotionQuantity::acceleration;
-  std::string component = "normal";  ///< normal (outward, needs a face) | x | -x | ... | magnitude
+  std::string component = "normal";  ///< normal (outward, needs a face) | line | x | -x | ... | magnitude
   SphereTarget target;
   double sample_interval_s = 0;      ///< 0: every step
 };
@@ -78,8 +78,10 @@ Scene parse_scene(const std::string& text, const std::string& origin);
 Scene read_scene_file(const std::filesystem::path& path);
 
 /// Unit vector of a direction or component name (x, -x, ...); for "inward" or
-/// "normal" the face's inward/outward normal; zero vector for "magnitude".
-/// InputError naming `who` when a face is needed but the target has none.
-Vec3 direction_vector(const std::string& name, const SphereTarget& target, const std::string& who);
+/// "normal" the face's inward/outward normal; for "line" / "-line" the axis of
+/// a line of spheres (first to last sphere), given as `line`; zero vector for
+/// "magnitude". InputError naming `who` when a face or a line is needed but missing.
+Vec3 direction_vector(const std::string& name, const SphereTarget& target, const std::string& who,
+                      const std::optional<Vec3>& line = std::nullopt, bool check_only = false);
 
 }  // namespace mesowave::dem

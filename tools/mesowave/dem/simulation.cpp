@@ -52,10 +52,11 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
   BondNetwork bonds = make_bond_network(spheres, m.bond_factor);
   const Box box = bounding_box(spheres);
 
+  const std::optional<Vec3> line = line_axis(spheres);
   std::vector<ResolvedLoad> loads;
   for (const auto& a : scene_.actuators) {
     const std::string who = "actuator " + a.name;
-    loads.push_back({&a, resolve(a.target, spheres, box, who), direction_vector(a.direction, a.target, who)});
+    loads.push_back({&a, resolve(a.target, spheres, box, who), direction_vector(a.direction, a.target, who, line)});
   }
   std::vector<std::vector<std::size_t>> sensor_spheres;
   for (const auto& sensor : scene_.sensors) sensor_spheres.push_back(resolve(sensor.target, spheres, box, "sensor " + sensor.name));
@@ -114,7 +115,7 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     const SensorSpec& sensor = scene_.sensors[i];
     const std::string who = "sensor " + sensor.name;
     const std::vector<std::size_t>& chosen = sensor_spheres[i];
-    const Vec3 component = direction_vector(sensor.component, sensor.target, who);
+    const Vec3 component = direction_vector(sensor.component, sensor.target, who, line);
     const std::int64_t interval =
         sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
     Vec3 position{};
