@@ -34,10 +34,10 @@ public:
   CohesiveFrictionalContact(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material);
 
   std::string name() const override { return "full"; }
-  std::size_t contact_count() const override { return first_.size(); }
+  std::size_t contact_count() const override { return slots_.size(); }
   std::size_t broken_bond_count() const override;
   std::size_t memory_bytes() const override;
-  /// Candidate-list rebuilds so far (contact detection passes after step 0).
+  /// Candidate-list builds so far (the first at step 0).
   std::size_t detection_passes() const { return detection_passes_; }
 
 protected:
@@ -48,10 +48,16 @@ private:
   void detect_contacts();
 
   enum : std::uint8_t { kCohesive = 0, kFrictional = 1 };
-  std::vector<std::uint32_t> first_, second_;  ///< bonds, then candidate contacts
-  std::vector<double> overlap0_;
-  std::vector<Vec3> shear_, normal_;
-  std::vector<std::uint8_t> status_;
+  static constexpr std::uint32_t kNoBond = 0xffffffffu;
+  /// What a contact carries from step to step, with its constants, in slot order.
+  struct Slot {
+    Vec3 normal;       ///< n of the last step (ScGeom::normal)
+    Vec3 shear;        ///< F_s (CohFrictPhys::shearForce)
+    double overlap0;   ///< u_0 (0 for contacts that were never bonded)
+    std::uint32_t bond;  ///< bond index, kNoBond for a detected contact
+    std::uint8_t status;
+  };
+  std::vector<Slot> slots_;
   double margin_ = 0, travelled_ = 0;
   std::size_t detection_passes_ = 0;
 };

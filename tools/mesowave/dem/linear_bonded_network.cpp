@@ -6,49 +6,52 @@
 namespace mesowave::dem {
 
 LinearBondedNetwork::LinearBondedNetwork(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material)
-    : SphereSystem(std::move(spheres), std::move(bonds), material, true, true) {}
+    : SphereSystem(std::move(spheres), std::move(bonds), material, true, true) {
+  const auto order = set_contacts(bonds_.first, bonds_.second);
+  slots_.resize(order.size());
+  for (std::size_t s = 0; s < order.size(); ++s) slots_[s] = {bonds_.normal0[order[s]], bonds_.overlap0_m[order[s]]};
+}
+
+std::size_t LinearBondedNetwork::memory_bytes() const { return SphereSystem::memory_bytes() + slots_.size() * sizeof(Slot); }
 
 void LinearBondedNetwork::contact_forces(double /*dt*/, bool evaluate_energy) {
-  const std::size_t m = bonds_.size();
-  const std::size_t blocks = (m + kContactBlock - 1) / kContactBlock;
-  const double young = material_.young_Pa, ratio = material_.stiffness_ratio;
+  const double two_young = 2.0 * material_.young_Pa, ratio = material_.stiffness_ratio;
   const double T = material_.tensile_strength_Pa, C = material_.cohesion_Pa;
-  const double inv_T = std::isinf(T) ? 0.0 : 1.0 / T, inv_C = std::isinf(C) ? 0.0 : 1.0 / C;
+  const bool finite_T = std::isfinite(T), finite_C = std::isfinite(C);
   const double* radius = spheres_.radius_m.data();
-  const std::uint32_t* first = bonds_.first.data();
-  const std::uint32_t* second = bonds_.second.data();
-  const double* overlap0 = bonds_.overlap0_m.data();
-  const Vec3* normal0 = bonds_.normal0.data();
+  const Vec3* d = x_.data();
+  const Vec3* theta = theta_.data();
+  const Slot* slot = slots_.data();
+  const std::uint32_t* first = first_.data();
+  const std::uint32_t* second = second_.data();
 
-#pragma omp for schedule(static)
-  for (std::size_t blk = 0; blk < blocks; ++blk) {
-    double elastic = 0, peak2 = 0;
-    const std::size_t end = std::min(m, (blk + 1) * kContactBlock);
-    for (std::size_t b = blk * kContactBlock; b < end; ++b) {
-      const std::uint32_t i = first[b], j = second[b];
-      const double ri = radius[i], rj = radius[j], sum = ri + rj, u0 = overlap0[b];
-      const double kn = young * 2.0 * ri * rj / sum, ks = ratio * kn;
-      const double a0 = sum / (sum - u0);
-      const Vec3 n = normal0[b];
-      const Vec3 dd = x_[j] - x_[i];
-      const double dn = dot(n, dd);
-      const Vec3 st = a0 * (dd - dn * n) - cross(ri * theta_[i] + rj * theta_[j], n);
-      const double fn = -kn * dn;
-      const Vec3 fs = -ks * st;
-      ContactOut& o = out_[b];
-      o.f = fn * n + fs;
-      o.c = cross(n, fs);
-      o.arm[0] = ri - 0.5 * u0;
-      o.arm[1] = rj - 0.5 * u0;
-      const double fs2 = norm2(fs);
-      const double r_min = std::min(ri, rj), r2 = r_min * r_min;
-      peak2 = std::max(peak2, std::max(fn * fn * inv_T * inv_T, fs2 * inv_C * inv_C) / (r2 * r2));
-      // The shear spring acting on a0 P_t dd is a0 K_s (Yade's incident-velocity factor).
-      if (evaluate_energy) elastic += 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 / (a0 * ks) : 0.0);
-    }
-    block_elastic_[blk] = elastic;
-    block_peak_[blk] = std::sqrt(peak2);
-  }
+  for_each_contact([&](std::size_t b, ContactOut& o, ContactSums& sums) __attribute__((always_inline)) {
+    const std::uint32_t i = first[b], j = second[b];
+    const double ri = radius[i], rj = radius[j], sum = ri + rj;
+    const double u0 = slot[b].overlap0, dist0 = sum - u0;
+    const double inv = 1.0 / (sum * dist0);  // one division for K_n and a0
+    const double kn = two_young * ri * rj * dist0 * inv, ks = ratio * kn;
+    const double a0 = sum * sum * inv;
+    const Vec3 n = slot[b].normal;
+    const Vec3 dd = d[j] - d[i];
+    const double dn = dot(n, dd);
+    const Vec3 st = a0 * (dd - dn * n) - cross(ri * theta[i] + rj * theta[j], n);
+    const double fn = -kn * dn;
+    const Vec3 fs = -ks * st;
+    o.f = fn * n + fs;
+    o.c = cross(n, fs);
+    o.arm[0] = ri - 0.5 * u0;
+    o.arm[1] = rj - 0.5 * u0;
+    const double fs2 = norm2(fs);
+    // Peak bond force / strength (T R^2, C R^2; K_n R for bonds that never break),
+    // tracked without a division unless it grows.
+    const double r_min = std::min(ri, rj);
+    const double sn = finite_T ? T * r_min * r_min : kn * r_min, ss = finite_C ? C * r_min * r_min : kn * r_min;
+    const double num = std::max(fn * fn * ss * ss, fs2 * sn * sn), den = sn * sn * ss * ss;
+    if (num > sums.peak2 * den) sums.peak2 = num / den;
+    // The shear spring acting on a0 P_t dd is a0 K_s (Yade's incident-velocity factor).
+    if (evaluate_energy) sums.elastic += 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 / (a0 * ks) : 0.0);
+  });
 }
 
 }  // namespace mesowave::dem

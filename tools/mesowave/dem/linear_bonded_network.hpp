@@ -19,9 +19,17 @@ class LinearBondedNetwork : public SphereSystem {
 public:
   LinearBondedNetwork(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material);
   std::string name() const override { return "linear"; }
+  std::size_t memory_bytes() const override;
 
 protected:
   void contact_forces(double dt, bool evaluate_energy) override;
+
+private:
+  struct Slot {
+    Vec3 normal;      ///< n0, first -> second
+    double overlap0;  ///< u_0
+  };
+  std::vector<Slot> slots_;  ///< per contact, in slot order
 };
 
 }  // namespace mesowave::dem

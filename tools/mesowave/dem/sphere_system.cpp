@@ -65,23 +65,58 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
   sphere_block_kinetic_.assign(sphere_blocks, 0);
   sphere_block_damping_.assign(sphere_blocks, 0);
   sphere_block_vmax2_.assign(sphere_blocks, 0);
+  f_acc_.assign(n, {});
+  t_acc_.assign(n, {});
   threads_ = omp_get_max_threads();
-  set_contact_count(bonds_.size(), bonds_.incidence);
+  // A fixed number of Morton ranges, set by the sphere count alone (never by
+  // the thread count, which must not change the bits): ~1000 spheres each.
+  partitions_ = std::clamp<std::size_t>(n / 1024, 1, 64);
+  sphere_chunk_ = (n + partitions_ - 1) / partitions_;
+  first_ = bonds_.first;
+  second_ = bonds_.second;
 }
 
-void SphereSystem::set_contact_count(std::size_t count, Incidence incidence) {
-  contact_incidence_ = std::move(incidence);
-  out_.assign(count, ContactOut{});
-  const std::size_t blocks = (count + kContactBlock - 1) / kContactBlock;
-  // Dissipation is cumulative: keep what the old blocks held.
+std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
+                                                      const std::vector<std::uint32_t>& second) {
+  const std::size_t count = first.size(), n = spheres_.size();
+  std::vector<std::uint32_t> order;
+  order.reserve(count);
+  interior_start_.assign(partitions_ + 1, 0);
+  for (std::size_t c = 0; c < count; ++c) {
+    const std::size_t p = first[c] / sphere_chunk_;
+    if (p == second[c] / sphere_chunk_) ++interior_start_[p + 1];
+  }
+  for (std::size_t p = 0; p < partitions_; ++p) interior_start_[p + 1] += interior_start_[p];
+  order.resize(count);
+  std::vector<std::uint32_t> fill(interior_start_.begin(), interior_start_.end() - 1);
+  cross_begin_ = interior_start_[partitions_];
+  std::size_t cross = cross_begin_;
+  for (std::size_t c = 0; c < count; ++c) {
+    const std::size_t p = first[c] / sphere_chunk_;
+    order[p == second[c] / sphere_chunk_ ? fill[p]++ : cross++] = std::uint32_t(c);
+  }
+  first_.resize(count);
+  second_.resize(count);
+  for (std::size_t s = 0; s < count; ++s) {
+    first_[s] = first[order[s]];
+    second_[s] = second[order[s]];
+  }
+  const std::vector<std::uint32_t> cross_first(first_.begin() + std::ptrdiff_t(cross_begin_), first_.end());
+  const std::vector<std::uint32_t> cross_second(second_.begin() + std::ptrdiff_t(cross_begin_), second_.end());
+  cross_incidence_ = make_incidence(n, cross_first, cross_second);
+  out_.assign(count - cross_begin_, ContactOut{});
+  cross_blocks_ = (count - cross_begin_ + kContactBlock - 1) / kContactBlock;
+  const std::size_t tasks = partitions_ + cross_blocks_;
+  // Dissipation is cumulative: keep what the old tasks held.
   double plastic = 0;
-  for (double p : block_plastic_) plastic += p;
-  block_elastic_.assign(blocks, 0);
-  block_plastic_.assign(std::max<std::size_t>(blocks, 1), 0);
-  block_plastic_[0] = plastic;
-  block_peak_.assign(blocks, 0);
+  for (double p : task_plastic_) plastic += p;
+  task_elastic_.assign(tasks, 0);
+  task_plastic_.assign(tasks, 0);
+  task_plastic_[0] = plastic;
+  task_peak2_.assign(tasks, 0);
   // A parallel region costs a few microseconds: worth it only for big systems.
-  parallel_ = threads_ > 1 && count >= 8 * kContactBlock;
+  parallel_ = threads_ > 1 && count >= 8 * kContactBlock && partitions_ > 1;
+  return order;
 }
 
 Vec3 SphereSystem::displacement(std::size_t k) const {
@@ -126,15 +161,15 @@ void SphereSystem::step(double dt, bool evaluate_energy) {
   }
   forced_.clear();
 
-  double peak = peak_ratio_, vmax2 = 0;
-  for (double p : block_peak_) peak = std::max(peak, p);
+  double peak2 = 0, vmax2 = 0;
+  for (double p : task_peak2_) peak2 = std::max(peak2, p);
   for (double v2 : sphere_block_vmax2_) vmax2 = std::max(vmax2, v2);
-  peak_ratio_ = peak;
+  peak_ratio_ = std::max(peak_ratio_, std::sqrt(peak2));
   max_speed_ = std::sqrt(vmax2);
   if (evaluate_energy) {
     double kinetic = 0, elastic = 0;
     for (double e : sphere_block_kinetic_) kinetic += e;
-    for (double e : block_elastic_) elastic += e;
+    for (double e : task_elastic_) elastic += e;
     energy_.kinetic_J = kinetic;
     energy_.elastic_J = elastic;
   }
@@ -145,8 +180,8 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
   const double alpha = material_.damping;
   const std::size_t n = spheres_.size();
   const std::size_t blocks = (n + kSphereBlock - 1) / kSphereBlock;
-  const std::uint32_t* offset = contact_incidence_.offset.data();
-  const std::uint32_t* entry = contact_incidence_.entry.data();
+  const std::uint32_t* offset = cross_incidence_.offset.data();
+  const std::uint32_t* entry = cross_incidence_.entry.data();
   const ContactOut* out = out_.data();
   const double* mass = spheres_.mass_kg.data();
   const double* inertia = spheres_.inertia_kg_m2.data();
@@ -156,7 +191,11 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
     double kinetic = 0, damping = 0, vmax2 = 0;
     const std::size_t end = std::min(n, (blk + 1) * kSphereBlock);
     for (std::size_t k = blk * kSphereBlock; k < end; ++k) {
-      Vec3 f = f_ext_[k], t{};
+      // Fixed order: contacts inside the partition (summed in slot order by
+      // for_each_contact), then those across partitions, then external loads.
+      Vec3 f = f_acc_[k], t = t_acc_[k];
+      f_acc_[k] = {};
+      t_acc_[k] = {};
       for (std::uint32_t e = offset[k]; e < offset[k + 1]; ++e) {
         const std::uint32_t code = entry[e];
         const ContactOut& o = out[code >> 1];
@@ -165,6 +204,7 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
         f += sign * o.f;
         t -= o.arm[side] * o.c;
       }
+      f += f_ext_[k];
       // Translation.
       const Vec3 a_free = inv_mass_[k] * f;
       const Vec3 v0 = v_[k];
@@ -203,7 +243,7 @@ EnergyAccount SphereSystem::energy() const {
   e.damping_J = 0;
   for (double d : sphere_block_damping_) e.damping_J += d;
   e.plastic_J = 0;
-  for (double p : block_plastic_) e.plastic_J += p;
+  for (double p : task_plastic_) e.plastic_J += p;
   return e;
 }
 
@@ -267,7 +307,8 @@ std::size_t SphereSystem::memory_bytes() const {
   std::size_t bytes = n * (sizeof(Vec3) * (6 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + 2 * sizeof(double) +
                            sizeof(std::uint32_t) + sizeof(std::int64_t) + 1);
   bytes += bonds_.size() * (2 * sizeof(std::uint32_t) + sizeof(double) + sizeof(Vec3) + 2 * sizeof(std::uint32_t));
-  bytes += out_.size() * sizeof(ContactOut) + contact_incidence_.entry.size() * sizeof(std::uint32_t);
+  bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +
+           first_.size() * 2 * sizeof(std::uint32_t) + 2 * n * sizeof(Vec3);
   return bytes;
 }
 

@@ -4,13 +4,16 @@
 //   a = F/m;  a_k <- a_k (1 - alpha_d sgn(a_k (v_k + a_k dt/2)))   (Eq. 7, per component)
 //   v += dt a;  x += dt v;   the same for the angular velocity with the torque.
 //
-// A contact law (one class, one file) only fills one record per contact: the
-// force on its second sphere and the torque factors. The integrator gathers
-// each sphere's records in ascending contact order, so a step gives the same
-// bits on any number of threads (no atomics, no per-thread buffers), and the
-// gather is fused with the update of the sphere's motion (one pass over the
-// spheres per step). Sums over spheres or contacts (energies) are taken per
-// fixed-size block and added in block order, for the same reason.
+// A contact law (one class, one file) only computes one contact at a time:
+// the force on its second sphere and the torque factors (for_each_contact
+// below). Contacts are laid out so that a step gives the same bits on any
+// number of threads, with no atomics and no per-thread buffers: the spheres
+// are cut into a fixed number of Morton ranges; contacts inside a range add
+// their forces in place (one thread owns a range), contacts between ranges
+// leave a record that each sphere gathers, in a fixed order, in the pass that
+// also updates its motion. Sums over spheres or contacts (energies) are taken
+// per fixed task and added in task order, for the same reason.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -64,18 +67,35 @@ protected:
     Vec3 c;
     double arm[2];
   };
+  /// What a law adds up over its contacts (per task, then in task order).
+  struct ContactSums {
+    double elastic = 0, plastic = 0, peak2 = 0;  ///< peak2: the largest (force / strength)^2
+  };
 
-  /// Fills out_[0 .. contact count) for positions x_n. Runs inside the
-  /// step's parallel region: a law uses an orphaned `omp for` over blocks of
-  /// kContactBlock contacts and writes its block sums to block_elastic_,
-  /// block_plastic_ (added to) and block_peak_.
+  /// Sets the contacts (pairs first < second) and lays them out in slots:
+  /// the spheres are cut into a fixed number of Morton ranges (partitions,
+  /// set by the sphere count alone); contacts inside one partition come
+  /// first, grouped by partition, then the contacts between partitions.
+  /// Returns the order: slot s holds the contact given at position order[s].
+  /// A law keeps its per-contact arrays in slot order.
+  std::vector<std::uint32_t> set_contacts(const std::vector<std::uint32_t>& first,
+                                          const std::vector<std::uint32_t>& second);
+
+  /// Runs kernel(slot, out, sums) for every contact; call it from contact_forces
+  /// (inside the step's parallel region). Contacts inside a partition add
+  /// their force to its spheres directly, in slot order (one thread owns a
+  /// partition, so no races and no atomics); contacts between partitions
+  /// leave a record that each sphere gathers in slot order. Either way every
+  /// sphere sums the same terms in the same order on any number of threads.
+  template <class Kernel>
+  void for_each_contact(Kernel&& kernel);
+
+  /// Fills the forces for positions x_n with for_each_contact.
   virtual void contact_forces(double dt, bool evaluate_energy) = 0;
   /// Serial work after a step (contact detection, bookkeeping).
   virtual void after_step(double /*dt*/) {}
-  /// Reshapes the per-contact arrays after the contact list changed.
-  void set_contact_count(std::size_t count, Incidence incidence);
 
-  static constexpr std::size_t kContactBlock = 1024;
+  static constexpr std::size_t kContactBlock = 2048;
   static constexpr std::size_t kSphereBlock = 256;
 
   SphereSet spheres_;
@@ -87,19 +107,54 @@ protected:
 
   std::vector<Vec3> x_, v_, w_, a_, theta_, f_ext_;
   std::vector<double> inv_mass_, inv_inertia_;
-  Incidence contact_incidence_;  ///< incidence of the evaluated contacts (bonds first)
-  std::vector<ContactOut> out_;
-  std::vector<double> block_elastic_, block_plastic_, block_peak_;
-  std::vector<double> sphere_block_kinetic_, sphere_block_damping_, sphere_block_vmax2_;
+  std::vector<std::uint32_t> first_, second_;  ///< contacts in slot order
   double peak_ratio_ = 0;
   double max_speed_ = 0;  ///< largest |v| after the last step
   EnergyAccount energy_;
 
 private:
   void integrate(double dt, bool evaluate_energy);
+
+  std::size_t partitions_ = 1, sphere_chunk_ = 1, cross_begin_ = 0, cross_blocks_ = 0;
+  std::vector<std::uint32_t> interior_start_;  ///< partitions + 1
+  Incidence cross_incidence_;                  ///< entries index out_ (slot - cross_begin_)
+  std::vector<ContactOut> out_;
+  std::vector<Vec3> f_acc_, t_acc_;
+  std::vector<double> task_elastic_, task_plastic_, task_peak2_;
+  std::vector<double> sphere_block_kinetic_, sphere_block_damping_, sphere_block_vmax2_;
   std::vector<std::uint32_t> forced_;  ///< spheres with an external force this step
   std::vector<Vec3> forced_v_before_;
   std::vector<std::uint8_t> is_forced_;
 };
+
+template <class Kernel>
+void SphereSystem::for_each_contact(Kernel&& kernel) {
+  const std::size_t tasks = partitions_ + cross_blocks_;
+  const std::size_t count = first_.size();
+#pragma omp for schedule(dynamic, 1)
+  for (std::size_t task = 0; task < tasks; ++task) {
+    ContactSums sums;
+    if (task < partitions_) {
+      Vec3* f = f_acc_.data();
+      Vec3* t = t_acc_.data();
+      for (std::size_t b = interior_start_[task]; b < interior_start_[task + 1]; ++b) {
+        ContactOut o;
+        kernel(b, o, sums);
+        const std::uint32_t i = first_[b], j = second_[b];
+        f[i] -= o.f;
+        f[j] += o.f;
+        t[i] -= o.arm[0] * o.c;
+        t[j] -= o.arm[1] * o.c;
+      }
+    } else {
+      const std::size_t begin = cross_begin_ + (task - partitions_) * kContactBlock;
+      const std::size_t end = std::min(count, begin + kContactBlock);
+      for (std::size_t b = begin; b < end; ++b) kernel(b, out_[b - cross_begin_], sums);
+    }
+    task_elastic_[task] = sums.elastic;
+    task_plastic_[task] += sums.plastic;
+    task_peak2_[task] = sums.peak2;
+  }
+}
 
 }  // namespace mesowave::dem
