@@ -21,6 +21,9 @@ public:
   virtual const std::vector<std::size_t>& spheres() const = 0;
   /// One line for the run summary ("force 1 N, 100 kHz 5-cycle Hann burst along +x on 4 spheres").
   virtual std::string description() const = 0;
+  /// Total force it applied to the specimen along its direction in the last
+  /// step [N] (for a prescribed motion: the force needed to impose it).
+  virtual double applied_force() const = 0;
 };
 
 }  // namespace mesowave::dem

@@ -29,6 +29,7 @@ AxialChain::AxialChain(SphereSet spheres, const BondNetwork& bonds, const Cohesi
   s_.assign(n, 0);
   v_.assign(n, 0);
   a_.assign(n, 0);
+  a_undamped_.assign(n, 0);
   f_.assign(n, 0);
   f_ext_.assign(n, 0);
   inv_mass_.resize(n);
@@ -40,15 +41,18 @@ void AxialChain::add_external_force(std::size_t k, const Vec3& force) {
   f_ext_[k] += dot(force, axis_);
 }
 
-void AxialChain::impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) {
+double AxialChain::impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) {
   const double along = dot(e, axis_);  // +-1 for an axial actuator
   const double v_imposed = along * (u_next - u_now) / dt;
   const double v_before = v_[k] - dt * a_[k];
   const double a_imposed = (v_imposed - v_before) / dt;
-  energy_.external_work_J += spheres_.mass_kg[k] * (a_imposed - a_[k]) * (v_before + v_imposed) * 0.5 * dt;
+  // A constrained degree of freedom is not damped (Yade: blocked DOFs skip the integrator).
+  const double force = spheres_.mass_kg[k] * (a_imposed - a_undamped_[k]);
+  energy_.external_work_J += force * (v_before + v_imposed) * 0.5 * dt;
   s_[k] = along * u_next;
   v_[k] = v_imposed;
   a_[k] = a_imposed;
+  return along * force;
 }
 
 void AxialChain::step(double dt, bool evaluate_energy) {
@@ -76,6 +80,7 @@ void AxialChain::step(double dt, bool evaluate_energy) {
     if (evaluate_energy) kinetic += 0.5 * spheres_.mass_kg[k] * v_[k] * v1;
     v_[k] = v1;
     a_[k] = a;
+    a_undamped_[k] = a_free;
     s_[k] += dt * v1;
   }
   for (std::size_t i = 0; i < forced_.size(); ++i) {

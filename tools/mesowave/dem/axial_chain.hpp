@@ -33,7 +33,7 @@ public:
   Vec3 velocity(std::size_t k) const override { return v_[k] * axis_; }
   Vec3 acceleration(std::size_t k) const override { return a_[k] * axis_; }
   void add_external_force(std::size_t k, const Vec3& force) override;
-  void impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) override;
+  double impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) override;
   void set_velocity(std::size_t k, const Vec3& v) override { v_[k] = dot(v, axis_); }
   void step(double dt, bool evaluate_energy) override;
   EnergyAccount energy() const override { return energy_; }
@@ -51,7 +51,7 @@ private:
   Vec3 axis_;
   std::vector<std::uint32_t> first_, second_;
   std::vector<double> kn_, inv_strength_;
-  std::vector<double> s_, v_, a_, f_, f_ext_, inv_mass_;
+  std::vector<double> s_, v_, a_, a_undamped_, f_, f_ext_, inv_mass_;
   std::vector<std::uint32_t> forced_;
   std::vector<double> forced_v_before_;
   double peak_ratio_ = 0;

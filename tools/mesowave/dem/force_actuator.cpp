@@ -10,8 +10,10 @@ ForceActuator::ForceActuator(std::string name, std::vector<std::size_t> spheres,
       force_(force_N) {}
 
 void ForceActuator::before_step(Model& model, double t_s, double /*dt_s*/) {
+  last_force_ = 0;
   if (t_s < force_.delay_s() || t_s > force_.end_s()) return;
-  const Vec3 share = (force_(t_s) / double(spheres_.size())) * direction_;
+  last_force_ = force_(t_s);
+  const Vec3 share = (last_force_ / double(spheres_.size())) * direction_;
   for (std::size_t k : spheres_) model.add_external_force(k, share);
 }
 

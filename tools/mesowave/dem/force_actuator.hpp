@@ -13,8 +13,10 @@ public:
   void before_step(Model& model, double t_s, double dt_s) override;
   const std::vector<std::size_t>& spheres() const override { return spheres_; }
   std::string description() const override;
+  double applied_force() const override { return last_force_; }
 
 private:
+  double last_force_ = 0;
   std::string name_;
   std::vector<std::size_t> spheres_;
   Vec3 direction_;

@@ -59,8 +59,9 @@ public:
   /// After a step: makes sphere k's displacement along the unit vector `e`
   /// equal to u_next (= u(t_{n+1})), its velocity along e (u_next - u_now)/dt
   /// (Yade: a blocked DOF with imposed velocity). The work of the constraint
-  /// is booked as external work.
-  virtual void impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) = 0;
+  /// is booked as external work. Returns the force along e the constraint
+  /// applied to the sphere during the step.
+  virtual double impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) = 0;
   /// Initial condition (tests, free vibration): v_{-1/2}.
   virtual void set_velocity(std::size_t k, const Vec3& v) = 0;
 

@@ -26,7 +26,7 @@ std::optional<Vec3> line_axis(const SphereSet& s) {
 }
 
 double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& s, const BondNetwork& bonds,
-                             const CohesiveFrictionalMaterial& m) {
+                             const CohesiveFrictionalMaterial& m, double duration_s) {
   double weakest = std::numeric_limits<double>::infinity(), stiffest = 0;
   for (std::size_t k : load.spheres)
     for (std::uint32_t e = bonds.incidence.offset[k]; e < bonds.incidence.offset[k + 1]; ++e) {
@@ -40,7 +40,7 @@ double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& s, const
       stiffest = std::max(stiffest, kn);
     }
   if (!std::isfinite(weakest)) return std::numeric_limits<double>::infinity();  // a loaded sphere without bonds
-  const double amplitude = std::abs(load.spec->amplitude);
+  const double amplitude = std::abs(load.spec->amplitude) * (load.spec->kind == "velocity" ? duration_s : 1.0);
   const double per_sphere = load.spec->kind == "force" ? amplitude / double(load.spheres.size()) : stiffest * amplitude;
   return per_sphere / weakest;
 }
@@ -49,7 +49,7 @@ ModelChoice choose_model(const std::string& requested, const Scene& scene, const
                          const BondNetwork& bonds, const std::vector<ResolvedLoad>& loads) {
   ModelChoice c;
   for (const auto& load : loads)
-    c.estimated_force_ratio = std::max(c.estimated_force_ratio, estimated_force_ratio(load, s, bonds, scene.material));
+    c.estimated_force_ratio = std::max(c.estimated_force_ratio, estimated_force_ratio(load, s, bonds, scene.material, scene.duration_s));
   const auto axis = line_axis(s);
 
   std::string chain_obstacle;

@@ -41,10 +41,11 @@ struct ResolvedLoad {
 
 /// Estimated peak bond force / strength of one load: the per-sphere force
 /// (force actuators: |amplitude| / spheres; displacement actuators: stiffest
-/// K_n there times |amplitude|) over the weakest bond at those spheres
+/// K_n there times |amplitude|, or times |velocity| x duration for a moving
+/// platen) over the weakest bond at those spheres
 /// (min(T, C) R^2; K_n R, a strain of one, when the bonds never break).
 double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& spheres, const BondNetwork& bonds,
-                             const CohesiveFrictionalMaterial& material);
+                             const CohesiveFrictionalMaterial& material, double duration_s);
 
 /// `requested`: auto | full | linear | chain. InputError for chain on a
 /// packing that is not a line.

@@ -8,7 +8,7 @@ MotionQuantity parse_motion_quantity(const std::string& text) {
   if (text == "acceleration") return MotionQuantity::acceleration;
   if (text == "velocity") return MotionQuantity::velocity;
   if (text == "displacement") return MotionQuantity::displacement;
-  throw InputError("sensor quantity \"" + text + "\" must be acceleration, velocity or displacement");
+  throw InputError("sensor quantity \"" + text + "\" must be acceleration, velocity, displacement or force");
 }
 
 std::string to_string(MotionQuantity q) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <set>
 #include <sstream>
@@ -240,17 +241,20 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
       direction_vector(spec.direction, spec.target, k.where(), std::nullopt, true);
       if (spec.direction == "magnitude" || spec.direction == "normal")
         throw InputError(k.where() + ".direction must be inward or an axis (x, -x, ...)");
-      if (spec.kind == "force") {
-        spec.amplitude = require_finite(k.where() + ".amplitude_N", k.required_number("amplitude_N"), "N");
-        if (k.has("amplitude_nm")) throw InputError(k.where() + ": a force actuator takes amplitude_N, not amplitude_nm");
-      } else if (spec.kind == "displacement") {
-        spec.amplitude = require_finite(k.where() + ".amplitude_nm", k.required_number("amplitude_nm"), "nm") * units::nm;
-        if (k.has("amplitude_N")) throw InputError(k.where() + ": a displacement actuator takes amplitude_nm, not amplitude_N");
-      } else {
-        throw InputError(k.where() + ".kind (\"" + spec.kind + "\") must be force or displacement");
+      static const std::map<std::string, std::string> amplitude_key = {
+          {"force", "amplitude_N"}, {"displacement", "amplitude_nm"}, {"velocity", "velocity_mm_s"}};
+      if (!amplitude_key.count(spec.kind))
+        throw InputError(k.where() + ".kind (\"" + spec.kind + "\") must be force, displacement or velocity");
+      for (const auto& [kind, key] : amplitude_key)
+        if (kind != spec.kind && k.has(key))
+          throw InputError(k.where() + ": a " + spec.kind + " actuator takes " + amplitude_key.at(spec.kind) + ", not " + key);
+      const std::string key = amplitude_key.at(spec.kind);
+      const double scale = spec.kind == "force" ? 1.0 : spec.kind == "displacement" ? units::nm : units::mm;
+      spec.amplitude = require_finite(k.where() + "." + key, k.required_number(key)) * scale;
+      if (spec.kind != "velocity") {
+        spec.frequency_hz = require_positive(k.where() + ".frequency_kHz", k.required_number("frequency_kHz"), "kHz") * units::kHz;
+        spec.cycles = require_positive(k.where() + ".cycles", k.number("cycles", 5.0));
       }
-      spec.frequency_hz = require_positive(k.where() + ".frequency_kHz", k.required_number("frequency_kHz"), "kHz") * units::kHz;
-      spec.cycles = require_positive(k.where() + ".cycles", k.number("cycles", 5.0));
       spec.delay_s = require_in_range(k.where() + ".delay_us", k.number("delay_us", 0.0), 0.0, 1e9, "us") * units::us;
       k.finish();
       s.actuators.push_back(std::move(spec));
@@ -266,7 +270,21 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
       SensorSpec spec;
       spec.name = k.text("name", "");
       unique_name(spec.name, k.where());
-      spec.quantity = parse_motion_quantity(k.text("quantity", "acceleration"));
+      const std::string quantity = k.text("quantity", "acceleration");
+      if (quantity == "force") {
+        auto actuator = k.text("actuator");
+        if (!actuator) throw InputError(k.where() + ": quantity force needs actuator = NAME (the force it applies)");
+        bool known = false;
+        for (const auto& a : s.actuators) known = known || a.name == *actuator;
+        if (!known) throw InputError(k.where() + ": no actuator named \"" + *actuator + "\"");
+        spec.actuator = *actuator;
+        if (auto interval = k.number("sample_interval_ns"))
+          spec.sample_interval_s = require_positive(k.where() + ".sample_interval_ns", *interval, "ns") * units::ns;
+        k.finish();
+        s.sensors.push_back(std::move(spec));
+        continue;
+      }
+      spec.quantity = parse_motion_quantity(quantity);
       spec.target = read_target(k);
       spec.component = k.text("component", spec.target.kind == SphereTarget::Kind::patch ? "normal" : "");
       if (spec.component.empty()) throw InputError(k.where() + " needs component (x, -x, ..., magnitude) when it is not on a face");

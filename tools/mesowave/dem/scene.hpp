@@ -13,11 +13,13 @@
 //               damping (alpha_d), bond_factor (C_f)
 //   [time]      dt_ns, duration_ms
 //   [model]     choice (auto | full | linear | chain), linear_validity_bound, energy_check_steps
-//   [[actuator]] name, kind (force | displacement), where (face + centre_mm + patch_mm
+//   [[actuator]] name, kind (force | displacement | velocity), where (face + centre_mm + patch_mm
 //               [+ depth_mm] | point_mm | sphere = "first"/"last"), direction (inward | line | x | -x | ...),
-//               amplitude_N (force) or amplitude_nm (displacement), frequency_kHz, cycles, delay_us
+//               amplitude_N (force) or amplitude_nm (displacement) with frequency_kHz, cycles;
+//               velocity_mm_s (velocity: a platen moving at constant speed); delay_us
 //   [[sensor]]  name, quantity (acceleration | velocity | displacement), component
-//               (normal | line | x | -x | y | ... | magnitude), where (as for actuators), sample_interval_ns
+//               (normal | line | x | -x | y | ... | magnitude), where (as for actuators), sample_interval_ns;
+//               or quantity = "force" with actuator = NAME: the force that actuator applies
 //   [output]    snapshot_interval_us (0 = none)
 #include <filesystem>
 #include <optional>
@@ -41,10 +43,10 @@ struct SphereTarget {
 
 struct ActuatorSpec {
   std::string name;
-  std::string kind = "force";       ///< force | displacement
+  std::string kind = "force";       ///< force | displacement | velocity
   SphereTarget target;
   std::string direction = "inward"; ///< inward (needs a face) | line | -line | x | -x | y | -y | z | -z
-  double amplitude = 0;             ///< N (force) or m (displacement)
+  double amplitude = 0;             ///< N (force), m (displacement) or m/s (velocity)
   double frequency_hz = 0;
   double cycles = 5;
   double delay_s = 0;
@@ -52,6 +54,7 @@ struct ActuatorSpec {
 
 struct SensorSpec {
   std::string name;
+  std::string actuator;  ///< set: this sensor records the force that actuator applies (quantity = "force")
   MotionQuantity quantity = MotionQuantity::acceleration;
   std::string component = "normal";  ///< normal (outward, needs a face) | line | x | -x | ... | magnitude
   SphereTarget target;

@@ -5,6 +5,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/dem/actuator_force_sensor.hpp"
 #include "mesowave/dem/axial_chain.hpp"
 #include "mesowave/dem/cohesive_frictional_contact.hpp"
 #include "mesowave/dem/displacement_actuator.hpp"
@@ -59,7 +60,9 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     loads.push_back({&a, resolve(a.target, spheres, box, who), direction_vector(a.direction, a.target, who, line)});
   }
   std::vector<std::vector<std::size_t>> sensor_spheres;
-  for (const auto& sensor : scene_.sensors) sensor_spheres.push_back(resolve(sensor.target, spheres, box, "sensor " + sensor.name));
+  for (const auto& sensor : scene_.sensors)
+    sensor_spheres.push_back(sensor.actuator.empty() ? resolve(sensor.target, spheres, box, "sensor " + sensor.name)
+                                                     : std::vector<std::size_t>{});
   const std::string requested = options_.model != "auto" ? options_.model : scene_.model;
   choice_ = choose_model(requested, scene_, spheres, bonds, loads);
 
@@ -107,14 +110,28 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
 
   for (std::size_t i = 0; i < loads.size(); ++i) {
     const ActuatorSpec& a = *loads[i].spec;
+    if (a.kind == "velocity") {
+      actuators_.push_back(std::make_unique<DisplacementActuator>(DisplacementActuator::constant_velocity(
+          a.name, loads[i].spheres, loads[i].direction, a.amplitude, a.delay_s)));
+      continue;
+    }
     const signal::HannBurst burst(a.frequency_hz, a.cycles, a.amplitude, a.delay_s);
     if (a.kind == "force") actuators_.push_back(std::make_unique<ForceActuator>(a.name, loads[i].spheres, loads[i].direction, burst));
-    else actuators_.push_back(std::make_unique<DisplacementActuator>(a.name, loads[i].spheres, loads[i].direction, burst));
+    else actuators_.push_back(std::make_unique<DisplacementActuator>(DisplacementActuator::burst(a.name, loads[i].spheres, loads[i].direction, burst)));
   }
   for (std::size_t i = 0; i < scene_.sensors.size(); ++i) {
     const SensorSpec& sensor = scene_.sensors[i];
     const std::string who = "sensor " + sensor.name;
     const std::vector<std::size_t>& chosen = sensor_spheres[i];
+    const std::int64_t every =
+        sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
+    if (!sensor.actuator.empty()) {
+      const Actuator* source = nullptr;
+      for (const auto& a : actuators_)
+        if (a->name() == sensor.actuator) source = a.get();
+      sensors_.push_back(std::make_unique<ActuatorForceSensor>(sensor.name, *source, every));
+      continue;
+    }
     const Vec3 component = direction_vector(sensor.component, sensor.target, who, line);
     const std::int64_t interval =
         sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;

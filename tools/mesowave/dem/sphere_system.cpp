@@ -61,6 +61,8 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
     inv_inertia_[k] = 1.0 / spheres_.inertia_kg_m2[k];
   }
   is_forced_.assign(n, 0);
+  constrained_.assign(n, 0);
+  a_undamped_.assign(n, {});
   const std::size_t sphere_blocks = (n + kSphereBlock - 1) / kSphereBlock;
   sphere_block_kinetic_.assign(sphere_blocks, 0);
   sphere_block_damping_.assign(sphere_blocks, 0);
@@ -131,16 +133,21 @@ void SphereSystem::add_external_force(std::size_t k, const Vec3& force) {
   f_ext_[k] += force;
 }
 
-void SphereSystem::impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) {
+double SphereSystem::impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) {
   const double v_imposed = (u_next - u_now) / dt;
-  const double a_free = dot(a_[k], e);
-  const double v_before = dot(v_[k], e) - dt * a_free;  // v_{n-1/2} along e
+  const double v_before = dot(v_[k], e) - dt * dot(a_[k], e);  // v_{n-1/2} along e
+  // A constrained degree of freedom is not damped (Yade: blocked DOFs skip the
+  // integrator); its force balance uses the undamped F/m of this step.
+  const double a_free = constrained_[k] ? dot(a_undamped_[k], e) : dot(a_[k], e);
+  constrained_[k] = 1;
   const double a_imposed = (v_imposed - v_before) / dt;
   x_[k] += (u_next - dot(displacement(k), e)) * e;
   v_[k] += (v_imposed - dot(v_[k], e)) * e;
   a_[k] += (a_imposed - a_free) * e;
   // The constraint force m (a_imposed - a_free) does work over the step.
-  energy_.external_work_J += spheres_.mass_kg[k] * (a_imposed - a_free) * (v_before + v_imposed) * 0.5 * dt;
+  const double force = spheres_.mass_kg[k] * (a_imposed - a_free);
+  energy_.external_work_J += force * (v_before + v_imposed) * 0.5 * dt;
+  return force;
 }
 
 void SphereSystem::step(double dt, bool evaluate_energy) {
@@ -219,6 +226,7 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
       v_[k] = v1;
       a_[k] = a;
       x_[k] += dt * v1;
+      if (constrained_[k]) a_undamped_[k] = a_free;
       // Rotation (spheres: scalar inertia).
       const Vec3 b_free = inv_inertia_[k] * t;
       const Vec3 w0 = w_[k];

@@ -44,7 +44,7 @@ public:
   Vec3 velocity(std::size_t k) const override { return v_[k]; }
   Vec3 acceleration(std::size_t k) const override { return a_[k]; }
   void add_external_force(std::size_t k, const Vec3& force) override;
-  void impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) override;
+  double impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) override;
   void set_velocity(std::size_t k, const Vec3& v) override { v_[k] = v; }
   void step(double dt, bool evaluate_energy) override;
   EnergyAccount energy() const override;
@@ -122,6 +122,8 @@ private:
   std::vector<Vec3> f_acc_, t_acc_;
   std::vector<double> task_elastic_, task_plastic_, task_peak2_;
   std::vector<double> sphere_block_kinetic_, sphere_block_damping_, sphere_block_vmax2_;
+  std::vector<std::uint8_t> constrained_;  ///< spheres moved by impose_displacement
+  std::vector<Vec3> a_undamped_;           ///< F/m before damping, kept for constrained spheres
   std::vector<std::uint32_t> forced_;  ///< spheres with an external force this step
   std::vector<Vec3> forced_v_before_;
   std::vector<std::uint8_t> is_forced_;
