@@ -65,8 +65,9 @@ void check_period(const std::string& kind, Vec3 dir) {
   const double omega = std::sqrt(kn / mu);
   const double period = 2 * std::numbers::pi / omega;
   const double dt = period / 1000;
-  // Zero total momentum, relative speed 1 mm/s along the bond.
-  const double v = 1e-3;
+  // Zero total momentum, relative speed 0.1 m/s along the bond: an amplitude of
+  // 36 nm, far above the round-off of positions in metres (~1e-18 m).
+  const double v = 0.1;
   const std::size_t a = model->packing_index(0) == 0 ? 0 : 1, b = 1 - a;  // n points from a to b
   model->set_velocity(a, (-v * model->mass(b) / (m1 + m2)) * pair.n);
   model->set_velocity(b, (v * model->mass(a) / (m1 + m2)) * pair.n);

@@ -61,6 +61,8 @@ int main(int argc, char** argv) {
   common(run_cmd);
   run_cmd->add_option("--signals", signals_path, "Sensor signals (HDF5, docs/formats.md)")->required();
   run_cmd->add_option("--summary", summary_path, "Run summary (JSON; also printed)");
+  fs::path csv_path;
+  run_cmd->add_option("--signals-csv", csv_path, "The signals also as CSV (t_s and one column per sensor)");
   run_cmd->add_option("--snapshots", snapshot_dir, "Folder for ParaView snapshots (.vtp per instant + snapshots.pvd)");
   run_cmd->add_option("--snapshot-interval-us", snapshot_us, "Time between snapshots [us] (default: the scene's)");
   run_cmd->add_flag("--quiet", quiet, "No progress bar");
@@ -106,6 +108,7 @@ int main(int argc, char** argv) {
                                                      {"model", report.choice.model},
                                                      {"packing", scene.packing_file.string()}};
     io::write_signal_file(run.output(signals_path), report.signals, attributes);
+    if (!csv_path.empty()) run.write_text(csv_path, dem::signals_csv(report.signals));
     if (!snapshots.empty()) dem::write_pvd(run.output(snapshot_dir / "snapshots.pvd"), snapshots);
     run.param("model_chosen", report.choice.model);
     run.metric("steps_per_s", report.steps_per_s, "1/s");

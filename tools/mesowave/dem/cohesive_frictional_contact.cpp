@@ -30,101 +30,115 @@ CohesiveFrictionalContact::CohesiveFrictionalContact(SphereSet spheres, BondNetw
   detect_contacts();
 }
 
+CohesiveFrictionalContact::Slot CohesiveFrictionalContact::slot(std::size_t s) const {
+  return {{nx_[s], ny_[s], nz_[s]}, {sx_[s], sy_[s], sz_[s]}, overlap0_[s], bond_[s],
+          cohesive_[s] != 0 ? kCohesive : kFrictional};
+}
+
+void CohesiveFrictionalContact::set_slots(const std::vector<Slot>& slots) {
+  const std::size_t m = slots.size();
+  nx_.resize(m), ny_.resize(m), nz_.resize(m), sx_.resize(m), sy_.resize(m), sz_.resize(m);
+  overlap0_.resize(m), bond_.resize(m), cohesive_.resize(m);
+  for (std::size_t s = 0; s < m; ++s) {
+    nx_[s] = slots[s].normal.x, ny_[s] = slots[s].normal.y, nz_[s] = slots[s].normal.z;
+    sx_[s] = slots[s].shear.x, sy_[s] = slots[s].shear.y, sz_[s] = slots[s].shear.z;
+    overlap0_[s] = slots[s].overlap0;
+    bond_[s] = slots[s].bond;
+    cohesive_[s] = slots[s].status == kCohesive ? 1.0 : 0.0;
+  }
+}
+
 std::size_t CohesiveFrictionalContact::broken_bond_count() const {
   std::size_t broken = 0;
-  for (const Slot& s : slots_) broken += s.bond != kNoBond && s.status == kFrictional;
+  for (std::size_t s = 0; s < bond_.size(); ++s) broken += bond_[s] != kNoBond && cohesive_[s] == 0;
   return broken;
 }
 
 std::size_t CohesiveFrictionalContact::memory_bytes() const {
-  return SphereSystem::memory_bytes() + slots_.size() * sizeof(Slot);
+  return SphereSystem::memory_bytes() + bond_.size() * (8 * sizeof(double) + sizeof(std::uint32_t));
 }
 
-void CohesiveFrictionalContact::contact_forces(double dt, bool evaluate_energy) {
+void CohesiveFrictionalContact::contact_forces(double dt, bool evaluate_energy) { kernel(dt, evaluate_energy); }
+
+// Compiled for AVX-512, AVX2 and baseline x86-64, picked at load time. No FMA
+// contraction (ISO C++ mode), so every version gives the same bits.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+void CohesiveFrictionalContact::kernel(double dt, bool evaluate_energy) {
   const double two_young = 2.0 * material_.young_Pa, ratio = material_.stiffness_ratio;
   const double tan_mu = std::tan(material_.friction_angle_rad);
   const double T = material_.tensile_strength_Pa, C = material_.cohesion_Pa;
-  const bool finite_T = std::isfinite(T), finite_C = std::isfinite(C);
+  // Reference strengths for the peak ratio: T R^2 and C R^2, or K_n R when a strength is not given.
+  const double T_ref = std::isfinite(T) ? T : 0.0, C_ref = std::isfinite(C) ? C : 0.0;
+  const double T_none = std::isfinite(T) ? 0.0 : 1.0, C_none = std::isfinite(C) ? 0.0 : 1.0;
+  const double half_dt = 0.5 * dt;
+  const double energy_on = evaluate_energy ? 1.0 : 0.0;
   const double* radius = spheres_.radius_m.data();
   const Vec3* x = x_.data();
   const Vec3* v = v_.data();
   const Vec3* w = w_.data();
-  Slot* slots = slots_.data();
+  double *nx = nx_.data(), *ny = ny_.data(), *nz = nz_.data();
+  double *sx = sx_.data(), *sy = sy_.data(), *sz = sz_.data();
+  const double* overlap0 = overlap0_.data();
+  double* cohesion = cohesive_.data();
   const std::uint32_t* first = first_.data();
   const std::uint32_t* second = second_.data();
 
-  for_each_contact([&](std::size_t b, ContactOut& o, ContactSums& sums) __attribute__((always_inline)) {
-    Slot& slot = slots[b];
+  for_each_contact([&](std::size_t b, ContactResult& r) __attribute__((always_inline)) {
     const std::uint32_t i = first[b], j = second[b];
     const Vec3 d = x[j] - x[i];
     const double dist = std::sqrt(norm2(d));
     const double ri = radius[i], rj = radius[j], sum = ri + rj;
     const double inv = 1.0 / (sum * dist);  // one division: 1/dist, K_n and the factor a
-    const double inv_dist = sum * inv;
-    const Vec3 n = inv_dist * d;
+    const Vec3 n = (sum * inv) * d;
     const double u = sum - dist;
     const double kn = two_young * ri * rj * dist * inv, ks = ratio * kn;
 
     // ScGeom::precompute + rotate: carry the shear force with the contact frame.
-    const Vec3 n_prev = slot.normal;
-    Vec3 fs = slot.shear;
+    const Vec3 n_prev{nx[b], ny[b], nz[b]};
+    Vec3 fs{sx[b], sy[b], sz[b]};
     const Vec3 wi = w[i], wj = w[j];
     fs -= cross(fs, cross(n_prev, n));
-    fs -= cross(fs, (0.5 * dt * dot(n_prev, wi + wj)) * n_prev);
+    fs -= cross(fs, (half_dt * dot(n_prev, wi + wj)) * n_prev);
     // Shear increment, Eq. (2): ScGeom::getIncidentVel with avoidGranularRatcheting.
     Vec3 v_rel = (sum * sum * inv) * (v[j] - v[i]) - rj * cross(wj, n) - ri * cross(wi, n);
     v_rel -= dot(n, v_rel) * n;
     fs -= (ks * dt) * v_rel;
-    // Eq. (1).
-    double fn = kn * (u - slot.overlap0);
+    const double fn = kn * (u - overlap0[b]);  // Eq. (1)
+    const double fs2 = norm2(fs);
 
+    // Strength and friction (Eqs. 4-6) as 0/1 flags and selects on doubles, no
+    // branches, so the chunk runs as one vector loop.
     const double r_min = std::min(ri, rj), r2 = r_min * r_min;
-    double fs2 = norm2(fs);
-    double max_fs = 0;
-    bool slip_check = true;
-    if (slot.status == kCohesive) {
-      if (-fn > T * r2) {  // Eq. (6): tensile failure; Yade removes the interaction this step
-        slot.status = kFrictional;
-        fn = 0;
-        fs = {};
-        fs2 = 0;
-        slip_check = false;
-      } else {
-        max_fs = std::max(0.0, C * r2 + fn * tan_mu);  // Eq. (4)
-        if (fs2 > max_fs * max_fs) {                    // cohesion lost, friction remains (Eq. 5)
-          slot.status = kFrictional;
-          max_fs = std::max(0.0, fn * tan_mu);
-          if (fn < 0) fn = 0;
-        } else {
-          slip_check = false;
-          // Peak bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
-          const double sn = finite_T ? T * r2 : kn * r_min, ss = finite_C ? C * r2 : kn * r_min;
-          const double num = std::max(fn * fn * ss * ss, fs2 * sn * sn), den = sn * sn * ss * ss;
-          if (num > sums.peak2 * den) sums.peak2 = num / den;
-        }
-      }
-    } else if (fn <= 0) {  // open: no force; a later touch starts a fresh shear history
-      fn = 0;
-      fs = {};
-      fs2 = 0;
-      slip_check = false;
-    } else {
-      max_fs = fn * tan_mu;  // Eq. (5)
-    }
-    if (slip_check && fs2 > max_fs * max_fs) {
-      const Vec3 trial = fs;
-      fs *= max_fs / std::sqrt(fs2);
-      if (ks > 0) sums.plastic += dot(trial - fs, fs) / ks;
-      fs2 = norm2(fs);
-    }
-    slot.shear = fs;
-    slot.normal = n;
-    o.f = fn * n + fs;
-    o.c = cross(n, fs);
-    o.arm[0] = ri - 0.5 * u;
-    o.arm[1] = rj - 0.5 * u;
+    const double cohesive = cohesion[b];                                  // 1 while the bond holds
+    const double tension_break = cohesive * (-fn > T * r2 ? 1.0 : 0.0);   // Eq. (6); Yade removes the interaction
+    const double cohesive_max = std::max(0.0, C * r2 + fn * tan_mu);      // Eq. (4)
+    const double shear_break = (cohesive - tension_break) * (fs2 > cohesive_max * cohesive_max ? 1.0 : 0.0);
+    const double intact = cohesive - tension_break - shear_break;
+    const double open = tension_break + (1.0 - cohesive) * (fn <= 0.0 ? 1.0 : 0.0);  // no force, shear history reset
+    const double max_fs = intact != 0.0 ? cohesive_max : std::max(0.0, fn * tan_mu);  // Eq. (5) once cohesion is gone
+    const double slip = (1.0 - open) * (fs2 > max_fs * max_fs ? 1.0 : 0.0);
+    const double slip_scale = max_fs / std::sqrt(fs2);
+    const double scale = open != 0.0 ? 0.0 : (slip != 0.0 ? slip_scale : 1.0);
+    const Vec3 fs_new = scale * fs;
+    const double no_normal = std::max(open, shear_break * (fn < 0.0 ? 1.0 : 0.0));
+    const double fn_new = no_normal != 0.0 ? 0.0 : fn;
+    cohesion[b] = intact;
+    nx[b] = n.x, ny[b] = n.y, nz[b] = n.z;
+    sx[b] = fs_new.x, sy[b] = fs_new.y, sz[b] = fs_new.z;
+
+    r.f = fn_new * n + fs_new;
+    r.c = cross(n, fs_new);
+    r.arm[0] = ri - 0.5 * u;
+    r.arm[1] = rj - 0.5 * u;
+    const double inv_ks_raw = 1.0 / ks;
+    const double inv_ks = ks > 0.0 ? inv_ks_raw : 0.0;
+    // Excess shear sheared off (Yade's plasticDissipation); zero without sliding.
+    r.plastic = dot(fs - fs_new, fs_new) * inv_ks;
+    // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
+    const double sn = T_ref * r2 + T_none * kn * r_min, ss = C_ref * r2 + C_none * kn * r_min;
+    r.ratio2 = intact * std::max(fn * fn / (sn * sn), fs2 / (ss * ss));
     // The shear increment carries the factor (r_i + r_j)/|x_j - x_i|: the spring is that times K_s.
-    if (evaluate_energy) sums.elastic += 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 * dist / (sum * ks) : 0.0);
+    r.elastic = energy_on * (0.5 * fn_new * fn_new / kn + 0.5 * norm2(fs_new) * dist * inv * dist * inv_ks);
   });
 }
 
@@ -146,19 +160,17 @@ void CohesiveFrictionalContact::detect_contacts() {
   // Where each bond and each detected pair lives now.
   std::vector<std::uint32_t> slot_of_bond(nb, kNoBond);
   std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> old_pairs;
-  for (std::size_t s = 0; s < slots_.size(); ++s) {
-    if (slots_[s].bond != kNoBond) slot_of_bond[slots_[s].bond] = std::uint32_t(s);
+  for (std::size_t s = 0; s < bond_.size(); ++s) {
+    if (bond_[s] != kNoBond) slot_of_bond[bond_[s]] = std::uint32_t(s);
     else old_pairs.emplace_back(first_[s], second_[s], std::uint32_t(s));
   }
   std::sort(old_pairs.begin(), old_pairs.end());
 
   std::vector<std::uint32_t> first(bonds_.first), second(bonds_.second);
   std::vector<Slot> natural(nb);
-  for (std::size_t b = 0; b < nb; ++b) {
-    natural[b] = slot_of_bond[b] != kNoBond
-                     ? slots_[slot_of_bond[b]]
-                     : Slot{bonds_.normal0[b], {}, bonds_.overlap0_m[b], std::uint32_t(b), kCohesive};
-  }
+  for (std::size_t b = 0; b < nb; ++b)
+    natural[b] = slot_of_bond[b] != kNoBond ? slot(slot_of_bond[b])
+                                            : Slot{bonds_.normal0[b], {}, bonds_.overlap0_m[b], std::uint32_t(b), kCohesive};
   std::size_t b = 0;  // bonds and pairs are both sorted by (first, second)
   for (const auto& p : pairs) {
     const double reach = spheres_.radius_m[p.i] + spheres_.radius_m[p.j] + margin_;
@@ -170,19 +182,16 @@ void CohesiveFrictionalContact::detect_contacts() {
     first.push_back(p.i);
     second.push_back(p.j);
     if (known != old_pairs.end() && std::get<0>(*known) == p.i && std::get<1>(*known) == p.j)
-      natural.push_back(slots_[std::get<2>(*known)]);
+      natural.push_back(slot(std::get<2>(*known)));
     else
       natural.push_back(Slot{(1.0 / norm(d)) * d, {}, 0.0, kNoBond, kFrictional});
   }
-  if (natural.size() == slots_.size() && detection_passes_ > 1) {
-    // Same contacts as before (the usual case for waves): keep the layout.
-    bool same = true;
-    for (std::size_t s = 0; s < slots_.size() && same; ++s) same = slots_[s].bond != kNoBond;
-    if (same) return;
-  }
+  // Same contacts as before (the usual case for waves: bonds only): keep the layout.
+  if (detection_passes_ > 1 && natural.size() == nb && bond_.size() == nb) return;
   const auto order = set_contacts(first, second);
-  slots_.resize(order.size());
-  for (std::size_t s = 0; s < order.size(); ++s) slots_[s] = natural[order[s]];
+  std::vector<Slot> slots(order.size());
+  for (std::size_t s = 0; s < order.size(); ++s) slots[s] = natural[order[s]];
+  set_slots(slots);
 }
 
 }  // namespace mesowave::dem

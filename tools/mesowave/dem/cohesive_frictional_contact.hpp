@@ -34,7 +34,7 @@ public:
   CohesiveFrictionalContact(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material);
 
   std::string name() const override { return "full"; }
-  std::size_t contact_count() const override { return slots_.size(); }
+  std::size_t contact_count() const override { return bond_.size(); }
   std::size_t broken_bond_count() const override;
   std::size_t memory_bytes() const override;
   /// Candidate-list builds so far (the first at step 0).
@@ -45,11 +45,12 @@ protected:
   void after_step(double dt) override;
 
 private:
+  void kernel(double dt, bool evaluate_energy);
   void detect_contacts();
 
   enum : std::uint8_t { kCohesive = 0, kFrictional = 1 };
   static constexpr std::uint32_t kNoBond = 0xffffffffu;
-  /// What a contact carries from step to step, with its constants, in slot order.
+  /// What a contact carries from step to step, with its constants.
   struct Slot {
     Vec3 normal;       ///< n of the last step (ScGeom::normal)
     Vec3 shear;        ///< F_s (CohFrictPhys::shearForce)
@@ -57,7 +58,12 @@ private:
     std::uint32_t bond;  ///< bond index, kNoBond for a detected contact
     std::uint8_t status;
   };
-  std::vector<Slot> slots_;
+  Slot slot(std::size_t s) const;
+  void set_slots(const std::vector<Slot>& slots);
+  // The same, in slot order, one array per component (vector loads and stores).
+  std::vector<double> nx_, ny_, nz_, sx_, sy_, sz_, overlap0_;
+  std::vector<std::uint32_t> bond_;
+  std::vector<double> cohesive_;  ///< 1 while the bond holds, 0 after (a double: one vector width for the whole loop)
   double margin_ = 0, travelled_ = 0;
   std::size_t detection_passes_ = 0;
 };

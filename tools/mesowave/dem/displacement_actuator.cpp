@@ -32,8 +32,8 @@ void DisplacementActuator::after_step(Model& model, double t_s, double dt_s) {
 }
 
 std::string DisplacementActuator::description() const {
-  return what_ + " along (" + format_number(direction_.x) + ", " + format_number(direction_.y) + ", " +
-         format_number(direction_.z) + ") imposed on " + std::to_string(spheres_.size()) + " spheres";
+  return what_ + " along (" + format_number(direction_.x + 0.0) + ", " + format_number(direction_.y + 0.0) + ", " +
+         format_number(direction_.z + 0.0) + ") imposed on " + std::to_string(spheres_.size()) + " spheres";
 }
 
 }  // namespace mesowave::dem

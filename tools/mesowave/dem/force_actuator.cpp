@@ -19,8 +19,8 @@ void ForceActuator::before_step(Model& model, double t_s, double /*dt_s*/) {
 
 std::string ForceActuator::description() const {
   return "force " + format_number(force_.amplitude()) + " N, " + format_number(force_.centre_frequency_hz() / 1e3) +
-         " kHz " + format_number(force_.cycles()) + "-cycle Hann burst along (" + format_number(direction_.x) + ", " +
-         format_number(direction_.y) + ", " + format_number(direction_.z) + ") shared by " +
+         " kHz " + format_number(force_.cycles()) + "-cycle Hann burst along (" + format_number(direction_.x + 0.0) + ", " +
+         format_number(direction_.y + 0.0) + ", " + format_number(direction_.z + 0.0) + ") shared by " +
          std::to_string(spheres_.size()) + " spheres";
 }
 

@@ -25,11 +25,10 @@ protected:
   void contact_forces(double dt, bool evaluate_energy) override;
 
 private:
-  struct Slot {
-    Vec3 normal;      ///< n0, first -> second
-    double overlap0;  ///< u_0
-  };
-  std::vector<Slot> slots_;  ///< per contact, in slot order
+  void kernel(bool evaluate_energy);
+  // Per contact, in slot order, one array per component (vector loads).
+  std::vector<double> nx_, ny_, nz_;  ///< n0, first -> second
+  std::vector<double> overlap0_;      ///< u_0
 };
 
 }  // namespace mesowave::dem

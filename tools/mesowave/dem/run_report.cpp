@@ -1,6 +1,10 @@
 #include "mesowave/dem/run_report.hpp"
 
 #include <cmath>
+#include <algorithm>
+#include <cstdio>
+
+#include "mesowave/io/csv.hpp"
 
 namespace mesowave::dem {
 namespace {
@@ -30,6 +34,39 @@ nlohmann::ordered_json to_json(const RunReport& r) {
   j["lambda_max_1_s2"] = r.dt_cr.lambda_max;
   j["lanczos_iterations"] = r.dt_cr.lanczos_iterations;
   j["memory_estimate_MiB"] = double(r.memory_bytes) / (1024.0 * 1024.0);
+  nlohmann::ordered_json m;
+  m["E_dem_Pa"] = r.material.young_Pa;
+  m["nu_dem"] = r.material.stiffness_ratio;
+  m["friction_angle_rad"] = r.material.friction_angle_rad;
+  m["T_Pa"] = finite_or_null(r.material.tensile_strength_Pa);
+  m["C_Pa"] = finite_or_null(r.material.cohesion_Pa);
+  m["density_kg_m3"] = r.material.density_kg_m3;
+  m["damping"] = r.material.damping;
+  m["bond_factor"] = r.material.bond_factor;
+  j["material"] = m;
+  auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v.x + 0.0, v.y + 0.0, v.z + 0.0}); };
+  j["actuator_loads"] = nlohmann::ordered_json::array();
+  for (const auto& a : r.actuator_placements) {
+    nlohmann::ordered_json e;
+    e["name"] = a.name;
+    e["kind"] = a.kind;
+    e["spheres"] = a.spheres;
+    e["direction"] = vec(a.direction);
+    e[a.kind == "force" ? "amplitude_N" : a.kind == "velocity" ? "velocity_m_s" : "amplitude_m"] = a.amplitude;
+    e["frequency_hz"] = a.frequency_hz;
+    e["cycles"] = a.cycles;
+    e["delay_s"] = a.delay_s;
+    j["actuator_loads"].push_back(e);
+  }
+  j["sensor_points"] = nlohmann::ordered_json::array();
+  for (const auto& s : r.sensor_placements) {
+    nlohmann::ordered_json e;
+    e["name"] = s.name;
+    e["quantity"] = s.kind;
+    e["spheres"] = s.spheres;
+    e["component"] = vec(s.direction);
+    j["sensor_points"].push_back(e);
+  }
   j["actuators"] = r.actuators;
   j["sensors"] = r.sensors;
   j["notes"] = r.notes;
@@ -53,6 +90,32 @@ nlohmann::ordered_json to_json(const RunReport& r) {
   e["peak_stored_J"] = r.peak_stored_J;
   j["energy"] = e;
   return j;
+}
+
+std::string signals_csv(const std::vector<signal::Signal>& signals) {
+  bool shared = !signals.empty();
+  for (const auto& s : signals)
+    shared = shared && s.dt_s == signals[0].dt_s && s.t0_s == signals[0].t0_s && s.size() == signals[0].size();
+  auto number = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", v);
+    return std::string(text);
+  };
+  std::vector<std::string> header;
+  std::size_t rows = 0;
+  for (const auto& s : signals) {
+    if (!shared || header.empty()) header.push_back(shared ? "t_s" : s.name + " t_s");
+    header.push_back(s.name + " [" + s.unit + "]");
+    rows = std::max(rows, s.size());
+  }
+  std::vector<std::vector<std::string>> table(rows);
+  for (std::size_t i = 0; i < rows; ++i)
+    for (std::size_t k = 0; k < signals.size(); ++k) {
+      const auto& s = signals[k];
+      if (!shared || k == 0) table[i].push_back(i < s.size() ? number(s.time(i)) : "");
+      table[i].push_back(i < s.size() ? number(s.samples[i]) : "");
+    }
+  return io::to_csv(header, table);
 }
 
 }  // namespace mesowave::dem

@@ -108,8 +108,16 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
   const double ratio = scene_.duration_s / scene_.dt_s;
   steps_ = std::int64_t(std::ceil(ratio - 1e-9));
 
+  auto packing_indices = [&](const std::vector<std::size_t>& chosen) {
+    std::vector<std::uint32_t> out;
+    for (std::size_t k : chosen) out.push_back(model_->packing_index(k));
+    std::sort(out.begin(), out.end());
+    return out;
+  };
   for (std::size_t i = 0; i < loads.size(); ++i) {
     const ActuatorSpec& a = *loads[i].spec;
+    actuator_placements_.push_back({a.name, a.kind, packing_indices(loads[i].spheres), loads[i].direction, a.amplitude,
+                                    a.frequency_hz, a.cycles, a.delay_s});
     if (a.kind == "velocity") {
       actuators_.push_back(std::make_unique<DisplacementActuator>(DisplacementActuator::constant_velocity(
           a.name, loads[i].spheres, loads[i].direction, a.amplitude, a.delay_s)));
@@ -130,9 +138,11 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
       for (const auto& a : actuators_)
         if (a->name() == sensor.actuator) source = a.get();
       sensors_.push_back(std::make_unique<ActuatorForceSensor>(sensor.name, *source, every));
+      sensor_placements_.push_back({sensor.name, "force of actuator " + sensor.actuator, {}, {}});
       continue;
     }
     const Vec3 component = direction_vector(sensor.component, sensor.target, who, line);
+    sensor_placements_.push_back({sensor.name, to_string(sensor.quantity), packing_indices(chosen), component});
     const std::int64_t interval =
         sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
     Vec3 position{};
@@ -148,6 +158,9 @@ RunReport Simulation::describe() const {
   RunReport r;
   r.scene = scene_.name;
   r.choice = choice_;
+  r.material = scene_.material;
+  r.actuator_placements = actuator_placements_;
+  r.sensor_placements = sensor_placements_;
   r.spheres = model_->sphere_count();
   r.bonds = model_->bond_count();
   r.contacts = model_->contact_count();

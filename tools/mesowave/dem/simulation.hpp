@@ -37,9 +37,20 @@ struct SimulationOptions {
   std::function<void(const Model& model, double t_s, std::int64_t index)> on_snapshot;
 };
 
+/// Where an actuator or sensor acts, by packing index (what a second code needs to reproduce it).
+struct Placement {
+  std::string name;
+  std::string kind;                      ///< force | displacement | velocity | acceleration | ...
+  std::vector<std::uint32_t> spheres;    ///< packing indices, ascending
+  Vec3 direction;                        ///< load direction or sensor component (zero: magnitude)
+  double amplitude = 0, frequency_hz = 0, cycles = 0, delay_s = 0;  ///< actuators
+};
+
 struct RunReport {
   std::string scene;
   ModelChoice choice;
+  CohesiveFrictionalMaterial material;
+  std::vector<Placement> actuator_placements, sensor_placements;
   std::size_t spheres = 0, bonds = 0, contacts = 0, broken_bonds = 0, degrees_of_freedom = 0;
   int threads = 1;
   double dt_s = 0, duration_s = 0;
@@ -84,6 +95,7 @@ private:
   std::int64_t steps_ = 0;
   double setup_s_ = 0;
   std::vector<std::string> notes_;
+  std::vector<Placement> actuator_placements_, sensor_placements_;
 };
 
 }  // namespace mesowave::dem

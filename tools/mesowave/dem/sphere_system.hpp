@@ -67,9 +67,16 @@ protected:
     Vec3 c;
     double arm[2];
   };
-  /// What a law adds up over its contacts (per task, then in task order).
-  struct ContactSums {
-    double elastic = 0, plastic = 0, peak2 = 0;  ///< peak2: the largest (force / strength)^2
+  /// What a law computes for one contact: the record above plus what the
+  /// simulation adds up (summed in slot order, never inside a vector loop, so
+  /// the sums do not depend on the vector width either).
+  struct ContactResult {
+    Vec3 f;
+    Vec3 c;
+    double arm[2];
+    double elastic;  ///< spring energy (only when evaluate_energy)
+    double plastic;  ///< dissipated by sliding this step
+    double ratio2;   ///< (bond force / strength)^2, 0 for contacts without cohesion
   };
 
   /// Sets the contacts (pairs first < second) and lays them out in slots:
@@ -81,14 +88,17 @@ protected:
   std::vector<std::uint32_t> set_contacts(const std::vector<std::uint32_t>& first,
                                           const std::vector<std::uint32_t>& second);
 
-  /// Runs kernel(slot, out, sums) for every contact; call it from contact_forces
-  /// (inside the step's parallel region). Contacts inside a partition add
-  /// their force to its spheres directly, in slot order (one thread owns a
-  /// partition, so no races and no atomics); contacts between partitions
-  /// leave a record that each sphere gathers in slot order. Either way every
-  /// sphere sums the same terms in the same order on any number of threads.
+  /// Runs kernel(slot, result) for every contact; call it from contact_forces
+  /// (inside the step's parallel region). The kernel runs on chunks of
+  /// kChunk contacts as one vector loop (`omp simd`: it must not depend on
+  /// other contacts of the chunk); the results are then applied one by one in
+  /// slot order: contacts inside a partition add their force to its spheres
+  /// directly (one thread owns a partition, so no races and no atomics),
+  /// contacts between partitions leave a record that each sphere gathers in
+  /// slot order. Either way every sphere sums the same terms in the same
+  /// order on any number of threads.
   template <class Kernel>
-  void for_each_contact(Kernel&& kernel);
+  void for_each_contact(Kernel&& kernel) __attribute__((always_inline));
 
   /// Fills the forces for positions x_n with for_each_contact.
   virtual void contact_forces(double dt, bool evaluate_energy) = 0;
@@ -96,6 +106,7 @@ protected:
   virtual void after_step(double /*dt*/) {}
 
   static constexpr std::size_t kContactBlock = 2048;
+  static constexpr std::size_t kChunk = 32;
   static constexpr std::size_t kSphereBlock = 256;
 
   SphereSet spheres_;
@@ -130,32 +141,47 @@ private:
 };
 
 template <class Kernel>
-void SphereSystem::for_each_contact(Kernel&& kernel) {
+inline void SphereSystem::for_each_contact(Kernel&& kernel) {
   const std::size_t tasks = partitions_ + cross_blocks_;
   const std::size_t count = first_.size();
 #pragma omp for schedule(dynamic, 1)
   for (std::size_t task = 0; task < tasks; ++task) {
-    ContactSums sums;
-    if (task < partitions_) {
-      Vec3* f = f_acc_.data();
-      Vec3* t = t_acc_.data();
-      for (std::size_t b = interior_start_[task]; b < interior_start_[task + 1]; ++b) {
-        ContactOut o;
-        kernel(b, o, sums);
-        const std::uint32_t i = first_[b], j = second_[b];
-        f[i] -= o.f;
-        f[j] += o.f;
-        t[i] -= o.arm[0] * o.c;
-        t[j] -= o.arm[1] * o.c;
+    const bool interior = task < partitions_;
+    const std::size_t begin =
+        interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
+    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+    double elastic = 0, plastic = 0, peak2 = 0;
+    Vec3* f = f_acc_.data();
+    Vec3* t = t_acc_.data();
+    ContactResult results[kChunk];
+    for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
+      const std::size_t m = std::min(kChunk, end - chunk);
+#pragma omp simd
+      for (std::size_t q = 0; q < m; ++q) kernel(chunk + q, results[q]);
+      for (std::size_t q = 0; q < m; ++q) {
+        const ContactResult& r = results[q];
+        elastic += r.elastic;
+        plastic += r.plastic;
+        peak2 = std::max(peak2, r.ratio2);
+        const std::size_t b = chunk + q;
+        if (interior) {
+          const std::uint32_t i = first_[b], j = second_[b];
+          f[i] -= r.f;
+          f[j] += r.f;
+          t[i] -= r.arm[0] * r.c;
+          t[j] -= r.arm[1] * r.c;
+        } else {
+          ContactOut& o = out_[b - cross_begin_];
+          o.f = r.f;
+          o.c = r.c;
+          o.arm[0] = r.arm[0];
+          o.arm[1] = r.arm[1];
+        }
       }
-    } else {
-      const std::size_t begin = cross_begin_ + (task - partitions_) * kContactBlock;
-      const std::size_t end = std::min(count, begin + kContactBlock);
-      for (std::size_t b = begin; b < end; ++b) kernel(b, out_[b - cross_begin_], sums);
     }
-    task_elastic_[task] = sums.elastic;
-    task_plastic_[task] += sums.plastic;
-    task_peak2_[task] = sums.peak2;
+    task_elastic_[task] = elastic;
+    task_plastic_[task] += plastic;
+    task_peak2_[task] = peak2;
   }
 }
 
