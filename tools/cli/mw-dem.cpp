@@ -53,7 +53,9 @@ int main(int argc, char** argv) {
     sub->add_option("--frequency-kHz", frequency_kHz, "Centre frequency of every actuator's burst [kHz]");
     sub->add_option("--dt-ns", dt_ns, "Time step instead of the scene's [ns]");
     sub->add_option("--duration-ms", duration_ms, "Duration instead of the scene's [ms]");
-    sub->add_option("--threads", threads, "OpenMP threads (default: all; results are the same bits for any count)");
+    sub->add_option("--threads", threads,
+                    "OpenMP threads (default: the cores the machine is not busy with; the results are the same bits "
+                    "for any count)");
   };
   auto* info = cli.add_subcommand("info", "Counts, critical time step, the model it would choose and a memory estimate, without running");
   common(info);
@@ -68,7 +70,8 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--quiet", quiet, "No progress bar");
 
   return tool.run(argc, argv, [&](app::Run& run) {
-    dem::set_thread_count(threads);
+    std::string threads_reason;
+    dem::set_thread_count(dem::choose_thread_count(threads, &threads_reason));
     dem::Scene scene = dem::read_scene_file(scene_path);
     run.input(scene_path);
     if (!packing_path.empty()) scene.packing_file = packing_path;
@@ -98,7 +101,9 @@ int main(int argc, char** argv) {
     };
     dem::Simulation sim(scene, packing, options);
     if (info->parsed()) {
-      run.emit_json(dem::to_json(sim.describe()));
+      auto j = dem::to_json(sim.describe());
+      j["threads_reason"] = threads_reason;
+      run.emit_json(j);
       return;
     }
     const dem::RunReport report = sim.run();
@@ -116,6 +121,8 @@ int main(int argc, char** argv) {
     run.metric("dt_limit", report.dt_cr.limit_s, "s");
     run.metric("peak_force_ratio", report.peak_force_ratio, "");
     run.metric("ns_per_contact_step", report.ns_per_contact_step, "ns");
-    run.emit_json(dem::to_json(report), summary_path);
+    auto summary = dem::to_json(report);
+    summary["threads_reason"] = threads_reason;
+    run.emit_json(summary, summary_path);
   });
 }
