@@ -56,12 +56,17 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
   if (track_rotation_) theta_.assign(n, {});
   inv_mass_.resize(n);
   inv_inertia_.resize(n);
+  inv_mass3_.resize(3 * n);
+  inv_inertia3_.resize(3 * n);
   for (std::size_t k = 0; k < n; ++k) {
     inv_mass_[k] = 1.0 / spheres_.mass_kg[k];
     inv_inertia_[k] = 1.0 / spheres_.inertia_kg_m2[k];
+    for (int d = 0; d < 3; ++d) {
+      inv_mass3_[3 * k + std::size_t(d)] = inv_mass_[k];
+      inv_inertia3_[3 * k + std::size_t(d)] = inv_inertia_[k];
+    }
   }
   is_forced_.assign(n, 0);
-  constrained_.assign(n, 0);
   a_undamped_.assign(n, {});
   const std::size_t sphere_blocks = (n + kSphereBlock - 1) / kSphereBlock;
   sphere_block_kinetic_.assign(sphere_blocks, 0);
@@ -71,8 +76,8 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
   t_acc_.assign(n, {});
   threads_ = omp_get_max_threads();
   // A fixed number of Morton ranges, set by the sphere count alone (never by
-  // the thread count, which must not change the bits): ~1000 spheres each.
-  partitions_ = std::clamp<std::size_t>(n / 1024, 1, 64);
+  // the thread count, which must not change the bits): ~4000 spheres each.
+  partitions_ = std::clamp<std::size_t>(n / kSpheresPerPartition, 1, 64);
   sphere_chunk_ = (n + partitions_ - 1) / partitions_;
   first_ = bonds_.first;
   second_ = bonds_.second;
@@ -138,8 +143,7 @@ double SphereSystem::impose_displacement(std::size_t k, const Vec3& e, double u_
   const double v_before = dot(v_[k], e) - dt * dot(a_[k], e);  // v_{n-1/2} along e
   // A constrained degree of freedom is not damped (Yade: blocked DOFs skip the
   // integrator); its force balance uses the undamped F/m of this step.
-  const double a_free = constrained_[k] ? dot(a_undamped_[k], e) : dot(a_[k], e);
-  constrained_[k] = 1;
+  const double a_free = dot(a_undamped_[k], e);
   const double a_imposed = (v_imposed - v_before) / dt;
   x_[k] += (u_next - dot(displacement(k), e)) * e;
   v_[k] += (v_imposed - dot(v_[k], e)) * e;
@@ -184,25 +188,20 @@ void SphereSystem::step(double dt, bool evaluate_energy) {
 }
 
 void SphereSystem::integrate(double dt, bool evaluate_energy) {
-  const double alpha = material_.damping;
   const std::size_t n = spheres_.size();
   const std::size_t blocks = (n + kSphereBlock - 1) / kSphereBlock;
   const std::uint32_t* offset = cross_incidence_.offset.data();
   const std::uint32_t* entry = cross_incidence_.entry.data();
   const ContactOut* out = out_.data();
-  const double* mass = spheres_.mass_kg.data();
-  const double* inertia = spheres_.inertia_kg_m2.data();
 
 #pragma omp for schedule(static)
   for (std::size_t blk = 0; blk < blocks; ++blk) {
-    double kinetic = 0, damping = 0, vmax2 = 0;
-    const std::size_t end = std::min(n, (blk + 1) * kSphereBlock);
-    for (std::size_t k = blk * kSphereBlock; k < end; ++k) {
-      // Fixed order: contacts inside the partition (summed in slot order by
-      // for_each_contact), then those across partitions, then external loads.
+    const std::size_t begin = blk * kSphereBlock, end = std::min(n, begin + kSphereBlock);
+    // Total force and torque, in a fixed order: contacts inside the partition
+    // (summed in slot order by for_each_contact), those across partitions,
+    // then external loads.
+    for (std::size_t k = begin; k < end; ++k) {
       Vec3 f = f_acc_[k], t = t_acc_[k];
-      f_acc_[k] = {};
-      t_acc_[k] = {};
       for (std::uint32_t e = offset[k]; e < offset[k + 1]; ++e) {
         const std::uint32_t code = entry[e];
         const ContactOut& o = out[code >> 1];
@@ -211,39 +210,66 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
         f += sign * o.f;
         t -= o.arm[side] * o.c;
       }
-      f += f_ext_[k];
-      // Translation.
-      const Vec3 a_free = inv_mass_[k] * f;
-      const Vec3 v0 = v_[k];
-      Vec3 a = a_free;
-      if (alpha != 0) {
-        a = {damped(a.x, v0.x, dt, alpha), damped(a.y, v0.y, dt, alpha), damped(a.z, v0.z, dt, alpha)};
-        damping += mass[k] * dot(a_free - a, v0 + (v0 + dt * a)) * 0.5 * dt;
-      }
-      const Vec3 v1 = v0 + dt * a;
-      if (evaluate_energy) kinetic += 0.5 * mass[k] * dot(v0, v1);
-      vmax2 = std::max(vmax2, norm2(v1));
-      v_[k] = v1;
-      a_[k] = a;
-      x_[k] += dt * v1;
-      if (constrained_[k]) a_undamped_[k] = a_free;
-      // Rotation (spheres: scalar inertia).
-      const Vec3 b_free = inv_inertia_[k] * t;
-      const Vec3 w0 = w_[k];
-      Vec3 b = b_free;
-      if (alpha != 0) {
-        b = {damped(b.x, w0.x, dt, alpha), damped(b.y, w0.y, dt, alpha), damped(b.z, w0.z, dt, alpha)};
-        damping += inertia[k] * dot(b_free - b, w0 + (w0 + dt * b)) * 0.5 * dt;
-      }
-      const Vec3 w1 = w0 + dt * b;
-      if (evaluate_energy) kinetic += 0.5 * inertia[k] * dot(w0, w1);
-      w_[k] = w1;
-      if (track_rotation_) theta_[k] += dt * w1;
+      f_acc_[k] = f + f_ext_[k];
+      t_acc_[k] = t;
     }
-    sphere_block_kinetic_[blk] = kinetic;
-    sphere_block_damping_[blk] += damping;
-    sphere_block_vmax2_[blk] = vmax2;
+    update_motion(begin, end, blk, dt, evaluate_energy);
   }
+}
+
+// Eq. (7) and leapfrog, per Cartesian component, over the flat arrays of one
+// block: one vector loop for the translations, one for the rotations. The
+// per-component energy terms go through a small buffer and are added in
+// component order, so the sums do not depend on the vector width.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t blk, double dt, bool evaluate_energy) {
+  const double alpha = material_.damping, half_dt = 0.5 * dt;
+  const std::size_t m = 3 * (end - begin);
+  double terms[2][3 * kSphereBlock];
+  double vmax2 = 0, kinetic = 0, damping = 0;
+  for (int part = 0; part < 2; ++part) {
+    const bool rotation = part == 1;
+    double* f = &(rotation ? t_acc_ : f_acc_)[begin].x;
+    double* v = &(rotation ? w_ : v_)[begin].x;
+    double* a_out = &a_[begin].x;
+    double* a_free_out = &a_undamped_[begin].x;
+    double* x = rotation ? (track_rotation_ ? &theta_[begin].x : nullptr) : &x_[begin].x;
+    const double* inv_m = &(rotation ? inv_inertia3_ : inv_mass3_)[3 * begin];
+    double* kin = terms[0];
+    double* dmp = terms[1];
+    double part_vmax2 = 0;
+#pragma omp simd reduction(max : part_vmax2)
+    for (std::size_t c = 0; c < m; ++c) {
+      const double a_free = f[c] * inv_m[c];
+      const double v0 = v[c];
+      const double p = a_free * (v0 + half_dt * a_free);
+      const double sign = p > 0.0 ? 1.0 : (p < 0.0 ? -1.0 : 0.0);
+      const double a = a_free * (1.0 - alpha * sign);
+      const double v1 = v0 + dt * a;
+      const double mass = 1.0 / inv_m[c];
+      kin[c] = 0.5 * mass * v0 * v1;
+      dmp[c] = mass * (a_free - a) * (v0 + v1) * half_dt;
+      v[c] = v1;
+      f[c] = 0.0;
+      if (!rotation) {
+        a_out[c] = a;
+        a_free_out[c] = a_free;
+        x[c] += dt * v1;
+        part_vmax2 = std::max(part_vmax2, v1 * v1);
+      }
+    }
+    if (rotation && x)
+#pragma omp simd
+      for (std::size_t c = 0; c < m; ++c) x[c] += dt * v[c];
+    if (!rotation) vmax2 = part_vmax2;
+    if (evaluate_energy)
+      for (std::size_t c = 0; c < m; ++c) kinetic += kin[c];
+    if (alpha != 0)
+      for (std::size_t c = 0; c < m; ++c) damping += dmp[c];
+  }
+  sphere_block_kinetic_[blk] = kinetic;
+  sphere_block_damping_[blk] += damping;
+  sphere_block_vmax2_[blk] = 3.0 * vmax2;  // |v|^2 <= 3 max_k v_k^2: a safe bound for contact detection
 }
 
 EnergyAccount SphereSystem::energy() const {

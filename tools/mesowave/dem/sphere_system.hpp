@@ -108,6 +108,7 @@ protected:
   static constexpr std::size_t kContactBlock = 2048;
   static constexpr std::size_t kChunk = 32;
   static constexpr std::size_t kSphereBlock = 256;
+  static constexpr std::size_t kSpheresPerPartition = 4096;
 
   SphereSet spheres_;
   BondNetwork bonds_;
@@ -118,6 +119,7 @@ protected:
 
   std::vector<Vec3> x_, v_, w_, a_, theta_, f_ext_;
   std::vector<double> inv_mass_, inv_inertia_;
+  std::vector<double> inv_mass3_, inv_inertia3_;  ///< the same, once per Cartesian component
   std::vector<std::uint32_t> first_, second_;  ///< contacts in slot order
   double peak_ratio_ = 0;
   double max_speed_ = 0;  ///< largest |v| after the last step
@@ -125,6 +127,7 @@ protected:
 
 private:
   void integrate(double dt, bool evaluate_energy);
+  void update_motion(std::size_t begin, std::size_t end, std::size_t block, double dt, bool evaluate_energy);
 
   std::size_t partitions_ = 1, sphere_chunk_ = 1, cross_begin_ = 0, cross_blocks_ = 0;
   std::vector<std::uint32_t> interior_start_;  ///< partitions + 1
@@ -133,8 +136,7 @@ private:
   std::vector<Vec3> f_acc_, t_acc_;
   std::vector<double> task_elastic_, task_plastic_, task_peak2_;
   std::vector<double> sphere_block_kinetic_, sphere_block_damping_, sphere_block_vmax2_;
-  std::vector<std::uint8_t> constrained_;  ///< spheres moved by impose_displacement
-  std::vector<Vec3> a_undamped_;           ///< F/m before damping, kept for constrained spheres
+  std::vector<Vec3> a_undamped_;           ///< F/m before damping (a constrained DOF is not damped)
   std::vector<std::uint32_t> forced_;  ///< spheres with an external force this step
   std::vector<Vec3> forced_v_before_;
   std::vector<std::uint8_t> is_forced_;

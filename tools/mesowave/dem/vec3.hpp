@@ -15,6 +15,9 @@ struct Vec3 {
   Vec3& operator*=(double s) { x *= s; y *= s; z *= s; return *this; }
 };
 
+// The integrator walks arrays of Vec3 as flat arrays of doubles.
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
+
 inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
