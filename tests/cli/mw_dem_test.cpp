@@ -91,3 +91,24 @@ TEST(MwDem, UnknownSceneKeyIsNamed) {
   EXPECT_EQ(r.exit_status, 1);
   EXPECT_NE(r.err.find("unknown key \"dampnig\""), std::string::npos) << r.err;
 }
+
+TEST(MwDem, SnapshotsAreVtkPolyDataWithATimeSeries) {
+  test::TempDir dir;
+  dem::write_packing_file(dir / "rod.h5", rod(30, 5.1e-3, 1.03 * 5.1e-3));
+  test::write_file(dir / "rod.toml", rod_scene(dir / "rod.h5"));
+  const auto r = run_tool("mw-dem", {"run", (dir / "rod.toml").string(), "--duration-ms", "0.01", "--signals",
+                                     (dir / "s.h5").string(), "--snapshots", (dir / "snap").string(),
+                                     "--snapshot-interval-us", "5", "--quiet"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  // t = 0, 5 and 10 us.
+  for (int k = 0; k < 3; ++k) {
+    const std::string vtp = test::read_file(dir / "snap" / ("snapshot-" + std::to_string(k) + ".vtp"));
+    EXPECT_NE(vtp.find("<VTKFile type=\"PolyData\""), std::string::npos);
+    EXPECT_NE(vtp.find("NumberOfPoints=\"30\""), std::string::npos);
+    for (const char* name : {"radius", "displacement", "velocity"})
+      EXPECT_NE(vtp.find(std::string("Name=\"") + name + "\""), std::string::npos) << name;
+    EXPECT_NE(vtp.find("</VTKFile>"), std::string::npos);
+  }
+  const std::string pvd = test::read_file(dir / "snap" / "snapshots.pvd");
+  EXPECT_NE(pvd.find("timestep=\"1e-05\" part=\"0\" file=\"snapshot-2.vtp\""), std::string::npos) << pvd;
+}
