@@ -105,8 +105,10 @@ TEST(Models, ChainLinearAndFullGiveTheSameRodSignal) {
 }
 
 TEST(Models, OneAndTwoThreadsGiveBitIdenticalSignals) {
-  const Packing p = fcc_packing(8, kA, 0.8e-3, 1.0e-3, 0.03, 9, 2290);  // 2048 spheres, ~12,000 bonds
-  const Scene s = cube_scene(8, 1e-3, 300e3, 5e-6);
+  // 8788 spheres, ~50,000 bonds: two partitions of the Morton order, so the
+  // parallel path (in-place sums inside partitions, gathered records across) runs.
+  const Packing p = fcc_packing(13, kA, 0.8e-3, 1.0e-3, 0.03, 9, 2290);
+  const Scene s = cube_scene(13, 1e-3, 300e3, 2e-6);
   for (const char* model : {"linear", "full"}) {
     set_thread_count(1);
     const RunReport one = run(s, p, model);

@@ -53,7 +53,7 @@ public:
   void scaled_stiffness_action(const double* x, double* y) const override;
   double scaled_stiffness_row_sum_bound() const override;
   std::size_t memory_bytes() const override;
-  int threads() const override { return threads_; }
+  int threads() const override { return parallel_ ? threads_ : 1; }
 
   const SphereSet& spheres() const { return spheres_; }
   const BondNetwork& bonds() const { return bonds_; }
