@@ -171,8 +171,6 @@ std::vector<double> PochhammerChree::frequencies(double k, double omega_max, dou
   return roots;
 }
 
-double DispersionPoint::f_Hz() const { return omega_rad_s / (2 * std::numbers::pi); }
-
 std::string mode_name(int mode) { return "L(0," + std::to_string(mode) + ")"; }
 
 namespace {
@@ -218,6 +216,7 @@ DispersionPoint to_point(const PochhammerChree& pc, int mode, int branch, const 
   p.branch = branch;
   p.k_rad_m = pc.k_of(s.x);
   p.omega_rad_s = pc.omega_of(s.W);
+  p.f_Hz = p.omega_rad_s / (2 * std::numbers::pi);
   p.c_phase_m_s = s.x > 0 ? p.omega_rad_s / p.k_rad_m : 0.0;
   p.c_group_m_s = s.slope * pc.speeds().cS;
   return p;
@@ -354,6 +353,7 @@ std::vector<DispersionPoint> sample_at_frequencies(const PochhammerChree& pc, co
         p.mode = curve.mode;
         p.branch = p1.branch;  // an interval that starts at a zero-group-velocity point belongs to the next branch
         p.omega_rad_s = omega;
+        p.f_Hz = f;
         p.k_rad_m = pc.k_of(x);
         p.c_phase_m_s = omega / p.k_rad_m;
         p.c_group_m_s = pc.group_velocity(p.k_rad_m, omega);

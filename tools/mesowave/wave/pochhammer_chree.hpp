@@ -88,11 +88,11 @@ private:
 struct DispersionPoint {
   int mode = 0;       ///< n of L(0,n), 1-based
   int branch = 0;     ///< 0, 1, ... along the mode from k = 0; a new branch starts at each zero-group-velocity point
+  double f_Hz = 0;         ///< omega / (2 pi), kept as given when sampled at a frequency
   double omega_rad_s = 0;
   double k_rad_m = 0;
   double c_phase_m_s = 0;  ///< omega / k (infinite at a cut-off: such points have k = 0 and are not sampled)
   double c_group_m_s = 0;  ///< d omega / dk, negative on a backward-wave branch
-  double f_Hz() const;
 };
 
 /// A mode traced in wavenumber from its cut-off: points in increasing k,

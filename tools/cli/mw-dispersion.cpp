@@ -1,0 +1,162 @@
+// mw-dispersion - dispersion curves of the steel-rod study (rod paper
+// Section 2.1, Figure 9, Table 2).
+//
+//   mw-dispersion theory --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1
+//       --f-max-kHz 500 --csv pc.csv --plot pc.png
+//   mw-dispersion lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 6044.37
+//       --contact-modulus-GPa 660 --spacing-R 1.03 --csv chain103.csv
+//
+// theory: longitudinal modes L(0,n) of a solid rod from the Pochhammer-Chree
+// equation (phase and group velocity, backward-wave branches with negative
+// group velocity). lattice: the exact dispersion of the DEM chain (masses on
+// springs), omega = 2 sqrt(K/m) |sin(k d/2)|.
+#include <optional>
+
+#include "mesowave/app/tool.hpp"
+#include "mesowave/core/check.hpp"
+#include "mesowave/core/units.hpp"
+#include "mesowave/wave/dispersion_output.hpp"
+
+using namespace mesowave;
+namespace fs = std::filesystem;
+
+int main(int argc, char** argv) {
+  app::Tool tool(
+      "mw-dispersion",
+      "Dispersion of longitudinal waves in a rod: Pochhammer-Chree theory and the DEM chain lattice.\n\n"
+      "theory: roots of the Pochhammer-Chree frequency equation (rod paper Eq. 1)\n"
+      "  (2a/r)(b^2+k^2) J1(ar) J1(br) - (b^2-k^2)^2 J0(ar) J1(br) - 4 k^2 a b J1(ar) J0(br) = 0,\n"
+      "  a^2 = w^2/cP^2 - k^2, b^2 = w^2/cS^2 - k^2 (r the radius; modified Bessel functions where a^2 or\n"
+      "  b^2 < 0), traced in wavenumber from each k = 0 cut-off; group velocity c_g = dw/dk = -F_k/F_w.\n"
+      "  Rows per mode L(0,n) and branch; a backward-wave branch (c_g < 0) is reported beside the forward one.\n"
+      "lattice: the DEM chain of spheres on bonds, w = 2 sqrt(K/m) |sin(k d/2)|, c_g = d sqrt(K/m) cos(k d/2).\n\n"
+      "  mw-dispersion theory --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1 --csv pc.csv --plot "
+      "pc.png\n"
+      "  mw-dispersion lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 6044.37 --contact-modulus-GPa 660 "
+      "--spacing-R 1.03 --csv chain.csv\n"
+      "  mw-dispersion theory ... --overlay 1.03R=chain.csv --plot figure9.png");
+  auto& cli = tool.cli();
+  cli.require_subcommand(1);
+
+  // theory
+  auto* theory = cli.add_subcommand("theory", "Pochhammer-Chree longitudinal modes of a solid rod");
+  double E_GPa = 0, nu = 0, rho = 0, radius_mm = 0, f_max_kHz = 500, df_kHz = 1;
+  std::optional<double> f_min_kHz;
+  double ka_step = 0.01;
+  int max_modes = 0;
+  fs::path csv, h5, plot, out;
+  std::vector<std::string> overlays;
+  theory->add_option("--E-GPa", E_GPa, "Young's modulus [GPa]")->required();
+  theory->add_option("--nu", nu, "Poisson ratio (-1 < nu < 0.5)")->required();
+  theory->add_option("--density-kg-m3", rho, "Density [kg/m3]")->required();
+  theory->add_option("--radius-mm", radius_mm, "Rod radius [mm]")->required();
+  theory->add_option("--f-max-kHz", f_max_kHz, "Highest frequency [kHz]")->capture_default_str();
+  theory->add_option("--f-min-kHz", f_min_kHz, "Lowest frequency of the table [kHz] (default: the step)");
+  theory->add_option("--df-kHz", df_kHz, "Frequency step of the table [kHz]")->capture_default_str();
+  theory->add_option("--ka-step", ka_step, "Tracing step in k a (halved automatically where needed)")
+      ->capture_default_str();
+  theory->add_option("--modes", max_modes, "Only the first N modes (0: every mode below --f-max-kHz)")
+      ->capture_default_str();
+  theory->add_option("--csv", csv, "Table: mode, branch, direction, f_kHz, k_rad_m, ka, c_phase_m_s, c_group_m_s");
+  theory->add_option("--h5", h5, "The same table in HDF5 (/theory)");
+  theory->add_option("--plot", plot, "Group velocity against frequency (.png or .svg)");
+  theory->add_option("--overlay", overlays,
+                     "LABEL=FILE.csv: add a curve (columns f_kHz, c_group_m_s; e.g. a lattice or measure table) to "
+                     "the plot; repeatable");
+  app::add_out_option(*theory, out, "the JSON summary");
+
+  // lattice
+  auto* lattice = cli.add_subcommand("lattice", "Exact dispersion of the DEM chain (1D mass-spring lattice)");
+  std::optional<double> mass_kg, stiffness, spacing_mm, sphere_mm, rho_p, Ec_GPa, spacing_R;
+  double l_f_max_kHz = 500, l_df_kHz = 1;
+  std::string label = "chain";
+  fs::path l_csv, l_out;
+  lattice->add_option("--mass-kg", mass_kg, "Particle mass m [kg]");
+  lattice->add_option("--stiffness-N-m", stiffness, "Bond stiffness K [N/m]");
+  lattice->add_option("--spacing-mm", spacing_mm, "Distance d between particle centres [mm]");
+  lattice->add_option("--sphere-radius-mm", sphere_mm, "Sphere radius R [mm] (m = rho_p 4/3 pi R^3, K = E_c R)");
+  lattice->add_option("--particle-density-kg-m3", rho_p, "Particle density rho_p [kg/m3] (rod Table 1)");
+  lattice->add_option("--contact-modulus-GPa", Ec_GPa, "Contact modulus E_c [GPa] (the K_n column of rod Table 1)");
+  lattice->add_option("--spacing-R", spacing_R, "Spacing d as a multiple of the sphere radius (1.03 for 1.03R)");
+  lattice->add_option("--f-max-kHz", l_f_max_kHz, "Highest frequency [kHz]")->capture_default_str();
+  lattice->add_option("--df-kHz", l_df_kHz, "Frequency step [kHz]")->capture_default_str();
+  lattice->add_option("--label", label, "Name of the model in the table")->capture_default_str();
+  lattice->add_option("--csv", l_csv, "Table: model, f_kHz, k_rad_m, kd, c_phase_m_s, c_group_m_s");
+  app::add_out_option(*lattice, l_out, "the JSON summary");
+
+  return tool.run(argc, argv, [&](app::Run& run) {
+    if (theory->parsed()) {
+      if (!plot.empty()) wave::require_plot_extension(plot);
+      const wave::IsotropicMaterial material{require_positive("--E-GPa", E_GPa, "GPa") * units::GPa, nu, rho};
+      wave::validate(material);
+      const wave::PochhammerChree pc(material, require_positive("--radius-mm", radius_mm, "mm") * units::mm);
+      wave::TraceOptions opt;
+      opt.f_max_Hz = require_positive("--f-max-kHz", f_max_kHz, "kHz") * units::kHz;
+      opt.ka_step = require_positive("--ka-step", ka_step);
+      if (max_modes < 0) throw InputError("--modes (" + std::to_string(max_modes) + ") must not be negative");
+      std::vector<wave::VelocityCurve> curves;
+      for (const auto& o : overlays) {
+        const auto eq = o.find('=');
+        if (eq == std::string::npos || eq == 0)
+          throw InputError("--overlay " + o + " must read LABEL=FILE.csv");
+        run.input(o.substr(eq + 1));
+        curves.push_back(wave::read_velocity_curve(o.substr(eq + 1), o.substr(0, eq)));
+      }
+      auto trace = wave::trace_longitudinal_modes(pc, opt);
+      if (max_modes > 0)
+        std::erase_if(trace.modes, [&](const wave::ModeCurve& c) { return c.mode > max_modes; });
+      const auto grid = wave::frequency_grid(f_min_kHz.value_or(df_kHz) * units::kHz, opt.f_max_Hz, df_kHz * units::kHz);
+      const auto points = wave::sample_at_frequencies(pc, trace, grid);
+
+      if (!csv.empty()) run.write_text(csv, wave::theory_csv(points, pc.radius_m()));
+      if (!h5.empty()) wave::write_dispersion_h5(run.output(h5), pc, points);
+      if (!plot.empty())
+        wave::render_plot(wave::group_velocity_plot("Pochhammer-Chree, radius " + format_number(radius_mm) +
+                                                        " mm, nu = " + format_number(nu),
+                                                    points, {}, curves),
+                          plot, run.output(plot));
+      auto summary = wave::theory_summary(pc, trace);
+      summary["rows"] = points.size();
+      for (const auto& m : summary["modes"])
+        if (m["cutoff_kHz"].get<double>() > 0) run.metric(m["mode"].get<std::string>() + " cut-off", m["cutoff_kHz"], "kHz");
+      run.metric("c0", pc.speeds().c0, "m/s");
+      if (summary.contains("L01_min_group_velocity_m_s"))
+        run.metric("L(0,1) min group velocity", summary["L01_min_group_velocity_m_s"], "m/s");
+      run.emit_json(summary, out);
+    } else {
+      wave::MassSpringChain chain;
+      const bool direct = mass_kg || stiffness;
+      const bool dem = sphere_mm || rho_p || Ec_GPa || spacing_R;
+      if (direct && dem) throw InputError("give either --mass-kg/--stiffness-N-m or the sphere description, not both");
+      if (direct) {
+        if (!mass_kg || !stiffness || !spacing_mm)
+          throw InputError("--mass-kg, --stiffness-N-m and --spacing-mm are needed together");
+        chain = {*mass_kg, *stiffness, *spacing_mm * units::mm};
+      } else {
+        if (!sphere_mm || !rho_p || !Ec_GPa)
+          throw InputError("need --sphere-radius-mm, --particle-density-kg-m3 and --contact-modulus-GPa "
+                           "(or --mass-kg, --stiffness-N-m, --spacing-mm)");
+        if (spacing_mm.has_value() == spacing_R.has_value())
+          throw InputError("give exactly one of --spacing-mm and --spacing-R");
+        const double R = require_positive("--sphere-radius-mm", *sphere_mm, "mm") * units::mm;
+        const double d = spacing_mm ? *spacing_mm * units::mm : require_positive("--spacing-R", *spacing_R) * R;
+        chain = wave::dem_chain(R, *rho_p, require_positive("--contact-modulus-GPa", *Ec_GPa, "GPa") * units::GPa, d);
+      }
+      wave::validate(chain);
+      const auto grid = wave::frequency_grid(l_df_kHz * units::kHz, l_f_max_kHz * units::kHz, l_df_kHz * units::kHz);
+      const auto curve = wave::lattice_curve(label, chain, grid);
+      if (!l_csv.empty()) run.write_text(l_csv, wave::lattice_csv(curve));
+      nlohmann::ordered_json j;
+      j["model"] = label;
+      j["mass_kg"] = chain.mass_kg;
+      j["stiffness_N_m"] = chain.stiffness_N_m;
+      j["spacing_mm"] = chain.spacing_m / units::mm;
+      j["long_wave_speed_m_s"] = wave::long_wave_speed(chain);
+      j["cutoff_kHz"] = wave::cutoff_omega(chain) / (2 * std::numbers::pi) / units::kHz;
+      j["rows"] = curve.points.size();
+      run.metric("long-wave speed", j["long_wave_speed_m_s"], "m/s");
+      run.metric("lattice cut-off", j["cutoff_kHz"], "kHz");
+      run.emit_json(j, l_out);
+    }
+  });
+}
