@@ -107,10 +107,15 @@ std::pair<std::size_t, std::size_t> my_range(std::size_t n) {
 
 }  // namespace
 
+int useful_threads(std::size_t elements, std::size_t min_per_thread) {
+  const std::size_t by_work = min_per_thread == 0 ? std::size_t(omp_get_max_threads()) : elements / min_per_thread;
+  return int(std::clamp<std::size_t>(by_work, 1, std::size_t(omp_get_max_threads())));
+}
+
 void apply_stiffness(const FemModel& model, const std::vector<double>& u, std::vector<double>& f) {
   f.assign(model.dof_count(), 0.0);
   const Assembler A(model);
-#pragma omp parallel
+#pragma omp parallel num_threads(useful_threads(model.element_count(), 4000))
   A.add(u.data(), f.data());
 }
 
@@ -166,26 +171,41 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
   const auto dim = std::size_t(model.dim);
   const double dt = opt.dt_s, c = opt.alpha_damping_per_s * dt / 2;
   const double keep = (1 - c) / (1 + c), gain = dt / (1 + c);
-  std::vector<double> inv_m(ndof);
+  std::vector<double> inv_m(ndof), load_w(ndof, 0.0);
   for (std::size_t i = 0; i < ndof; ++i) inv_m[i] = model.fixed[i] ? 0.0 : 1.0 / model.mass[i / dim];
+  for (const auto& [dof, w] : load.dof_weights) load_w[dof] += w;
   std::vector<double> u(ndof, 0.0), v(ndof, 0.0), f(ndof, 0.0);
-  std::vector<double> v_old_probe(probes.size()), v_old_st(st ? st->dofs.size() : 0);
 
   const std::int64_t nsamples = opt.steps / opt.sample_stride + 1;
   ExplicitResult res;
   res.signals.resize(probes.size());
   for (std::size_t p = 0; p < probes.size(); ++p) {
-    auto& s = res.signals[p];
-    s.name = probes[p].name;
-    s.quantity = quantity_name(probes[p].quantity);
-    s.unit = quantity_unit(probes[p].quantity);
-    s.component = probes[p].component;
-    s.t0_s = 0;
-    s.dt_s = dt * double(opt.sample_stride);
-    s.samples.reserve(std::size_t(nsamples));
-    s.position_m = model.position(probes[p].dof / dim);
+    auto& sg = res.signals[p];
+    sg.name = probes[p].name;
+    sg.quantity = quantity_name(probes[p].quantity);
+    sg.unit = quantity_unit(probes[p].quantity);
+    sg.component = probes[p].component;
+    sg.t0_s = 0;
+    sg.dt_s = dt * double(opt.sample_stride);
+    sg.samples.assign(std::size_t(nsamples), 0.0);
+    sg.position_m = model.position(probes[p].dof / dim);
   }
-  if (st) res.spacetime.reserve(std::size_t(nsamples) * st->dofs.size());
+  // Every recorded dof as (dof, quantity, where its samples go, their stride).
+  struct Tap {
+    std::size_t dof;
+    Quantity quantity;
+    double* out;
+    std::size_t stride;
+  };
+  std::vector<Tap> taps;
+  for (std::size_t p = 0; p < probes.size(); ++p)
+    taps.push_back({probes[p].dof, probes[p].quantity, res.signals[p].samples.data(), 1});
+  if (st) {
+    res.spacetime.assign(std::size_t(nsamples) * st->dofs.size(), 0.0);
+    for (std::size_t j = 0; j < st->dofs.size(); ++j)
+      taps.push_back({st->dofs[j], st->quantity, res.spacetime.data() + j, st->dofs.size()});
+  }
+  std::sort(taps.begin(), taps.end(), [](const Tap& a, const Tap& b) { return a.dof < b.dof; });
 
   const Assembler A(model);
   const auto start = std::chrono::steady_clock::now();
@@ -194,7 +214,12 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
   const std::int64_t check_every = 200;
   std::vector<double> ke_part;
 
-#pragma omp parallel
+  // One step, per thread on its own dofs (no other thread writes them, so no
+  // barrier is needed between reading and writing them): f = K u^n over all
+  // elements (colour by colour), then
+  //   v^{n+1/2} = keep v^{n-1/2} + gain (F^n w - f) / m,  u^{n+1} = u^n + dt v^{n+1/2},  f = 0,
+  // and the recorded dofs sampled from v^{n-1/2}, v^{n+1/2} and u^n.
+#pragma omp parallel num_threads(useful_threads(model.element_count(), opt.min_elements_per_thread))
   {
 #pragma omp single
     {
@@ -203,42 +228,30 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
     }
     const auto [b, e] = my_range(ndof);
     const int tid = omp_get_thread_num();
+    const auto tap_begin = std::lower_bound(taps.begin(), taps.end(), b, [](const Tap& t, std::size_t d) { return t.dof < d; });
+    const auto tap_end = std::lower_bound(taps.begin(), taps.end(), e, [](const Tap& t, std::size_t d) { return t.dof < d; });
     for (std::int64_t n = 0; n <= opt.steps; ++n) {
       const double F = load.burst(double(n) * dt);
-      const bool sample = n % opt.sample_stride == 0;
-      for (std::size_t i = b; i < e; ++i) f[i] = 0.0;
-#pragma omp barrier
-      A.add(u.data(), f.data());  // f = K u^n
-      if (sample) {
-#pragma omp single
-        {
-          for (std::size_t p = 0; p < probes.size(); ++p) v_old_probe[p] = v[probes[p].dof];
-          if (st)
-            for (std::size_t j = 0; j < st->dofs.size(); ++j) v_old_st[j] = v[st->dofs[j]];
+      A.add(u.data(), f.data());  // ends with a barrier: f = K u^n complete
+      if (n % opt.sample_stride == 0) {
+        const auto k = std::size_t(n / opt.sample_stride);
+        for (auto t = tap_begin; t != tap_end; ++t) {
+          const std::size_t i = t->dof;
+          const double v_new = keep * v[i] + gain * (F * load_w[i] - f[i]) * inv_m[i];
+          double value;
+          switch (t->quantity) {
+            case Quantity::Displacement: value = u[i]; break;
+            case Quantity::Velocity: value = 0.5 * (v_new + v[i]); break;
+            default: value = (v_new - v[i]) / dt;
+          }
+          t->out[k * t->stride] = value;
         }
       }
-      for (std::size_t i = b; i < e; ++i) v[i] = keep * v[i] - gain * f[i] * inv_m[i];
-#pragma omp barrier
-#pragma omp single
-      {
-        // The load's share of the same update (the update is linear in the force).
-        for (const auto& [dof, w] : load.dof_weights) v[dof] += gain * w * F * inv_m[dof];
-        if (sample) {
-          const auto value = [&](std::size_t dof, double v_old, Quantity q) {
-            switch (q) {
-              case Quantity::Displacement: return u[dof];
-              case Quantity::Velocity: return 0.5 * (v[dof] + v_old);
-              default: return (v[dof] - v_old) / dt;
-            }
-          };
-          for (std::size_t p = 0; p < probes.size(); ++p)
-            res.signals[p].samples.push_back(value(probes[p].dof, v_old_probe[p], probes[p].quantity));
-          if (st)
-            for (std::size_t j = 0; j < st->dofs.size(); ++j)
-              res.spacetime.push_back(value(st->dofs[j], v_old_st[j], st->quantity));
-        }
+      for (std::size_t i = b; i < e; ++i) {
+        v[i] = keep * v[i] + gain * (F * load_w[i] - f[i]) * inv_m[i];
+        u[i] += dt * v[i];
+        f[i] = 0.0;
       }
-      for (std::size_t i = b; i < e; ++i) u[i] += dt * v[i];
       if (n % check_every == 0 || n == opt.steps) {
         double ke = 0;
         for (std::size_t i = b; i < e; ++i) ke += 0.5 * model.mass[i / dim] * v[i] * v[i];
@@ -254,6 +267,8 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
           if (opt.progress) opt.progress(n);
         }
         if (blew_up) break;
+      } else {
+#pragma omp barrier
       }
     }
   }
