@@ -15,6 +15,8 @@
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/units.hpp"
+#include "mesowave/io/csv.hpp"
+#include "mesowave/io/signal_file.hpp"
 #include "mesowave/wave/dispersion_output.hpp"
 
 using namespace mesowave;
@@ -84,8 +86,131 @@ int main(int argc, char** argv) {
   lattice->add_option("--csv", l_csv, "Table: model, f_kHz, k_rad_m, kd, c_phase_m_s, c_group_m_s");
   app::add_out_option(*lattice, l_out, "the JSON summary");
 
+  // measure
+  auto* measure = cli.add_subcommand("measure", "Group velocity of simulated or measured signals, RSS against theory");
+  std::vector<std::string> runs, stations;
+  std::string method = "echo", band_text, m_label;
+  double m_distance_mm = 0, m_cycles = 5, m_f_min_kHz = 10, m_f_max_kHz = 300;
+  std::optional<double> m_E, m_nu, m_rho, m_radius;
+  fs::path m_theory_csv, m_csv, m_out, m_spacetime;
+  measure->add_option("--run", runs,
+                      "A burst run: FILE (an mw-fem signal file, which records its burst frequency) or "
+                      "FREQ_kHz=FILE; repeatable, one per centre frequency");
+  measure->add_option("--spacetime", m_spacetime, "A space-time record (mw-fem rod --spacetime): 2D FFT ridge instead");
+  measure->add_option("--method", method,
+                      "echo: two successive packets at one station, distance = round trip (2 L; the rod paper's "
+                      "peak to peak); two-stations: first packets at two stations; source: burst centre to first "
+                      "packet")
+      ->capture_default_str();
+  measure->add_option("--station", stations, "Signal name(s) to use (one, or two for two-stations)");
+  measure->add_option("--distance-mm", m_distance_mm,
+                      "Path length [mm] (echo: the round trip; two-stations: default from the positions)");
+  measure->add_option("--cycles", m_cycles, "Cycles in the bursts")->capture_default_str();
+  measure->add_option("--E-GPa", m_E, "Theory: Young's modulus [GPa]");
+  measure->add_option("--nu", m_nu, "Theory: Poisson ratio");
+  measure->add_option("--density-kg-m3", m_rho, "Theory: density [kg/m3]");
+  measure->add_option("--radius-mm", m_radius, "Theory: rod radius [mm]");
+  measure->add_option("--theory-csv", m_theory_csv, "Theory: a table from mw-dispersion theory --csv instead");
+  measure->add_option("--band-kHz", band_text, "LO,HI: frequency band of the RSS [kHz] (default: every point)");
+  measure->add_option("--f-min-kHz", m_f_min_kHz, "Space-time ridge: lowest frequency [kHz]")->capture_default_str();
+  measure->add_option("--f-max-kHz", m_f_max_kHz, "Space-time ridge: highest frequency [kHz]")->capture_default_str();
+  measure->add_option("--label", m_label, "Name of the model in the table (default: the file names)");
+  measure->add_option("--csv", m_csv, "Table: run, f_kHz, method, t1_us, t2_us, distance_mm, c_group_m_s, "
+                                      "theory_c_group_m_s, residual_m_s, in_band");
+  app::add_out_option(*measure, m_out, "the JSON summary (RSS)");
+
   return tool.run(argc, argv, [&](app::Run& run) {
-    if (theory->parsed()) {
+    if (measure->parsed()) {
+      std::vector<wave::GroupVelocityPoint> points;
+      if (!m_spacetime.empty()) {
+        if (!runs.empty()) throw InputError("give either --run files or --spacetime, not both");
+        run.input(m_spacetime);
+        const auto ridge = wave::spacetime_ridge(wave::read_spacetime_file(m_spacetime), m_f_min_kHz * units::kHz,
+                                                 m_f_max_kHz * units::kHz);
+        for (const auto& r : ridge)
+          points.push_back({m_label.empty() ? m_spacetime.filename().string() : m_label, r.f_Hz, "spacetime", 0, 0, 0,
+                            r.c_group_m_s});
+      } else {
+        if (runs.empty()) throw InputError("give at least one --run FILE (or FREQ_kHz=FILE) or --spacetime FILE");
+        wave::MeasureRequest req{method, stations.empty() ? std::vector<std::string>{"S"} : stations,
+                                 m_distance_mm * units::mm, m_cycles};
+        if (m_distance_mm < 0) throw InputError("--distance-mm must not be negative");
+        for (const auto& r : runs) {
+          const auto eq = r.find('=');
+          fs::path file = eq == std::string::npos ? fs::path(r) : fs::path(r.substr(eq + 1));
+          run.input(file);
+          double f = 0;
+          if (eq != std::string::npos) {
+            f = std::stod(r.substr(0, eq)) * units::kHz;
+          } else {
+            const auto a = wave::signal_file_attribute(file, "burst_frequency_Hz");
+            if (!a) throw InputError(file.string() + " does not record its burst frequency: give FREQ_kHz=" + r);
+            f = std::stod(*a);
+          }
+          auto p = wave::measure_run(io::read_signal_file(file), f, req);
+          p.run = m_label.empty() ? file.filename().string() : m_label;
+          points.push_back(p);
+        }
+      }
+      std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.f_Hz < b.f_Hz; });
+      std::function<double(double)> theory;
+      const bool material = m_E || m_nu || m_rho || m_radius;
+      if (material && !m_theory_csv.empty()) throw InputError("give either the material or --theory-csv, not both");
+      if (material) {
+        if (!m_E || !m_nu || !m_rho || !m_radius)
+          throw InputError("theory needs --E-GPa, --nu, --density-kg-m3 and --radius-mm together");
+        const wave::PochhammerChree pc({require_positive("--E-GPa", *m_E, "GPa") * units::GPa, *m_nu, *m_rho},
+                                       require_positive("--radius-mm", *m_radius, "mm") * units::mm);
+        std::vector<double> fs_;
+        for (const auto& p : points) fs_.push_back(p.f_Hz);
+        const auto cg = wave::l01_group_velocity(pc, fs_);
+        theory = [fs_, cg](double f) {
+          for (std::size_t i = 0; i < fs_.size(); ++i)
+            if (fs_[i] == f) return cg[i];
+          return 0.0;
+        };
+      } else if (!m_theory_csv.empty()) {
+        run.input(m_theory_csv);
+        theory = wave::theory_from_csv(m_theory_csv);
+      }
+      double lo = points.empty() ? 0 : points.front().f_Hz, hi = points.empty() ? 0 : points.back().f_Hz;
+      if (!band_text.empty()) {
+        const auto comma = band_text.find(',');
+        if (comma == std::string::npos) throw InputError("--band-kHz must read LO,HI");
+        lo = std::stod(band_text.substr(0, comma)) * units::kHz;
+        hi = std::stod(band_text.substr(comma + 1)) * units::kHz;
+      }
+      nlohmann::ordered_json j;
+      j["points"] = points.size();
+      std::optional<wave::ResidualSummary> rss;
+      if (theory) {
+        rss = wave::residual_sum_of_squares(points, theory, lo, hi);
+        j["band_kHz"] = {lo / units::kHz, hi / units::kHz};
+        j["points_in_band"] = rss->points;
+        j["rss_m2_s2"] = rss->rss_m2_s2;
+        j["rms_m_s"] = rss->rms_m_s;
+        j["max_abs_residual_m_s"] = rss->max_abs_m_s;
+        run.metric("RSS", rss->rss_m2_s2, "m^2/s^2");
+      }
+      std::vector<std::vector<std::string>> rows;
+      auto list = nlohmann::ordered_json::array();
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const auto& p = points[i];
+        const bool in = rss && rss->in_band[i];
+        const std::string th = in ? format_exact(rss->theory_m_s[i]) : "";
+        const std::string res = in ? format_exact(p.c_group_m_s - rss->theory_m_s[i]) : "";
+        rows.push_back({p.run, format_number(p.f_Hz / units::kHz), p.method, format_exact(p.t1_s / units::us),
+                        format_exact(p.t2_s / units::us), format_exact(p.distance_m / units::mm),
+                        format_exact(p.c_group_m_s), th, res, in ? "1" : "0"});
+        list.push_back({{"f_kHz", p.f_Hz / units::kHz}, {"c_group_m_s", p.c_group_m_s}});
+      }
+      j["measured"] = list;
+      if (!m_csv.empty())
+        run.write_text(m_csv, io::to_csv({"run", "f_kHz", "method", "t1_us", "t2_us", "distance_mm", "c_group_m_s",
+                                          "theory_c_group_m_s", "residual_m_s", "in_band"},
+                                         rows));
+      run.emit_json(j, m_out);
+    } else if (theory->parsed()) {
       if (!plot.empty()) wave::require_plot_extension(plot);
       const wave::IsotropicMaterial material{require_positive("--E-GPa", E_GPa, "GPa") * units::GPa, nu, rho};
       wave::validate(material);

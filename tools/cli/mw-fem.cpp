@@ -157,6 +157,8 @@ int main(int argc, char** argv) {
     attrs["mesh_mm"] = format_number(h / units::mm);
     attrs["dt_s"] = format_exact(stepping.dt_s);
     attrs["alpha_damping_per_s"] = format_number(alpha);
+    attrs["burst_frequency_Hz"] = format_exact(burst.centre_frequency_hz());
+    attrs["burst_cycles"] = format_exact(burst.cycles());
     io::write_signal_file(run.output(signals_path), result.signals, attrs);
     if (want_st) wave::write_spacetime_file(run.output(spacetime_path), result.spacetime, st, stepping.sample_dt_s, "z", attrs);
 

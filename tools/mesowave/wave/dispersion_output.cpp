@@ -1,6 +1,7 @@
 #include "mesowave/wave/dispersion_output.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <map>
 #include <numbers>
 
@@ -9,6 +10,7 @@
 #include "mesowave/core/units.hpp"
 #include "mesowave/io/csv.hpp"
 #include "mesowave/io/hdf5.hpp"
+#include "mesowave/wave/group_velocity.hpp"
 
 namespace mesowave::wave {
 
@@ -160,6 +162,62 @@ PlotSpec group_velocity_plot(const std::string& title, const std::vector<Dispers
     spec.series.push_back(std::move(s));
   }
   return spec;
+}
+
+std::optional<std::string> signal_file_attribute(const std::filesystem::path& path, const std::string& name) {
+  auto file = io::h5::open_file(path);
+  if (!io::h5::has_attribute(file.id(), name)) return std::nullopt;
+  return io::h5::string_attribute(file.id(), name);
+}
+
+SpaceTimeRecord read_spacetime_file(const std::filesystem::path& path) {
+  namespace h5 = io::h5;
+  auto file = h5::open_file(path);
+  auto g = h5::open_group(file.id(), "spacetime", path.string());
+  SpaceTimeRecord r;
+  std::vector<hsize_t> shape;
+  r.samples = h5::read_doubles(g.id(), "samples", &shape);
+  if (shape.size() != 2) throw InputError(path.string() + ": /spacetime/samples must be 2-D (time x position)");
+  r.times = shape[0];
+  r.positions = shape[1];
+  r.dt_s = h5::double_attribute(g.id(), "dt_s");
+  const auto x = h5::read_doubles(g.id(), "position_m");
+  if (x.size() != r.positions || x.size() < 2) throw InputError(path.string() + ": position_m does not match the samples");
+  r.dx_m = (x.back() - x.front()) / double(x.size() - 1);
+  for (std::size_t j = 1; j < x.size(); ++j)
+    if (std::abs(x[j] - x[j - 1] - r.dx_m) > 1e-6 * r.dx_m)
+      throw InputError(path.string() + ": the space-time positions are not uniformly spaced");
+  return r;
+}
+
+std::vector<double> l01_group_velocity(const PochhammerChree& pc, const std::vector<double>& f_Hz) {
+  if (f_Hz.empty()) return {};
+  TraceOptions opt;
+  opt.f_max_Hz = *std::max_element(f_Hz.begin(), f_Hz.end()) * 1.01;
+  const auto trace = trace_longitudinal_modes(pc, opt);
+  std::vector<double> out;
+  for (double f : f_Hz) {
+    double c = 0;
+    for (const auto& p : sample_at_frequencies(pc, trace, {f}))
+      if (p.mode == 1) c = p.c_group_m_s;
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::function<double(double)> theory_from_csv(const std::filesystem::path& csv) {
+  const auto curve = read_velocity_curve(csv, "theory");
+  return [curve, csv](double f) {
+    const auto& x = curve.f_Hz;
+    if (f < x.front() * (1 - 1e-12) || f > x.back() * (1 + 1e-12))
+      throw InputError(format_quantity(f / units::kHz, "kHz") + " lies outside the theory table " + csv.string());
+    const auto it = std::lower_bound(x.begin(), x.end(), f);
+    if (it == x.begin()) return curve.c_group_m_s.front();
+    const std::size_t j = std::size_t(it - x.begin());
+    if (j >= x.size()) return curve.c_group_m_s.back();
+    const double w = (f - x[j - 1]) / (x[j] - x[j - 1]);
+    return (1 - w) * curve.c_group_m_s[j - 1] + w * curve.c_group_m_s[j];
+  };
 }
 
 nlohmann::ordered_json theory_summary(const PochhammerChree& pc, const DispersionTrace& trace) {
