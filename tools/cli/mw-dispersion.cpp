@@ -66,6 +66,11 @@ int main(int argc, char** argv) {
   theory->add_option("--overlay", overlays,
                      "LABEL=FILE.csv: add a curve (columns f_kHz, c_group_m_s; e.g. a lattice or measure table) to "
                      "the plot; repeatable");
+  std::string plot_f_range, plot_c_range, plot_key = "outside right top";
+  theory->add_option("--plot-f-range-kHz", plot_f_range, "LO,HI: frequency axis of the plot [kHz]");
+  theory->add_option("--plot-c-range-m-s", plot_c_range, "LO,HI: velocity axis of the plot [m/s]");
+  theory->add_option("--plot-key", plot_key, "Where the legend goes (gnuplot words, spaces or commas: inside,bottom,left)")
+      ->capture_default_str();
   app::add_out_option(*theory, out, "the JSON summary");
 
   // lattice
@@ -320,7 +325,7 @@ int main(int argc, char** argv) {
       if (max_modes < 0) throw InputError("--modes (" + std::to_string(max_modes) + ") must not be negative");
       std::vector<wave::VelocityCurve> curves;
       for (const auto& o : overlays) {
-        const auto eq = o.find('=');
+        const auto eq = o.rfind('=');  // the label may hold '=' itself
         if (eq == std::string::npos || eq == 0)
           throw InputError("--overlay " + o + " must read LABEL=FILE.csv");
         run.input(o.substr(eq + 1));
@@ -334,11 +339,25 @@ int main(int argc, char** argv) {
 
       if (!csv.empty()) run.write_text(csv, wave::theory_csv(points, pc.radius_m()));
       if (!h5.empty()) wave::write_dispersion_h5(run.output(h5), pc, points);
-      if (!plot.empty())
-        wave::render_plot(wave::group_velocity_plot("Pochhammer-Chree, radius " + format_number(radius_mm) +
-                                                        " mm, nu = " + format_number(nu),
-                                                    points, {}, curves),
-                          plot, run.output(plot));
+      if (!plot.empty()) {
+        auto spec = wave::group_velocity_plot("Pochhammer-Chree, radius " + format_number(radius_mm) + " mm, nu = " +
+                                                  format_number(nu),
+                                              points, {}, curves);
+        const auto range = [](const std::string& text, const char* what) -> std::optional<std::pair<double, double>> {
+          if (text.empty()) return std::nullopt;
+          const auto comma = text.find(',');
+          if (comma == std::string::npos) throw InputError(std::string(what) + " must read LO,HI");
+          return std::make_pair(std::stod(text.substr(0, comma)), std::stod(text.substr(comma + 1)));
+        };
+        spec.x_range = range(plot_f_range, "--plot-f-range-kHz");
+        spec.y_range = range(plot_c_range, "--plot-c-range-m-s");
+        for (char c : plot_key)
+          if (!std::isalnum(static_cast<unsigned char>(c)) && c != ' ' && c != ',' && c != '.')
+            throw InputError("--plot-key '" + plot_key + "' may hold only words and numbers");
+        spec.key = plot_key;
+        std::replace(spec.key.begin(), spec.key.end(), ',', ' ');  // "inside,bottom,left" reads as words
+        wave::render_plot(spec, plot, run.output(plot));
+      }
       auto summary = wave::theory_summary(pc, trace);
       summary["rows"] = points.size();
       for (const auto& m : summary["modes"])

@@ -151,10 +151,14 @@ PlotSpec group_velocity_plot(const std::string& title, const std::vector<Dispers
     }
     spec.series.push_back(std::move(s));
   }
-  for (const auto& o : overlays) {
+  static const char* overlay_colours[] = {"#ff7f0e", "#bcbd22", "#17becf", "#e377c2", "#7f7f7f", "#2ca02c", "#8c564b"};
+  for (std::size_t i = 0; i < overlays.size(); ++i) {
+    const auto& o = overlays[i];
     PlotSeries s;
     s.label = o.label;
-    s.style = "linespoints lw 1.5 pt 7 ps 0.8";
+    // Dense tables (a lattice curve) as lines, sparse ones (measurements) as points.
+    s.style = std::string(o.f_Hz.size() > 40 ? "lines lw 2.5 dt 2" : "linespoints lw 1.5 pt 7 ps 1") + " lc rgb '" +
+              overlay_colours[i % 7] + "'";
     for (std::size_t j = 0; j < o.f_Hz.size(); ++j) {
       s.x.push_back(o.f_Hz[j] / units::kHz);
       s.y.push_back(o.c_group_m_s[j]);

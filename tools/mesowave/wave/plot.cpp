@@ -41,7 +41,7 @@ void render_plot(const PlotSpec& spec, const std::filesystem::path& final_name,
     s << "set terminal svg size " << spec.width_px << "," << spec.height_px << " font 'Sans,11' background '#ffffff'\n";
   s << "set output " << quoted(write_to.string()) << "\n";
   s << "set title " << quoted(spec.title) << "\nset xlabel " << quoted(spec.x_label) << "\nset ylabel "
-    << quoted(spec.y_label) << "\nset grid\nset key outside right top\nset datafile missing 'NaN'\n";
+    << quoted(spec.y_label) << "\nset grid\nset key " << spec.key << " box opaque\nset datafile missing 'NaN'\n";
   if (spec.x_range) s << "set xrange [" << spec.x_range->first << ":" << spec.x_range->second << "]\n";
   if (spec.y_range) s << "set yrange [" << spec.y_range->first << ":" << spec.y_range->second << "]\n";
   for (std::size_t i = 0; i < spec.series.size(); ++i) {

@@ -20,6 +20,7 @@ struct PlotSpec {
   std::optional<std::pair<double, double>> x_range, y_range;
   std::vector<PlotSeries> series;
   int width_px = 1000, height_px = 650;
+  std::string key = "outside right top";  ///< gnuplot key position ("inside bottom left", ...)
 };
 
 /// Renders `spec` to `write_to` (a staged temporary) in the format named by
