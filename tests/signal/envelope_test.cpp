@@ -34,7 +34,8 @@ HilbertOptions padded(Padding::Mode mode, Detrend d = Detrend::none) { return {d
 }  // namespace
 
 TEST(Envelope, AnalyticSignalMatchesScipyDefinitionForEvenAndOddLengths) {
-  for (std::size_t n : {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 29, 64, 101}) {
+  // 257 (prime), 262 = 2 x 131 and 289 = 17^2 take the convolution path (fft.hpp: slow_fft_length).
+  for (std::size_t n : {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 29, 64, 101, 256, 257, 262, 289}) {
     const auto x = test::uniform_values(n, 1000 + n);
     const auto z = analytic_signal(x);
     const auto ref = test::scipy_hilbert_definition(x);

@@ -98,6 +98,17 @@ TEST(Aic, SineOnsetAtTenDecibels) {
   }
 }
 
+TEST(Aic, WithoutAWindowEndItStopsAtThePeak) {
+  // A noiseless simulated record: zeros, a burst, zeros. Over the whole
+  // record the burst's end (followed by more zeros than precede it) would be
+  // the better split; the default window ends at the largest |x|.
+  const HannBurst burst(100e3, 5, 1.0, 20e-6);
+  const auto s = record(burst.sample(dt, 2000));
+  const auto p = aic_pick(s);
+  EXPECT_EQ(p.index, 201u);  // the first nonzero sample (the burst is exactly 0 at 20 us)
+  EXPECT_GT(aic_pick(s, {TimeWindow{0.0, 199.9e-6}}).time_s, 69e-6);  // the whole record: its end
+}
+
 TEST(Aic, WindowTooShortOrOutsideTheRecord) {
   const auto s = sine_onset(100, 50, 100e3, 0.0, 1);
   EXPECT_THROW(aic_pick(s, {TimeWindow{1e-6, 1.2e-6}}), InputError);  // 3 samples

@@ -211,6 +211,7 @@ std::string string_attribute(hid_t object, const std::string& name) {
   if (H5Tis_variable_str(type.id()) > 0) {
     Handle mem(H5Tcopy(H5T_C_S1));
     H5Tset_size(mem.id(), H5T_VARIABLE);
+    H5Tset_cset(mem.id(), H5Tget_cset(type.id()));  // h5py writes UTF-8; HDF5 converts no character sets
     char* text = nullptr;
     check_status(H5Aread(attr.id(), mem.id(), &text), "read attribute " + name);
     std::string value = text ? text : "";

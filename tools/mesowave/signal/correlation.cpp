@@ -8,25 +8,22 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/signal/internal.hpp"
 #include "mesowave/signal/validate.hpp"
 
 namespace mesowave::signal {
 namespace {
 
 
-// Sum of squared deviations from the mean, by two passes (the one-pass
-// formula cancels catastrophically for a signal riding on an offset).
-double centred(std::span<const double> x, std::vector<double>& d) {
-  double mean = 0;
-  for (double v : x) mean += v;
-  mean /= double(x.size());
-  d.resize(x.size());
-  double ss = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    d[i] = x[i] - mean;
-    ss += d[i] * d[i];
-  }
-  return ss;
+// Sums in four interleaved partial sums, combined in a fixed order: the
+// loops vectorise, and the result is the same whatever the thread count.
+double mean_of(std::span<const double> x) {
+  double s[4] = {0, 0, 0, 0};
+  const std::size_t n = x.size(), n4 = n - n % 4;
+  for (std::size_t i = 0; i < n4; i += 4)
+    for (int k = 0; k < 4; ++k) s[k] += x[i + std::size_t(k)];
+  for (std::size_t i = n4; i < n; ++i) s[0] += x[i];
+  return ((s[0] + s[1]) + (s[2] + s[3])) / double(n);
 }
 
 // A record is constant when its spread is below the rounding of its values;
@@ -37,15 +34,37 @@ bool constant(std::span<const double> x, double ss) {
   return !(std::sqrt(ss / double(x.size())) > 1e-13 * peak);
 }
 
-std::span<const double> slice(const std::vector<double>& x, std::size_t first, std::size_t count) {
-  return std::span<const double>(x).subspan(first, count);
-}
-
 std::size_t offset_in(const TimeBase& outer, const TimeBase& inner) {
   return std::size_t(std::llround((inner.t0_s - outer.t0_s) / outer.dt_s));
 }
 
 }  // namespace
+
+double internal::pearson_unchecked(std::span<const double> a, std::span<const double> b, std::string_view what) {
+  // Two passes (means, then centred sums): the one-pass formula cancels
+  // catastrophically for a signal riding on an offset.
+  const double ma = mean_of(a), mb = mean_of(b);
+  double saa[4] = {0, 0, 0, 0}, sbb[4] = {0, 0, 0, 0}, sab[4] = {0, 0, 0, 0};
+  const std::size_t n = a.size(), n4 = n - n % 4;
+  for (std::size_t i = 0; i < n4; i += 4)
+    for (std::size_t k = 0; k < 4; ++k) {
+      const double da = a[i + k] - ma, db = b[i + k] - mb;
+      saa[k] += da * da;
+      sbb[k] += db * db;
+      sab[k] += da * db;
+    }
+  for (std::size_t i = n4; i < n; ++i) {
+    const double da = a[i] - ma, db = b[i] - mb;
+    saa[0] += da * da;
+    sbb[0] += db * db;
+    sab[0] += da * db;
+  }
+  auto total = [](const double* v) { return (v[0] + v[1]) + (v[2] + v[3]); };
+  const std::string w(what);
+  if (constant(a, total(saa))) throw InputError(w + ": the first record has zero variance (constant), r is undefined");
+  if (constant(b, total(sbb))) throw InputError(w + ": the second record has zero variance (constant), r is undefined");
+  return std::clamp(total(sab) / std::sqrt(total(saa) * total(sbb)), -1.0, 1.0);  // |r| <= 1 up to rounding
+}
 
 double pearson(std::span<const double> a, std::span<const double> b, std::string_view what) {
   const std::string w(what);
@@ -55,13 +74,7 @@ double pearson(std::span<const double> a, std::span<const double> b, std::string
                      " samples)");
   require_samples(a, w + " (first)");
   require_samples(b, w + " (second)");
-  std::vector<double> da, db;
-  const double saa = centred(a, da), sbb = centred(b, db);
-  if (constant(a, saa)) throw InputError(w + ": the first record has zero variance (constant), r is undefined");
-  if (constant(b, sbb)) throw InputError(w + ": the second record has zero variance (constant), r is undefined");
-  double sab = 0;
-  for (std::size_t i = 0; i < da.size(); ++i) sab += da[i] * db[i];
-  return std::clamp(sab / std::sqrt(saa * sbb), -1.0, 1.0);  // |r| <= 1 up to rounding
+  return internal::pearson_unchecked(a, b, what);
 }
 
 SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationOptions& options) {
@@ -71,11 +84,11 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
   const TimeBase ta = time_base(a), tb = time_base(b);
 
   TimeBase common = ta;
-  std::vector<double> xa, xb;
+  std::span<const double> xa = a.samples, xb = b.samples;
+  std::vector<double> b_resampled;
   bool resampled = false;
   if (same_time_base(ta, tb)) {
-    xa = a.samples;
-    xb = b.samples;
+    // compared as they are
   } else if (!options.resampling) {
     const bool same_sampling = std::abs(ta.dt_s - tb.dt_s) <= 1e-9 * ta.dt_s &&
                                std::abs(ta.t0_s - tb.t0_s) <= 1e-6 * ta.dt_s;
@@ -87,14 +100,17 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
   } else {
     common = restrict_time_base(ta, std::max(ta.t0_s, tb.t0_s), std::min(ta.end_s(), tb.end_s()),
                                 what + ": the records do not overlap in time");
-    const std::size_t first = offset_in(ta, common);
-    xa.assign(a.samples.begin() + long(first), a.samples.begin() + long(first + common.count));
-    xb = resample(b, common, *options.resampling).samples;
+    xa = xa.subspan(offset_in(ta, common), common.count);
+    b_resampled = resample(b, common, *options.resampling).samples;
+    xb = b_resampled;
     resampled = true;
   }
 
-  const auto ea = envelope(std::span<const double>(xa), options.envelope);
-  const auto eb = envelope(std::span<const double>(xb), options.envelope);
+  // Envelopes in per-thread scratch (slots 10 and 11, see ScratchBuffer).
+  ScratchBuffer<double> env_a(10, xa.size()), env_b(11, xb.size());
+  const std::span<const double> ea(env_a.data(), xa.size()), eb(env_b.data(), xb.size());
+  internal::envelope_into_unchecked(xa, std::span<double>(env_a.data(), xa.size()), options.envelope);
+  internal::envelope_into_unchecked(xb, std::span<double>(env_b.data(), xb.size()), options.envelope);
 
   TimeBase window = common;
   if (options.begin_s || options.end_s)
@@ -107,8 +123,8 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
   c.compared = window;
   c.envelope_samples = common.count;
   c.resampled = resampled;
-  c.pcc_signal = pearson(slice(xa, first, count), slice(xb, first, count), what);
-  c.pcc_envelope = pearson(slice(ea, first, count), slice(eb, first, count), what + " (envelopes)");
+  c.pcc_signal = internal::pearson_unchecked(xa.subspan(first, count), xb.subspan(first, count), what);
+  c.pcc_envelope = internal::pearson_unchecked(ea.subspan(first, count), eb.subspan(first, count), what + " (envelopes)");
   return c;
 }
 

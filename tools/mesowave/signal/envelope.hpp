@@ -40,6 +40,10 @@ std::vector<double> hilbert_transform(std::span<const double> x, const HilbertOp
 /// |z|: the envelope (instantaneous amplitude).
 std::vector<double> envelope(std::span<const double> x, const HilbertOptions& options = {});
 
+/// The same into `out` (out.size() == x.size()), allocating nothing in steady
+/// state: for loops over many records.
+void envelope_into(std::span<const double> x, std::span<double> out, const HilbertOptions& options = {});
+
 /// The envelope of `s` as a signal on the same time base: same name, unit and
 /// component, quantity "<quantity> envelope".
 Signal envelope(const Signal& s, const HilbertOptions& options = {});

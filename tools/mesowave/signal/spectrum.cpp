@@ -34,36 +34,42 @@ std::string Spectrum::unit(std::string_view signal_unit) const {
   return u;
 }
 
-Spectrum amplitude_spectrum(std::span<const double> x, double dt_s, const SpectrumOptions& options) {
+void amplitude_spectrum(std::span<const double> x, double dt_s, const SpectrumOptions& options, Spectrum& s) {
   require_positive("sampling interval dt", dt_s, "s");
   require_samples(x, "record");
   const std::size_t n = x.size();
   const std::size_t m = options.padding.fft_length(n);
-  FftBuffer<double> record(m);
+  ScratchBuffer<double> record(8, m);  // scratch slots 8 and 9 (see ScratchBuffer)
   std::copy(x.begin(), x.end(), record.begin());
   detrend(std::span<double>(record.data(), n), options.detrend);
-  std::fill(record.begin() + n, record.end(), 0.0);
-  FftBuffer<Complex> bins(m / 2 + 1);
-  rfft_into(record, bins);
+  std::fill(record.begin() + n, record.begin() + m, 0.0);
+  const std::size_t nbins = m / 2 + 1;
+  ScratchBuffer<Complex> bins(9, nbins);
+  rfft_unscaled(record.data(), bins.data(), m);
 
-  Spectrum s;
   s.samples = n;
   s.fft_length = m;
   s.scaling = options.scaling;
   s.df_hz = 1.0 / (double(m) * dt_s);
-  s.frequency_hz.resize(bins.size());
-  s.amplitude.resize(bins.size());
+  s.frequency_hz.resize(nbins);
+  s.amplitude.resize(nbins);
   const double scale = options.scaling == SpectrumScaling::amplitude ? 2.0 / double(n)
                        : options.scaling == SpectrumScaling::density ? dt_s
                                                                       : 1.0;
-  for (std::size_t k = 0; k < bins.size(); ++k) {
+  for (std::size_t k = 0; k < nbins; ++k) {
+    const Complex X = bins[k];
     s.frequency_hz[k] = double(k) * s.df_hz;
-    s.amplitude[k] = std::abs(bins[k]) * scale;
+    s.amplitude[k] = std::sqrt(X.real() * X.real() + X.imag() * X.imag()) * scale;
   }
   if (options.scaling == SpectrumScaling::amplitude) {
     s.amplitude[0] *= 0.5;  // DC and Nyquist have no mirror image to fold in
     if (m % 2 == 0 && m > 1) s.amplitude[m / 2] *= 0.5;
   }
+}
+
+Spectrum amplitude_spectrum(std::span<const double> x, double dt_s, const SpectrumOptions& options) {
+  Spectrum s;
+  amplitude_spectrum(x, dt_s, options, s);
   return s;
 }
 

@@ -49,6 +49,9 @@ struct Spectrum {
 Spectrum amplitude_spectrum(std::span<const double> x, double dt_s, const SpectrumOptions& options = {});
 Spectrum amplitude_spectrum(const Signal& s, const SpectrumOptions& options = {});
 
+/// The same into `out`, reusing its storage: for loops over many records.
+void amplitude_spectrum(std::span<const double> x, double dt_s, const SpectrumOptions& options, Spectrum& out);
+
 /// Frequency of the largest amplitude above `min_frequency_hz`, refined by a
 /// parabola through the peak bin and its neighbours (on the log amplitude,
 /// exact for a Gaussian peak); the bin's own frequency at the ends.

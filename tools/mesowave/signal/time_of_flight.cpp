@@ -66,7 +66,15 @@ std::vector<double> aic_curve(std::span<const double> x) {
 
 Pick aic_pick(const Signal& s, const AicOptions& options) {
   require_valid(s, 4);
-  const auto [first, last] = window_range(s, options.search, "AIC search");
+  auto [first, last] = window_range(s, options.search, "AIC search");
+  if (!options.search.end_s) {
+    std::vector<double> rest(s.samples.begin() + long(first), s.samples.end());
+    detrend(rest, options.detrend);
+    const auto peak = std::size_t(std::max_element(rest.begin(), rest.end(), [](double a, double b) {
+                                    return std::abs(a) < std::abs(b);
+                                  }) - rest.begin());
+    last = std::min(s.size() - 1, first + std::max<std::size_t>(peak, 3));
+  }
   if (last - first + 1 < 4)
     throw InputError("signal " + s.name + ": the AIC search window holds " + std::to_string(last - first + 1) +
                      " samples, needs at least 4");

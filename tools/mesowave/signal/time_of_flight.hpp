@@ -56,7 +56,10 @@ struct ThresholdOptions {
 };
 
 struct AicOptions {
-  TimeWindow search;  ///< the window AIC splits; default: the whole record (aim it at one onset)
+  /// The window AIC splits. It must hold one onset: without an end, it ends
+  /// at the largest |x| after its start (the usual practice for AE and UPV
+  /// picks), so that the end of a packet is not taken for a second split.
+  TimeWindow search;
   /// Applied to the window first. A drift inflates the variance of long
   /// segments and drags the split away from the onset; an offset changes nothing.
   Detrend detrend = Detrend::none;
