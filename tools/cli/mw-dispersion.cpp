@@ -16,6 +16,7 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/units.hpp"
 #include "mesowave/io/csv.hpp"
+#include "mesowave/io/signal_csv.hpp"
 #include "mesowave/io/signal_file.hpp"
 #include "mesowave/wave/bar_echo.hpp"
 #include "mesowave/wave/dispersion_output.hpp"
@@ -132,7 +133,10 @@ int main(int argc, char** argv) {
   fs::path b_record, b_csv, b_out;
   double b_path_mm = 0, b_path_unc_mm = 0;
   std::optional<double> b_E, b_nu, b_rho, b_radius;
-  bar->add_option("--record", b_record, "CSV table (first column time in s) or mesowave signal file")->required();
+  bar->add_option("--record", b_record,
+                  "Signal file (HDF5 or mesowave CSV) or a plain CSV table whose first column is time in s "
+                  "(printed with few digits is fine: the time base is rebuilt)")
+      ->required();
   bar->add_option("--column", b_column, "Column (CSV; the header up to '/' is enough) or signal name")->required();
   bar->add_option("--path-mm", b_path_mm, "Round-trip path between the two passes [mm] (2 x gauge to bar end)")
       ->required();
@@ -148,11 +152,7 @@ int main(int argc, char** argv) {
   return tool.run(argc, argv, [&](app::Run& run) {
     if (bar->parsed()) {
       run.input(b_record);
-      const auto record = b_record.extension() == ".csv" ? wave::signal_from_csv(b_record.string(), b_column) : [&] {
-        for (const auto& s : io::read_signal_file(b_record))
-          if (s.name == b_column) return s;
-        throw InputError(b_record.string() + " has no signal " + b_column);
-      }();
+      const auto record = wave::read_record(b_record, b_column);
       wave::BarEchoOptions bo;
       bo.path_m = require_positive("--path-mm", b_path_mm, "mm") * units::mm;
       std::optional<wave::PochhammerChree> pc;
@@ -251,7 +251,7 @@ int main(int argc, char** argv) {
             if (!a) throw InputError(file.string() + " does not record its burst frequency: give FREQ_kHz=" + r);
             f = std::stod(*a);
           }
-          auto p = wave::measure_run(io::read_signal_file(file), f, req);
+          auto p = wave::measure_run(io::read_signals(file), f, req);
           p.run = m_label.empty() ? file.filename().string() : m_label;
           points.push_back(p);
         }

@@ -8,6 +8,7 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/units.hpp"
 #include "mesowave/io/csv.hpp"
+#include "mesowave/io/signal_csv.hpp"
 #include "mesowave/signal/spectrum.hpp"
 #include "mesowave/signal/time_of_flight.hpp"
 #include "mesowave/signal/envelope.hpp"
@@ -120,6 +121,20 @@ signal::Signal propagate_l01(const signal::Signal& pulse, const PochhammerChree&
   signal::Signal out = pulse;
   out.samples = signal::irfft(X, n);
   return out;
+}
+
+signal::Signal read_record(const std::filesystem::path& path, const std::string& name) {
+  bool mesowave_layout = path.extension() != ".csv";
+  if (!mesowave_layout) {
+    // The signal toolkit's CSV names its time column t_s, t_ms, ... or "t [us]".
+    const auto t = io::read_csv(path);
+    const std::string first = t.header.empty() ? "" : t.header.front();
+    mesowave_layout = first.rfind("t_", 0) == 0 || first.rfind("t [", 0) == 0 || first.rfind("time [", 0) == 0;
+  }
+  if (!mesowave_layout) return signal_from_csv(path.string(), name);
+  for (const auto& s : io::read_signals(path))
+    if (s.name == name) return s;
+  throw InputError(path.string() + " has no signal " + name);
 }
 
 BarEchoResult analyse_bar_echo(const signal::Signal& s, const BarEchoOptions& opt) {

@@ -14,6 +14,7 @@
 // so the envelope cannot delimit pulses here.
 // and the record's frequency content (energy percentiles of the first pulse's
 // spectrum) says where on the Pochhammer-Chree curve the measurement sits.
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,11 @@ signal::Signal signal_from_csv(const std::string& path, const std::string& colum
 /// enough that nothing wraps around: the same t0 and dt, more samples.
 signal::Signal propagate_l01(const signal::Signal& pulse, const PochhammerChree& pc, double distance_m,
                              double f_max_Hz);
+
+/// The signal `name` of a record file: a mesowave signal file (HDF5, or CSV whose
+/// first column is t_s / t_ms / t_us / t_ns, read by io::read_signals), or any
+/// other CSV table through signal_from_csv.
+signal::Signal read_record(const std::filesystem::path& path, const std::string& name);
 
 /// InputError when the record does not hold two pulses.
 BarEchoResult analyse_bar_echo(const signal::Signal& record, const BarEchoOptions& options);
