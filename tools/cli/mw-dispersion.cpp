@@ -147,6 +147,9 @@ int main(int argc, char** argv) {
   bar->add_option("--density-kg-m3", b_rho, "Bar density [kg/m3]");
   bar->add_option("--radius-mm", b_radius, "Bar radius [mm] (for theory)");
   bar->add_option("--csv", b_csv, "Table of the picks: method, t1_us, t2_us, delay_us, c_m_s");
+  fs::path b_signals;
+  bar->add_option("--signals", b_signals,
+                  "Write the record and the theory's echo (needs the material) as a signal file (.h5 or .csv)");
   app::add_out_option(*bar, b_out, "the JSON result");
 
   return tool.run(argc, argv, [&](app::Run& run) {
@@ -223,6 +226,10 @@ int main(int argc, char** argv) {
       }
       run.metric("bar velocity", primary, "m/s");
       if (!b_csv.empty()) run.write_text(b_csv, io::to_csv({"method", "t1_us", "t2_us", "delay_us", "c_m_s"}, rows));
+      if (!b_signals.empty()) {
+        if (!pc) throw InputError("--signals needs the bar's --E-GPa, --nu, --density-kg-m3 and --radius-mm");
+        io::write_signals(run.output(b_signals), io::signal_format_of(b_signals), {record, r.theory_echo});
+      }
       run.emit_json(j, b_out);
     } else if (measure->parsed()) {
       std::vector<wave::GroupVelocityPoint> points;

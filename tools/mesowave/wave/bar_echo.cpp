@@ -246,6 +246,11 @@ BarEchoResult analyse_bar_echo(const signal::Signal& s, const BarEchoOptions& op
       lo = std::min(lo, (t2 - t1) / measured);
       hi = std::max(hi, (t2 - t1) / measured);
     }
+    r.theory_echo = s;
+    r.theory_echo.name = "theory echo";
+    const auto offset = std::size_t(std::llround((first_t0 - s.t0_s) / s.dt_s));
+    for (std::size_t i = 0; i < s.size(); ++i)
+      r.theory_echo.samples[i] = i >= offset && i - offset < echo.size() ? echo.samples[i - offset] : 0.0;
     const double fit = sum_theory / sum_measured;
     r.fitted_c0_m_s = opt.theory->speeds().c0 * fit;
     r.fitted_c0_relative_spread = 0.5 * (hi - lo) / fit;

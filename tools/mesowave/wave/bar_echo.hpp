@@ -48,6 +48,8 @@ struct BarEchoResult {
   /// edge levels (delays scale as 1 / c0 at fixed nu and radius to well below 0.1 %
   /// here), and half the spread of the per-level ratios (relative).
   double fitted_c0_m_s = 0, fitted_c0_relative_spread = 0;
+  /// With a theory: the theory's echo on the record's time base (name "theory echo").
+  signal::Signal theory_echo;
 };
 
 /// A column of a CSV table as a signal: `column` names the column (or the part of its
