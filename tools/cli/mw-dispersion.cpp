@@ -5,11 +5,15 @@
 //       --f-max-kHz 500 --csv pc.csv --plot pc.png
 //   mw-dispersion lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 6044.37
 //       --contact-modulus-GPa 660 --spacing-R 1.03 --csv chain103.csv
+//   mw-dispersion measure --run fem50.h5 ... --method echo --distance-mm 2000 --E-GPa 208.72 ...
+//   mw-dispersion bar-echo --record shpb.csv --column incident_bar_signal --path-mm 2036 ...
 //
 // theory: longitudinal modes L(0,n) of a solid rod from the Pochhammer-Chree
 // equation (phase and group velocity, backward-wave branches with negative
 // group velocity). lattice: the exact dispersion of the DEM chain (masses on
-// springs), omega = 2 sqrt(K/m) |sin(k d/2)|.
+// springs), omega = 2 sqrt(K/m) |sin(k d/2)|. measure: group velocity of burst
+// runs from Hilbert-envelope arrivals (or a space-time 2D FFT) and the RSS
+// against theory (rod Table 2). bar-echo: bar velocity from a pulse-echo record.
 #include <optional>
 
 #include "mesowave/app/tool.hpp"
@@ -33,12 +37,21 @@ int main(int argc, char** argv) {
       "  a^2 = w^2/cP^2 - k^2, b^2 = w^2/cS^2 - k^2 (r the radius; modified Bessel functions where a^2 or\n"
       "  b^2 < 0), traced in wavenumber from each k = 0 cut-off; group velocity c_g = dw/dk = -F_k/F_w.\n"
       "  Rows per mode L(0,n) and branch; a backward-wave branch (c_g < 0) is reported beside the forward one.\n"
-      "lattice: the DEM chain of spheres on bonds, w = 2 sqrt(K/m) |sin(k d/2)|, c_g = d sqrt(K/m) cos(k d/2).\n\n"
+      "lattice: the DEM chain of spheres on bonds, w = 2 sqrt(K/m) |sin(k d/2)|, c_g = d sqrt(K/m) cos(k d/2).\n"
+      "measure: group velocity at each burst centre frequency from Hilbert-envelope peaks (echo: two packets at\n"
+      "  one sensor 2 L apart, the rod paper's peak to peak; two-stations; source), or from the ridge of the 2D FFT of\n"
+      "  a space-time record; RSS = sum (c_measured - c_theory)^2 over a band (rod Table 2).\n"
+      "bar-echo: bar velocity from a long pulse and its echo at one gauge (Hopkinson bar): onset and edge picks, and\n"
+      "  the c0 for which the Pochhammer-Chree-propagated pulse's edges meet the echo's.\n\n"
       "  mw-dispersion theory --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1 --csv pc.csv --plot "
       "pc.png\n"
       "  mw-dispersion lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 6044.37 --contact-modulus-GPa 660 "
       "--spacing-R 1.03 --csv chain.csv\n"
-      "  mw-dispersion theory ... --overlay 1.03R=chain.csv --plot figure9.png");
+      "  mw-dispersion theory ... --overlay 1.03R=chain.csv --plot figure9.png\n"
+      "  mw-dispersion measure --run fem50.h5 --run fem100.h5 --method echo --distance-mm 2000 --E-GPa 208.72 --nu 0.3 "
+      "--density-kg-m3 7850.66 --radius-mm 5.1 --band-kHz 50,150\n"
+      "  mw-dispersion bar-echo --record shpb.csv --column incident_bar_signal --path-mm 2036 --E-GPa 210 --nu 0.3 "
+      "--density-kg-m3 7800 --radius-mm 10");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
 
