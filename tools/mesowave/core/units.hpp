@@ -8,6 +8,7 @@ namespace mesowave::units {
 inline constexpr double m = 1.0;
 inline constexpr double mm = 1e-3;
 inline constexpr double um = 1e-6;
+inline constexpr double nm = 1e-9;
 
 inline constexpr double s = 1.0;
 inline constexpr double ms = 1e-3;

@@ -50,4 +50,38 @@ Packing read_packing_file(const std::filesystem::path& path) {
   return p;
 }
 
+// ---- /origin: how the packing was made (additive, format_version 1) --------
+
+void write_packing_file(const std::filesystem::path& path, const Packing& p, const PackingOrigin& origin) {
+  write_packing_file(path, p);
+  if (origin.empty()) return;
+  h5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT));
+  if (!file) throw std::runtime_error("HDF5: cannot reopen " + path.string() + " to add /origin");
+  auto group = h5::create_group(file.id(), "origin");
+  for (const auto& [name, value] : origin.text) h5::set_attribute(group.id(), name, value);
+  for (const auto& [name, value] : origin.numbers) h5::set_attribute(group.id(), name, value);
+}
+
+PackingOrigin read_packing_origin(const std::filesystem::path& path) {
+  auto file = h5::open_file(path);
+  PackingOrigin origin;
+  if (!h5::has_link(file.id(), "origin")) return origin;
+  auto group = h5::open_group(file.id(), "origin", "packing origin");
+  std::vector<std::string> names;
+  H5Aiterate2(
+      group.id(), H5_INDEX_NAME, H5_ITER_INC, nullptr,
+      [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+        static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+        return 0;
+      },
+      &names);
+  for (const auto& name : names) {
+    h5::Handle attr(H5Aopen(group.id(), name.c_str(), H5P_DEFAULT));
+    h5::Handle type(H5Aget_type(attr.id()));
+    if (H5Tget_class(type.id()) == H5T_STRING) origin.text.emplace_back(name, h5::string_attribute(group.id(), name));
+    else origin.numbers.emplace_back(name, h5::double_attribute(group.id(), name));
+  }
+  return origin;
+}
+
 }  // namespace mesowave::dem

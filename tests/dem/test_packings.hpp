@@ -1,0 +1,151 @@
+#pragma once
+// Packings made in test code: a line of spheres (the rod), jittered
+// face-centred-cubic blocks (a bonded network with polydisperse radii), and a
+// few hand-placed cases. Not a packing generator: mw-pack is.
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "mesowave/dem/packing.hpp"
+#include "mesowave/dem/scene.hpp"
+
+namespace mesowave::dem::testing {
+
+/// A deterministic uniform number in [0, 1).
+class Lcg {
+public:
+  explicit Lcg(std::uint64_t seed) : state_(seed * 2862933555777941757ULL + 3037000493ULL) {}
+  double next() {
+    state_ = state_ * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(state_ >> 11) / double(1ULL << 53);
+  }
+
+private:
+  std::uint64_t state_;
+};
+
+/// `count` spheres of radius r along x, centres spacing d apart from x = r.
+inline Packing line_packing(std::size_t count, double r, double d, double density) {
+  Packing p;
+  for (std::size_t i = 0; i < count; ++i) {
+    p.centres_m.push_back({r + double(i) * d, 0.0, 0.0});
+    p.radii_m.push_back(r);
+    p.ids.push_back(std::int64_t(i));
+  }
+  p.container.shape = "line";
+  p.container.lower_m = {0, -r, -r};
+  p.container.upper_m = {2 * r + double(count - 1) * d, r, r};
+  p.particle_density_kg_m3 = density;
+  return p;
+}
+
+/// An FCC block of cells x cells x cells unit cells of side `a` (4 spheres
+/// each, lower corner at `a/2`), radii uniform in [r_min, r_max], centres
+/// moved by up to `jitter` times a in each direction. Nearest neighbours sit
+/// a/sqrt(2) apart.
+inline Packing fcc_packing(int cells, double a, double r_min, double r_max, double jitter, std::uint64_t seed,
+                           double density) {
+  Packing p;
+  Lcg rng(seed);
+  const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  std::int64_t id = 0;
+  for (int i = 0; i < cells; ++i)
+    for (int j = 0; j < cells; ++j)
+      for (int k = 0; k < cells; ++k)
+        for (const auto& b : basis) {
+          std::array<double, 3> c = {(i + b[0]) * a + 0.5 * a, (j + b[1]) * a + 0.5 * a, (k + b[2]) * a + 0.5 * a};
+          for (double& x : c) x += jitter * a * (2 * rng.next() - 1);
+          p.centres_m.push_back(c);
+          p.radii_m.push_back(r_min + (r_max - r_min) * rng.next());
+          p.ids.push_back(id++);
+        }
+  const double side = cells * a + 0.5 * a;  // the outermost centres sit a/2 inside
+  p.container.shape = "box";
+  p.container.lower_m = {0, 0, 0};
+  p.container.upper_m = {side, side, side};
+  p.particle_density_kg_m3 = density;
+  return p;
+}
+
+/// Concrete-like material (the paper's calibrated values).
+inline CohesiveFrictionalMaterial concrete_material(bool breakable = true) {
+  CohesiveFrictionalMaterial m;
+  m.young_Pa = 23.31e9;
+  m.stiffness_ratio = 0.32;
+  m.friction_angle_rad = 18.0 * 3.14159265358979323846 / 180.0;
+  if (breakable) {
+    m.tensile_strength_Pa = 24.4e6;
+    m.cohesion_Pa = 24.4e6;
+  }
+  m.density_kg_m3 = 2290.0;
+  m.damping = 0.0;
+  m.bond_factor = 1.1;
+  return m;
+}
+
+/// A scene on `packing` with no actuators yet; `sensors` get added by the test.
+inline Scene bare_scene(const CohesiveFrictionalMaterial& m, double dt, double duration) {
+  Scene s;
+  s.name = "test";
+  s.material = m;
+  s.density_given = true;
+  s.dt_s = dt;
+  s.duration_s = duration;
+  return s;
+}
+
+inline SphereTarget patch_target(const char* face, std::array<double, 3> centre, double size) {
+  SphereTarget t;
+  t.kind = SphereTarget::Kind::patch;
+  t.patch.face = Face::parse(face);
+  t.patch.centre_m = {centre[0], centre[1], centre[2]};
+  t.patch.size_m[0] = t.patch.size_m[1] = size;
+  return t;
+}
+
+inline SphereTarget end_target(bool last) {
+  SphereTarget t;
+  t.kind = SphereTarget::Kind::end;
+  t.last = last;
+  return t;
+}
+
+inline ActuatorSpec force_burst(const char* name, SphereTarget target, const char* direction, double amplitude_N,
+                                double frequency_hz, double cycles = 5) {
+  ActuatorSpec a;
+  a.name = name;
+  a.kind = "force";
+  a.target = target;
+  a.direction = direction;
+  a.amplitude = amplitude_N;
+  a.frequency_hz = frequency_hz;
+  a.cycles = cycles;
+  return a;
+}
+
+inline SensorSpec motion_sensor(const char* name, SphereTarget target, MotionQuantity q, const char* component) {
+  SensorSpec s;
+  s.name = name;
+  s.quantity = q;
+  s.target = target;
+  s.component = component;
+  return s;
+}
+
+/// Pearson correlation coefficient of two equally long series.
+inline double pearson(const std::vector<double>& a, const std::vector<double>& b) {
+  const std::size_t n = std::min(a.size(), b.size());
+  double ma = 0, mb = 0;
+  for (std::size_t i = 0; i < n; ++i) ma += a[i], mb += b[i];
+  ma /= double(n), mb /= double(n);
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return sab / std::sqrt(saa * sbb);
+}
+
+}  // namespace mesowave::dem::testing

@@ -1,0 +1,29 @@
+#pragma once
+// An actuator loads the model each step; one class per kind of loading, one
+// file each (force_actuator, displacement_actuator). The simulation calls
+// before_step at t_n (forces for step n) and after_step once x_{n+1} exists
+// (constraints at t_{n+1}); adding a kind touches neither the loop nor the
+// integrator.
+#include <string>
+#include <vector>
+
+#include "mesowave/dem/model.hpp"
+
+namespace mesowave::dem {
+
+class Actuator {
+public:
+  virtual ~Actuator() = default;
+  virtual const std::string& name() const = 0;
+  virtual void before_step(Model& /*model*/, double /*t_s*/, double /*dt_s*/) {}
+  virtual void after_step(Model& /*model*/, double /*t_s*/, double /*dt_s*/) {}
+  /// The spheres it acts on (model numbering).
+  virtual const std::vector<std::size_t>& spheres() const = 0;
+  /// One line for the run summary ("force 1 N, 100 kHz 5-cycle Hann burst along +x on 4 spheres").
+  virtual std::string description() const = 0;
+  /// Total force it applied to the specimen along its direction in the last
+  /// step [N] (for a prescribed motion: the force needed to impose it).
+  virtual double applied_force() const = 0;
+};
+
+}  // namespace mesowave::dem

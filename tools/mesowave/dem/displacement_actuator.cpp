@@ -1,0 +1,39 @@
+#include "mesowave/dem/displacement_actuator.hpp"
+
+#include "mesowave/core/format.hpp"
+
+namespace mesowave::dem {
+
+DisplacementActuator::DisplacementActuator(std::string name, std::vector<std::size_t> spheres, const Vec3& direction,
+                                           std::function<double(double)> displacement_m, std::string what)
+    : name_(std::move(name)), spheres_(std::move(spheres)), direction_((1.0 / norm(direction)) * direction),
+      displacement_(std::move(displacement_m)), what_(std::move(what)) {}
+
+DisplacementActuator DisplacementActuator::burst(std::string name, std::vector<std::size_t> spheres,
+                                                 const Vec3& direction, const signal::HannBurst& u) {
+  return DisplacementActuator(std::move(name), std::move(spheres), direction, [u](double t) { return u(t); },
+                              "displacement " + format_number(u.amplitude() * 1e9) + " nm, " +
+                                  format_number(u.centre_frequency_hz() / 1e3) + " kHz " + format_number(u.cycles()) +
+                                  "-cycle Hann burst");
+}
+
+DisplacementActuator DisplacementActuator::constant_velocity(std::string name, std::vector<std::size_t> spheres,
+                                                             const Vec3& direction, double velocity, double delay) {
+  return DisplacementActuator(std::move(name), std::move(spheres), direction,
+                              [velocity, delay](double t) { return t > delay ? velocity * (t - delay) : 0.0; },
+                              "constant velocity " + format_number(velocity * 1e3) + " mm/s");
+}
+
+void DisplacementActuator::after_step(Model& model, double t_s, double dt_s) {
+  // The constraint holds at every step, also where u = 0 (before and after a burst).
+  const double u_now = displacement_(t_s), u_next = displacement_(t_s + dt_s);
+  last_force_ = 0;
+  for (std::size_t k : spheres_) last_force_ += model.impose_displacement(k, direction_, u_now, u_next, dt_s);
+}
+
+std::string DisplacementActuator::description() const {
+  return what_ + " along (" + format_number(direction_.x + 0.0) + ", " + format_number(direction_.y + 0.0) + ", " +
+         format_number(direction_.z + 0.0) + ") imposed on " + std::to_string(spheres_.size()) + " spheres";
+}
+
+}  // namespace mesowave::dem

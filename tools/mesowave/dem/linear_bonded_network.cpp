@@ -1,0 +1,66 @@
+#include "mesowave/dem/linear_bonded_network.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mesowave::dem {
+
+LinearBondedNetwork::LinearBondedNetwork(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material)
+    : SphereSystem(std::move(spheres), std::move(bonds), material, true, true) {
+  const auto order = set_contacts(bonds_.first, bonds_.second);
+  const std::size_t m = order.size();
+  nx_.resize(m), ny_.resize(m), nz_.resize(m), overlap0_.resize(m);
+  for (std::size_t s = 0; s < m; ++s) {
+    const Vec3 n = bonds_.normal0[order[s]];
+    nx_[s] = n.x, ny_[s] = n.y, nz_[s] = n.z;
+    overlap0_[s] = bonds_.overlap0_m[order[s]];
+  }
+}
+
+std::size_t LinearBondedNetwork::memory_bytes() const { return SphereSystem::memory_bytes() + nx_.size() * 4 * sizeof(double); }
+
+void LinearBondedNetwork::contact_forces(double /*dt*/, bool evaluate_energy) { kernel(evaluate_energy); }
+
+// Compiled for AVX-512, AVX2 and baseline x86-64, picked at load time. No FMA
+// contraction (ISO C++ mode), so every version gives the same bits.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+void LinearBondedNetwork::kernel(bool evaluate_energy) {
+  const double two_young = 2.0 * material_.young_Pa, ratio = material_.stiffness_ratio;
+  const double T = material_.tensile_strength_Pa, C = material_.cohesion_Pa;
+  const bool finite_T = std::isfinite(T), finite_C = std::isfinite(C);
+  const double* radius = spheres_.radius_m.data();
+  const Vec3* d = x_.data();
+  const Vec3* theta = theta_.data();
+  const double *nx = nx_.data(), *ny = ny_.data(), *nz = nz_.data(), *overlap0 = overlap0_.data();
+  const std::uint32_t* first = first_.data();
+  const std::uint32_t* second = second_.data();
+
+  for_each_contact([&](std::size_t b, ContactResult& r) __attribute__((always_inline)) {
+    const std::uint32_t i = first[b], j = second[b];
+    const double ri = radius[i], rj = radius[j], sum = ri + rj;
+    const double u0 = overlap0[b], dist0 = sum - u0;
+    const double inv = 1.0 / (sum * dist0);  // one division for K_n and a0
+    const double kn = two_young * ri * rj * dist0 * inv, ks = ratio * kn;
+    const double a0 = sum * sum * inv;
+    const Vec3 n{nx[b], ny[b], nz[b]};
+    const Vec3 dd = d[j] - d[i];
+    const double dn = dot(n, dd);
+    const Vec3 st = a0 * (dd - dn * n) - cross(ri * theta[i] + rj * theta[j], n);
+    const double fn = -kn * dn;
+    const Vec3 fs = -ks * st;
+    r.f = fn * n + fs;
+    r.c = cross(n, fs);
+    r.arm[0] = ri - 0.5 * u0;
+    r.arm[1] = rj - 0.5 * u0;
+    const double fs2 = norm2(fs);
+    // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
+    const double r_min = std::min(ri, rj);
+    const double sn = finite_T ? T * r_min * r_min : kn * r_min, ss = finite_C ? C * r_min * r_min : kn * r_min;
+    r.ratio2 = std::max(fn * fn / (sn * sn), fs2 / (ss * ss));
+    r.plastic = 0;
+    // The shear spring acting on a0 P_t dd is a0 K_s (Yade's incident-velocity factor).
+    r.elastic = evaluate_energy ? 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 / (a0 * ks) : 0.0) : 0.0;
+  });
+}
+
+}  // namespace mesowave::dem

@@ -1,0 +1,121 @@
+#include "mesowave/dem/run_report.hpp"
+
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+
+#include "mesowave/io/csv.hpp"
+
+namespace mesowave::dem {
+namespace {
+
+nlohmann::ordered_json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nullptr; }
+
+}  // namespace
+
+nlohmann::ordered_json to_json(const RunReport& r) {
+  nlohmann::ordered_json j;
+  j["scene"] = r.scene;
+  j["model"] = r.choice.model;
+  j["model_reason"] = r.choice.reason;
+  j["estimated_peak_force_ratio"] = finite_or_null(r.choice.estimated_force_ratio);
+  j["spheres"] = r.spheres;
+  j["bonds"] = r.bonds;
+  j["contacts"] = r.contacts;
+  j["degrees_of_freedom"] = r.degrees_of_freedom;
+  j["threads"] = r.threads;
+  j["dt_s"] = r.dt_s;
+  j["steps"] = r.steps;
+  j["duration_s"] = r.duration_s;
+  j["dt_cr_paper_estimate_s"] = finite_or_null(r.dt_cr.paper_estimate_s);
+  j["dt_cr_stiffness_bound_s"] = finite_or_null(r.dt_cr.stiffness_bound_s);
+  j["dt_cr_eigenvalue_s"] = finite_or_null(r.dt_cr.eigenvalue_s);
+  j["dt_limit_s"] = finite_or_null(r.dt_cr.limit_s);
+  j["lambda_max_1_s2"] = r.dt_cr.lambda_max;
+  j["lanczos_iterations"] = r.dt_cr.lanczos_iterations;
+  j["memory_estimate_MiB"] = double(r.memory_bytes) / (1024.0 * 1024.0);
+  nlohmann::ordered_json m;
+  m["E_dem_Pa"] = r.material.young_Pa;
+  m["nu_dem"] = r.material.stiffness_ratio;
+  m["friction_angle_rad"] = r.material.friction_angle_rad;
+  m["T_Pa"] = finite_or_null(r.material.tensile_strength_Pa);
+  m["C_Pa"] = finite_or_null(r.material.cohesion_Pa);
+  m["density_kg_m3"] = r.material.density_kg_m3;
+  m["damping"] = r.material.damping;
+  m["bond_factor"] = r.material.bond_factor;
+  j["material"] = m;
+  auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v.x + 0.0, v.y + 0.0, v.z + 0.0}); };
+  j["actuator_loads"] = nlohmann::ordered_json::array();
+  for (const auto& a : r.actuator_placements) {
+    nlohmann::ordered_json e;
+    e["name"] = a.name;
+    e["kind"] = a.kind;
+    e["spheres"] = a.spheres;
+    e["direction"] = vec(a.direction);
+    e[a.kind == "force" ? "amplitude_N" : a.kind == "velocity" ? "velocity_m_s" : "amplitude_m"] = a.amplitude;
+    e["frequency_hz"] = a.frequency_hz;
+    e["cycles"] = a.cycles;
+    e["delay_s"] = a.delay_s;
+    j["actuator_loads"].push_back(e);
+  }
+  j["sensor_points"] = nlohmann::ordered_json::array();
+  for (const auto& s : r.sensor_placements) {
+    nlohmann::ordered_json e;
+    e["name"] = s.name;
+    e["quantity"] = s.kind;
+    e["spheres"] = s.spheres;
+    e["component"] = vec(s.direction);
+    j["sensor_points"].push_back(e);
+  }
+  j["actuators"] = r.actuators;
+  j["sensors"] = r.sensors;
+  j["notes"] = r.notes;
+  j["setup_s"] = r.setup_s;
+  if (!r.ran) return j;
+  j["wall_s"] = r.wall_s;
+  j["steps_per_s"] = r.steps_per_s;
+  j["ns_per_contact_step"] = r.ns_per_contact_step;
+  j["broken_bonds"] = r.broken_bonds;
+  j["peak_force_ratio"] = r.peak_force_ratio;
+  j["validity_bound"] = r.validity_bound > 0 ? nlohmann::ordered_json(r.validity_bound) : nullptr;
+  nlohmann::ordered_json e;
+  e["kinetic_J"] = r.energy.kinetic_J;
+  e["elastic_J"] = r.energy.elastic_J;
+  e["external_work_J"] = r.energy.external_work_J;
+  e["damping_dissipated_J"] = r.energy.damping_J;
+  e["plastic_dissipated_J"] = r.energy.plastic_J;
+  e["residual_J"] = r.energy.residual();
+  e["residual_relative"] = r.energy.external_work_J != 0 ? finite_or_null(r.energy.residual() / std::abs(r.energy.external_work_J))
+                                                          : nullptr;
+  e["peak_stored_J"] = r.peak_stored_J;
+  j["energy"] = e;
+  return j;
+}
+
+std::string signals_csv(const std::vector<signal::Signal>& signals) {
+  bool shared = !signals.empty();
+  for (const auto& s : signals)
+    shared = shared && s.dt_s == signals[0].dt_s && s.t0_s == signals[0].t0_s && s.size() == signals[0].size();
+  auto number = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", v);
+    return std::string(text);
+  };
+  std::vector<std::string> header;
+  std::size_t rows = 0;
+  for (const auto& s : signals) {
+    if (!shared || header.empty()) header.push_back(shared ? "t_s" : s.name + " t_s");
+    header.push_back(s.name + " [" + s.unit + "]");
+    rows = std::max(rows, s.size());
+  }
+  std::vector<std::vector<std::string>> table(rows);
+  for (std::size_t i = 0; i < rows; ++i)
+    for (std::size_t k = 0; k < signals.size(); ++k) {
+      const auto& s = signals[k];
+      if (!shared || k == 0) table[i].push_back(i < s.size() ? number(s.time(i)) : "");
+      table[i].push_back(i < s.size() ? number(s.samples[i]) : "");
+    }
+  return io::to_csv(header, table);
+}
+
+}  // namespace mesowave::dem

@@ -1,0 +1,16 @@
+#pragma once
+// The run summary as JSON (mw-dem writes it; keys end in their unit).
+#include <nlohmann/json.hpp>
+
+#include "mesowave/dem/simulation.hpp"
+
+namespace mesowave::dem {
+
+nlohmann::ordered_json to_json(const RunReport& report);
+
+/// Signals as one CSV table for spreadsheets and gnuplot: `t_s` and one
+/// column per signal (named "<name> [<unit>]") when they share a time base,
+/// else a time column per signal.
+std::string signals_csv(const std::vector<signal::Signal>& signals);
+
+}  // namespace mesowave::dem

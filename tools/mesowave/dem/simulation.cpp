@@ -1,0 +1,278 @@
+#include "mesowave/dem/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
+#include "mesowave/dem/actuator_force_sensor.hpp"
+#include "mesowave/dem/axial_chain.hpp"
+#include "mesowave/dem/cohesive_frictional_contact.hpp"
+#include "mesowave/dem/displacement_actuator.hpp"
+#include "mesowave/dem/force_actuator.hpp"
+#include "mesowave/dem/linear_bonded_network.hpp"
+#include "mesowave/dem/motion_sensor.hpp"
+#include "mesowave/dem/sphere_selection.hpp"
+
+namespace mesowave::dem {
+namespace {
+
+std::vector<std::size_t> resolve(const SphereTarget& target, const SphereSet& s, const Box& box, const std::string& who) {
+  switch (target.kind) {
+    case SphereTarget::Kind::patch: return spheres_under_patch(s, box, target.patch, who);
+    case SphereTarget::Kind::point: return {sphere_nearest(s, target.point_m)};
+    case SphereTarget::Kind::end: return {sphere_at_end(s, target.last)};
+  }
+  return {};
+}
+
+std::string ns_text(double seconds) { return format_number(seconds * 1e9) + " ns"; }
+
+std::int64_t whole_steps(double interval, double dt, const std::string& what) {
+  const double ratio = interval / dt;
+  const auto steps = std::int64_t(std::llround(ratio));
+  if (steps < 1 || std::abs(ratio - double(steps)) > 1e-6 * ratio)
+    throw InputError(what + " (" + ns_text(interval) + ") must be a whole number of time steps of " + ns_text(dt));
+  return steps;
+}
+
+}  // namespace
+
+Simulation::~Simulation() = default;
+
+Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOptions options)
+    : scene_(scene), options_(std::move(options)) {
+  const auto start = std::chrono::steady_clock::now();
+  CohesiveFrictionalMaterial& m = scene_.material;
+  if (!scene_.density_given) {
+    if (!(packing.particle_density_kg_m3 > 0))
+      throw InputError("no particle density: the packing file has none, so set [material] density_kg_m3 in the scene");
+    m.density_kg_m3 = packing.particle_density_kg_m3;
+  }
+  SphereSet spheres = make_sphere_set(packing, m.density_kg_m3);
+  BondNetwork bonds = make_bond_network(spheres, m.bond_factor);
+  const Box box = bounding_box(spheres);
+
+  const std::optional<Vec3> line = line_axis(spheres);
+  std::vector<ResolvedLoad> loads;
+  for (const auto& a : scene_.actuators) {
+    const std::string who = "actuator " + a.name;
+    loads.push_back({&a, resolve(a.target, spheres, box, who), direction_vector(a.direction, a.target, who, line)});
+  }
+  std::vector<std::vector<std::size_t>> sensor_spheres;
+  for (const auto& sensor : scene_.sensors)
+    sensor_spheres.push_back(sensor.actuator.empty() ? resolve(sensor.target, spheres, box, "sensor " + sensor.name)
+                                                     : std::vector<std::size_t>{});
+  const std::string requested = options_.model != "auto" ? options_.model : scene_.model;
+  choice_ = choose_model(requested, scene_, spheres, bonds, loads);
+
+  // Notes a user should see: second-neighbour bonds on a line (the rod at d < C_f R).
+  if (auto axis = line_axis(spheres)) {
+    std::size_t far = 0;
+    const auto order_along = [&](std::size_t k) { return dot(spheres.centre_m[k], *axis); };
+    std::vector<std::size_t> rank(spheres.size());
+    {
+      std::vector<std::size_t> idx(spheres.size());
+      for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
+      std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return order_along(a) < order_along(b); });
+      for (std::size_t r = 0; r < idx.size(); ++r) rank[idx[r]] = r;
+    }
+    for (std::size_t b = 0; b < bonds.size(); ++b)
+      if (std::llabs(std::int64_t(rank[bonds.first[b]]) - std::int64_t(rank[bonds.second[b]])) > 1) ++far;
+    if (far > 0)
+      notes_.push_back(std::to_string(far) + " of " + std::to_string(bonds.size()) +
+                       " bonds link spheres that are not neighbours on the line: at this spacing a sphere reaches its "
+                       "second neighbours within C_f (r_i + r_j) = " + format_number(m.bond_factor) +
+                       " (r_i + r_j), so they are bonded too (the rod paper's L_int < 2d would exclude them; a "
+                       "bond_factor below (2 d)/(2 R) does)");
+  }
+
+  if (choice_.model == "chain") {
+    const Vec3 axis = *line_axis(spheres);
+    model_ = std::make_unique<AxialChain>(std::move(spheres), bonds, m, axis);
+  } else if (choice_.model == "linear") {
+    model_ = std::make_unique<LinearBondedNetwork>(std::move(spheres), std::move(bonds), m);
+  } else {
+    model_ = std::make_unique<CohesiveFrictionalContact>(std::move(spheres), std::move(bonds), m);
+  }
+
+  double r_min = model_->radius(0);
+  for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
+  dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.young_Pa, m.damping);
+  if (options_.refuse_unstable_dt && !(scene_.dt_s <= dt_cr_.limit_s))
+    throw InputError("time step dt = " + ns_text(scene_.dt_s) + " exceeds the stable limit of this packing, " +
+                     ns_text(dt_cr_.limit_s) + " = 2/sqrt((1 + alpha_d) lambda_max) with lambda_max of the bonded "
+                     "network (the paper's estimate min R sqrt(rho/E) is " + ns_text(dt_cr_.paper_estimate_s) +
+                     "); choose dt_ns <= " + format_number(std::floor(dt_cr_.limit_s * 1e9 * 1000) / 1000));
+
+  const double ratio = scene_.duration_s / scene_.dt_s;
+  steps_ = std::int64_t(std::ceil(ratio - 1e-9));
+
+  auto packing_indices = [&](const std::vector<std::size_t>& chosen) {
+    std::vector<std::uint32_t> out;
+    for (std::size_t k : chosen) out.push_back(model_->packing_index(k));
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    const ActuatorSpec& a = *loads[i].spec;
+    actuator_placements_.push_back({a.name, a.kind, packing_indices(loads[i].spheres), loads[i].direction, a.amplitude,
+                                    a.frequency_hz, a.cycles, a.delay_s});
+    if (a.kind == "velocity") {
+      actuators_.push_back(std::make_unique<DisplacementActuator>(DisplacementActuator::constant_velocity(
+          a.name, loads[i].spheres, loads[i].direction, a.amplitude, a.delay_s)));
+      continue;
+    }
+    const signal::HannBurst burst(a.frequency_hz, a.cycles, a.amplitude, a.delay_s);
+    if (a.kind == "force") actuators_.push_back(std::make_unique<ForceActuator>(a.name, loads[i].spheres, loads[i].direction, burst));
+    else actuators_.push_back(std::make_unique<DisplacementActuator>(DisplacementActuator::burst(a.name, loads[i].spheres, loads[i].direction, burst)));
+  }
+  for (std::size_t i = 0; i < scene_.sensors.size(); ++i) {
+    const SensorSpec& sensor = scene_.sensors[i];
+    const std::string who = "sensor " + sensor.name;
+    const std::vector<std::size_t>& chosen = sensor_spheres[i];
+    const std::int64_t every =
+        sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
+    if (!sensor.actuator.empty()) {
+      const Actuator* source = nullptr;
+      for (const auto& a : actuators_)
+        if (a->name() == sensor.actuator) source = a.get();
+      sensors_.push_back(std::make_unique<ActuatorForceSensor>(sensor.name, *source, every));
+      sensor_placements_.push_back({sensor.name, "force of actuator " + sensor.actuator, {}, {}});
+      continue;
+    }
+    const Vec3 component = direction_vector(sensor.component, sensor.target, who, line);
+    sensor_placements_.push_back({sensor.name, to_string(sensor.quantity), packing_indices(chosen), component});
+    const std::int64_t interval =
+        sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
+    Vec3 position{};
+    for (std::size_t k : chosen) position += model_->reference_position(k);
+    position = (1.0 / double(chosen.size())) * position;
+    sensors_.push_back(std::make_unique<MotionSensor>(sensor.name, chosen, sensor.quantity, component, sensor.component,
+                                                      interval, position));
+  }
+  setup_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+RunReport Simulation::describe() const {
+  RunReport r;
+  r.scene = scene_.name;
+  r.choice = choice_;
+  r.material = scene_.material;
+  r.actuator_placements = actuator_placements_;
+  r.sensor_placements = sensor_placements_;
+  r.spheres = model_->sphere_count();
+  r.bonds = model_->bond_count();
+  r.contacts = model_->contact_count();
+  r.broken_bonds = model_->broken_bond_count();
+  r.degrees_of_freedom = model_->degrees_of_freedom();
+  r.threads = model_->threads();
+  r.dt_s = scene_.dt_s;
+  r.duration_s = double(steps_) * scene_.dt_s;
+  r.steps = steps_;
+  r.dt_cr = dt_cr_;
+  std::size_t sensor_bytes = 0;
+  for (std::size_t i = 0; i < sensors_.size(); ++i) sensor_bytes += std::size_t(steps_ + 1) * sizeof(double);
+  r.memory_bytes = model_->memory_bytes() + sensor_bytes;
+  for (const auto& a : actuators_) r.actuators.push_back(a->name() + ": " + a->description());
+  for (const auto& s : sensors_) r.sensors.push_back(s->name() + ": " + s->description());
+  r.notes = notes_;
+  r.setup_s = setup_s_;
+  return r;
+}
+
+RunReport Simulation::run() {
+  Model& model = *model_;
+  const double dt = scene_.dt_s;
+  for (auto& s : sensors_) s->prepare(steps_);
+  const std::int64_t energy_every = scene_.energy_check_steps;
+  const std::int64_t snapshot_every =
+      scene_.snapshot_interval_s > 0 && options_.on_snapshot
+          ? whole_steps(scene_.snapshot_interval_s, dt, "snapshot interval")
+          : 0;
+  std::int64_t snapshot_index = 0;
+  if (snapshot_every > 0) options_.on_snapshot(model, 0.0, snapshot_index++);
+
+  double initial_stored = 0, max_work = 0, peak_stored = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (std::int64_t n = 0; n < steps_; ++n) {
+    const double t = double(n) * dt;
+    for (auto& a : actuators_) a->before_step(model, t, dt);
+    const bool energy_step = n % energy_every == 0 || n + 1 == steps_;
+    model.step(dt, energy_step);
+    for (auto& a : actuators_) a->after_step(model, t, dt);
+    for (auto& s : sensors_) s->record(model, n);
+    if (energy_step) {
+      const EnergyAccount e = model.energy();
+      const double stored = e.stored();
+      if (!std::isfinite(stored) || model.has_non_finite_state())
+        throw InputError("the state became non-finite at step " + std::to_string(n) + " (t = " +
+                         format_number(t * 1e6) + " us): the run is unstable; nothing was written");
+      if (n == 0) initial_stored = std::max(stored, 0.0);
+      max_work = std::max(max_work, e.external_work_J);
+      peak_stored = std::max(peak_stored, stored);
+      const double allowed = 4.0 * (initial_stored + max_work);
+      if (stored > allowed && stored > 1e-300)
+        throw InputError("energy blow-up at step " + std::to_string(n) + " (t = " + format_number(t * 1e6) +
+                         " us): stored energy " + format_number(stored) + " J exceeds 4x the energy put in (" +
+                         format_number(initial_stored + max_work) + " J); the time step " + ns_text(dt) +
+                         " is too large for this packing (stable limit " + ns_text(dt_cr_.limit_s) +
+                         ") or the model is unstable; nothing was written");
+    }
+    if (snapshot_every > 0 && (n + 1) % snapshot_every == 0) options_.on_snapshot(model, double(n + 1) * dt, snapshot_index++);
+    if (options_.on_progress) options_.on_progress(n + 1, steps_);
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  RunReport r = describe();
+  r.ran = true;
+  r.wall_s = wall;
+  r.steps_per_s = wall > 0 ? double(steps_) / wall : 0;
+  r.ns_per_contact_step = steps_ > 0 && r.contacts > 0 ? wall * 1e9 / (double(steps_) * double(r.contacts)) : 0;
+  r.energy = model.energy();
+  r.peak_stored_J = peak_stored;
+  r.peak_force_ratio = model.peak_force_ratio();
+  r.broken_bonds = model.broken_bond_count();
+  if (choice_.model == "linear") {
+    r.validity_bound = scene_.linear_validity_bound;
+    if (!(r.peak_force_ratio < r.validity_bound))
+      throw InputError("the linearised network is not valid for this run: the peak bond force / strength reached " +
+                       format_number(r.peak_force_ratio) + ", above the validity bound " +
+                       format_number(r.validity_bound) + " (linear_validity_bound); rerun with --model full");
+  } else if (choice_.model == "chain" && scene_.material.breakable()) {
+    r.validity_bound = 1.0;
+    if (!(r.peak_force_ratio < 1.0))
+      throw InputError("the chain model is not valid for this run: a bond reached its strength (peak bond force / "
+                       "strength " + format_number(r.peak_force_ratio) + " >= 1) and would break; rerun with --model full");
+  }
+  for (const auto& s : sensors_) r.signals.push_back(s->signal(dt));
+  return r;
+}
+
+}  // namespace mesowave::dem
+
+#include <omp.h>
+
+#include <fstream>
+
+namespace mesowave::dem {
+void set_thread_count(int threads) {
+  if (threads > 0) omp_set_num_threads(threads);
+}
+
+int choose_thread_count(int requested, std::string* reason) {
+  const int cores = omp_get_num_procs();
+  if (requested > 0) {
+    if (reason) *reason = "requested (--threads " + std::to_string(requested) + ")";
+    return requested;
+  }
+  double load = 0;
+  std::ifstream in("/proc/loadavg");
+  if (!(in >> load)) load = 0;
+  const int free_cores = std::max(1, std::min(cores, int(std::lround(double(cores) - load))));
+  if (reason)
+    *reason = std::to_string(free_cores) + " of " + std::to_string(cores) + " cores (1-minute load average " +
+              format_number(std::round(load * 100) / 100) + " before the run)";
+  return free_cores;
+}
+}  // namespace mesowave::dem

@@ -1,0 +1,60 @@
+#pragma once
+// Lanczos iteration for the largest eigenvalue (template part of time_step.hpp).
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace mesowave::dem {
+
+template <class Apply>
+LanczosResult largest_eigenvalue(std::size_t n, const Apply& apply, int max_iterations, double tolerance) {
+  LanczosResult result;
+  if (n == 0) return result;
+  std::vector<double> q(n), q_prev(n, 0.0), w(n);
+  std::uint64_t state = 0x9E3779B97F4A7C15ULL;  // fixed seed: same answer every run
+  double norm_q = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    q[i] = double(state >> 11) / double(1ULL << 53) - 0.5;
+    norm_q += q[i] * q[i];
+  }
+  norm_q = std::sqrt(norm_q);
+  for (double& v : q) v /= norm_q;
+  std::vector<double> alpha, beta;
+  double beta_prev = 0, previous_top = -1;
+  for (int k = 0; k < max_iterations && k < int(n); ++k) {
+    apply(q.data(), w.data());
+    double a = 0;
+    for (std::size_t i = 0; i < n; ++i) a += q[i] * w[i];
+    double b2 = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      w[i] -= a * q[i] + beta_prev * q_prev[i];
+      b2 += w[i] * w[i];
+    }
+    alpha.push_back(a);
+    const double b = std::sqrt(b2);
+    const int m = int(alpha.size());
+    Eigen::VectorXd diag = Eigen::Map<Eigen::VectorXd>(alpha.data(), m);
+    Eigen::VectorXd sub(std::max(m - 1, 1));
+    for (int i = 0; i + 1 < m; ++i) sub[i] = beta[std::size_t(i)];
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> tri;
+    tri.computeFromTridiagonal(diag, sub.head(std::max(m - 1, 0)), Eigen::ComputeEigenvectors);
+    const double top = tri.eigenvalues()[m - 1];
+    const double residual = std::abs(b * tri.eigenvectors()(m - 1, m - 1));
+    result = {top, residual, k + 1};
+    if (b <= 1e-300 * std::abs(top) || (k > 10 && residual < tolerance * std::abs(top) &&
+                                        std::abs(top - previous_top) < tolerance * std::abs(top)))
+      break;
+    previous_top = top;
+    beta.push_back(b);
+    beta_prev = b;
+    for (std::size_t i = 0; i < n; ++i) {
+      q_prev[i] = q[i];
+      q[i] = w[i] / b;
+    }
+  }
+  return result;
+}
+
+}  // namespace mesowave::dem
