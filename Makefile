@@ -42,8 +42,9 @@ reproduce: build
 	@$(MAKE) --no-print-directory pipeline
 
 include pipeline/concrete-cube/study.mk
+include pipeline/steel-rod/study.mk
 
-pipeline: concrete-cube-summary
+pipeline: concrete-cube-summary steel-rod-summary
 
 bench: build
 	@if [ -x bench/run ]; then bench/run; else echo "no benchmarks yet"; fi
