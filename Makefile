@@ -42,11 +42,11 @@ reproduce: build
 	@$(MAKE) --no-print-directory pipeline
 
 include pipeline/concrete-cube/study.mk
+include pipeline/steel-rod/study.mk
 include pipeline/report.mk
 
-pipeline: concrete-cube-summary concrete-cube-raw-summary report/index.html
+pipeline: concrete-cube-summary concrete-cube-raw-summary steel-rod-summary report/index.html
 	@echo; echo "report: $(CURDIR)/report/index.html"
-
 
 bench: build
 	@if [ -x bench/run ]; then bench/run; else echo "no benchmarks yet"; fi

@@ -1,0 +1,91 @@
+# Steel-rod study (rod paper, Knak et al. 2022): DEM chains at d = 0.95R, 1.03R, 1.05R,
+# 1.15R (rod Table 1) against the continuum reference (mw-fem, the paper's Abaqus role) and
+# Pochhammer-Chree theory: PCC of each DEM model against the FEM per frequency (Table 1's
+# last column), group velocities by the paper's peak-to-peak (echo) method and their RSS to
+# theory (Table 2), the dispersion figure (Figure 9), speed against error. Included by the
+# top Makefile, which defines BIN and exports MESOWAVE_DB.
+#
+#   make steel-rod-summary        everything below, results/steel-rod/summary.md at the end
+
+SR_OUT := results/steel-rod
+SR_SCENES := pipeline/steel-rod/scenes
+SR_PAPER := lab-data/steel-rod/paper
+# Rod paper Section 4.1 (the rod) and Sections 4.2-4.3 (bursts, FEM damping, duration).
+SR_STEEL := --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1
+SR_LENGTH_MM := 1000
+SR_ROUND_TRIP_MM := 2000   # the FEM's far-end sensor sees the echo after 2 L
+SR_FREQS := 50 60 70 80 90 100 110 120 130 140 150
+# The four chains of Table 1, and 0.95R with the contact modulus that reproduces its E_DEM.
+SR_MODELS := 0.95R 1.03R 1.05R 1.15R 0.95R-EDEM
+# The FEM reference: axisymmetric rings (validated against the 3D hexahedra, docs/models.md);
+# SR_FEM_MODEL=3d runs the paper's 3D mesh instead (about 50x the cost).
+SR_FEM_MODEL ?= axisymmetric
+SR_FEM_MESH ?= 1
+# Further meshes for speed against error (same model).
+SR_SPEED_MESHES ?= 2 0.5
+
+sr_base = $(firstword $(subst -, ,$1))
+sr_scene = $(SR_SCENES)/rod-wave$(if $(filter 1.03R,$1),,-$1).toml
+
+# DEM packings: one line of spheres, n = ceil(L / d), particle density from the rod's mass.
+$(SR_OUT)/packing-%R.h5: $(BIN)/mw-pack
+	@mkdir -p $(@D)
+	$(BIN)/mw-pack line --sphere-radius-mm 5.1 --spacing-R $* --length-mm $(SR_LENGTH_MM) \
+	  --density-kg-m3 7850.66 --packing $@ --out $(SR_OUT)/packing-$*R.json > /dev/null
+
+# DEM runs: force burst on the first sphere, acceleration of the last (the scene).
+define SR_DEM_RUN
+$(SR_OUT)/dem-$1-$2kHz.h5: $(call sr_scene,$1) $(SR_OUT)/packing-$(call sr_base,$1).h5 $(BIN)/mw-dem
+	$(BIN)/mw-dem run $(call sr_scene,$1) --frequency-kHz $2 --quiet --signals $$@ \
+	  --summary $(SR_OUT)/dem-$1-$2kHz.json > /dev/null
+endef
+$(foreach m,$(SR_MODELS),$(foreach f,$(SR_FREQS),$(eval $(call SR_DEM_RUN,$m,$f))))
+
+# FEM runs: 1 mm mesh, alpha = 2000 1/s, 1.5 ms, force at the centre of one end, far-end sensor S.
+define SR_FEM_RUN
+$(SR_OUT)/fem-$1mm-$2kHz.h5: $(BIN)/mw-fem
+	@mkdir -p $$(@D)
+	$(BIN)/mw-fem rod $(SR_STEEL) --length-mm $(SR_LENGTH_MM) --model $(SR_FEM_MODEL) --mesh-mm $1 \
+	  --frequency-kHz $2 --alpha-damping 2000 --duration-ms 1.5 --signals $$@ --out $(SR_OUT)/fem-$1mm-$2kHz.json > /dev/null
+endef
+$(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),$(foreach f,$(SR_FREQS),$(eval $(call SR_FEM_RUN,$h,$f))))
+
+# PCC of each DEM model against the FEM, per frequency (signals and envelopes, sensor S; the
+# DEM record interpolated onto the FEM's 0.1 us samples).
+define SR_PCC
+$(SR_OUT)/pcc-$1-$2kHz.csv: $(SR_OUT)/fem-$(SR_FEM_MESH)mm-$2kHz.h5 $(SR_OUT)/dem-$1-$2kHz.h5 $(BIN)/mw-pcc
+	$(BIN)/mw-pcc --a $(SR_OUT)/fem-$(SR_FEM_MESH)mm-$2kHz.h5 --b $(SR_OUT)/dem-$1-$2kHz.h5 --sensors S \
+	  --resample linear --csv $$@ > /dev/null
+endef
+$(foreach m,$(SR_MODELS),$(foreach f,$(SR_FREQS),$(eval $(call SR_PCC,$m,$f))))
+
+# Group velocity by the echo at the far end (round trip 2 (n - 1) d for a chain, 2 L for the
+# FEM) and its RSS to Pochhammer-Chree over 50-150 kHz (Table 2).
+define SR_MEASURE_DEM
+$(SR_OUT)/measure-$1.csv: $(foreach f,$(SR_FREQS),$(SR_OUT)/dem-$1-$(f)kHz.h5) $(SR_OUT)/packing-$(call sr_base,$1).h5 $(BIN)/mw-dispersion
+	$(BIN)/mw-dispersion measure $(foreach f,$(SR_FREQS),--run $(f)=$(SR_OUT)/dem-$1-$(f)kHz.h5) --method echo \
+	  --distance-mm $$$$(jq '2 * (.spheres - 1) * .spacing_mm' $(SR_OUT)/packing-$(call sr_base,$1).json) --label $1 \
+	  $(SR_STEEL) --band-kHz 50,150 --csv $$@ --out $(SR_OUT)/measure-$1.json > /dev/null
+endef
+$(foreach m,$(SR_MODELS),$(eval $(call SR_MEASURE_DEM,$m)))
+
+define SR_MEASURE_FEM
+$(SR_OUT)/measure-fem-$1mm.csv: $(foreach f,$(SR_FREQS),$(SR_OUT)/fem-$1mm-$(f)kHz.h5) $(BIN)/mw-dispersion
+	$(BIN)/mw-dispersion measure $(foreach f,$(SR_FREQS),--run $(SR_OUT)/fem-$1mm-$(f)kHz.h5) --method echo \
+	  --distance-mm $(SR_ROUND_TRIP_MM) --label FEM-$1mm $(SR_STEEL) --band-kHz 50,150 \
+	  --csv $$@ --out $(SR_OUT)/measure-fem-$1mm.json > /dev/null
+endef
+$(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),$(eval $(call SR_MEASURE_FEM,$h)))
+
+SR_RESULTS := $(foreach m,$(SR_MODELS),$(SR_OUT)/measure-$m.csv $(foreach f,$(SR_FREQS),$(SR_OUT)/pcc-$m-$(f)kHz.csv)) \
+              $(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),$(SR_OUT)/measure-fem-$(h)mm.csv)
+
+# Tables beside the paper's, the findings checked, Figure 9 and speed against error.
+$(SR_OUT)/summary.md: $(SR_RESULTS) pipeline/steel-rod/summarize.sh $(SR_PAPER)/table1.csv $(SR_PAPER)/table2.csv \
+    $(BIN)/mw-dispersion
+	pipeline/steel-rod/summarize.sh $(SR_OUT) $(SR_PAPER) $(BIN) "$(SR_MODELS)" "$(SR_FREQS)" \
+	  "$(SR_FEM_MESH) $(SR_SPEED_MESHES)" $(SR_FEM_MESH) "$(SR_STEEL)"
+
+.PHONY: steel-rod-summary
+steel-rod-summary: $(SR_OUT)/summary.md
+	@cat $<
