@@ -96,8 +96,8 @@ for b in O.bodies:
     b.state.vel = Vector3(0, 0, 0)
     b.state.angVel = Vector3(0, 0, 0)
 
-if threads:
-    O.numThreads = threads  # only effective if yade was started with -j
+if threads and O.numThreads != threads:
+    print("yade: warning: %d threads requested, running on %d (start yade with -j%d)" % (threads, O.numThreads, threads))
 t0 = O.time
 recording = True
 n = steps if steps else info["steps"]

@@ -18,23 +18,39 @@ namespace fs = std::filesystem;
 namespace {
 
 // CLI11 reads `--from` files through this: every quantity becomes the value of
-// the option it names; entries no option takes are ignored (a lab-data file
-// serves several tools).
+// the option it names, on the tool and on the subcommand the command line chose
+// (`mw-dem run --from calibration.json` fills run's --E-dem-GPa); entries no
+// option takes are ignored (a lab-data file serves several tools). CLI11 reads
+// the files after the command line, so the chosen subcommand is known.
 class QuantityConfig : public CLI::Config {
 public:
+  explicit QuantityConfig(const CLI::App* root) : root_(root) {}
   std::string to_config(const CLI::App*, bool, bool, std::string) const override { return {}; }
   std::vector<CLI::ConfigItem> from_config(std::istream& input) const override {
     std::ostringstream text;
     text << input.rdbuf();
-    std::vector<CLI::ConfigItem> items;
-    for (const auto& q : io::parse_quantity_text(text.str(), "--from file")) {
-      CLI::ConfigItem item;
-      item.name = q.option_name();
-      item.inputs = {q.value};
-      items.push_back(std::move(item));
+    std::vector<std::vector<std::string>> paths = {{}};
+    for (const CLI::App* app = root_; app;) {
+      const auto chosen = app->get_subcommands();
+      if (chosen.empty()) break;
+      app = chosen.front();
+      paths.push_back(paths.back());
+      paths.back().push_back(app->get_name());
     }
+    std::vector<CLI::ConfigItem> items;
+    for (const auto& q : io::parse_quantity_text(text.str(), "--from file"))
+      for (const auto& parents : paths) {
+        CLI::ConfigItem item;
+        item.parents = parents;
+        item.name = q.option_name();
+        item.inputs = {q.value};
+        items.push_back(std::move(item));
+      }
     return items;
   }
+
+private:
+  const CLI::App* root_;
 };
 
 // `--from` files, found before CLI11 parses so that a bad file is reported by
@@ -123,7 +139,7 @@ std::ostream& Run::out() { return std::cout; }
 
 Tool::Tool(std::string name, std::string description) : name_(std::move(name)), app_(description, name_) {
   app_.set_version_flag("--version", name_ + " " + source_version());
-  app_.config_formatter(std::make_shared<QuantityConfig>());
+  app_.config_formatter(std::make_shared<QuantityConfig>(&app_));
   app_.allow_config_extras(CLI::config_extras_mode::ignore_all);
   app_.set_config("--from", "",
                   "Read option values from FILE: lab-data TOML ([t_p] value = 35, unit = \"us\" fills --t-p-us) "

@@ -24,6 +24,9 @@ public:
   /// Total force it applied to the specimen along its direction in the last
   /// step [N] (for a prescribed motion: the force needed to impose it).
   virtual double applied_force() const = 0;
+  /// Largest stiffness / mass it adds to one sphere [1/s^2] (a wall's contact
+  /// springs), for the critical time step; 0 for loads that add none.
+  virtual double added_stiffness_per_mass() const { return 0; }
 };
 
 }  // namespace mesowave::dem

@@ -17,6 +17,7 @@ public:
   void record(const Model& model, std::int64_t step) override;
   signal::Signal signal(double dt_s) const override;
   std::string description() const override;
+  const std::vector<double>& samples() const override { return samples_; }
 
 private:
   std::string name_;

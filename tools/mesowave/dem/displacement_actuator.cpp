@@ -18,10 +18,11 @@ DisplacementActuator DisplacementActuator::burst(std::string name, std::vector<s
 }
 
 DisplacementActuator DisplacementActuator::constant_velocity(std::string name, std::vector<std::size_t> spheres,
-                                                             const Vec3& direction, double velocity, double delay) {
+                                                             const Vec3& direction, const VelocityRamp& motion) {
   return DisplacementActuator(std::move(name), std::move(spheres), direction,
-                              [velocity, delay](double t) { return t > delay ? velocity * (t - delay) : 0.0; },
-                              "constant velocity " + format_number(velocity * 1e3) + " mm/s");
+                              [motion](double t) { return motion.travel_m(t); },
+                              "constant velocity " + format_number(motion.velocity_m_s * 1e3) + " mm/s" +
+                                  (motion.ramp_s > 0 ? " (reached over " + format_number(motion.ramp_s * 1e6) + " us)" : ""));
 }
 
 void DisplacementActuator::after_step(Model& model, double t_s, double dt_s) {

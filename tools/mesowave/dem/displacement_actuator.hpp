@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "mesowave/dem/actuator.hpp"
+#include "mesowave/dem/velocity_ramp.hpp"
 #include "mesowave/signal/hann_burst.hpp"
 
 namespace mesowave::dem {
@@ -19,7 +20,7 @@ public:
   static DisplacementActuator burst(std::string name, std::vector<std::size_t> spheres, const Vec3& direction,
                                     const signal::HannBurst& displacement_m);
   static DisplacementActuator constant_velocity(std::string name, std::vector<std::size_t> spheres,
-                                                const Vec3& direction, double velocity_m_s, double delay_s);
+                                                const Vec3& direction, const VelocityRamp& motion);
   const std::string& name() const override { return name_; }
   void after_step(Model& model, double t_s, double dt_s) override;
   const std::vector<std::size_t>& spheres() const override { return spheres_; }

@@ -40,7 +40,8 @@ double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& s, const
       stiffest = std::max(stiffest, kn);
     }
   if (!std::isfinite(weakest)) return std::numeric_limits<double>::infinity();  // a loaded sphere without bonds
-  const double amplitude = std::abs(load.spec->amplitude) * (load.spec->kind == "velocity" ? duration_s : 1.0);
+  const bool moving = load.spec->kind == "velocity" || load.spec->kind == "wall";
+  const double amplitude = std::abs(load.spec->amplitude) * (moving ? duration_s : 1.0);
   const double per_sphere = load.spec->kind == "force" ? amplitude / double(load.spheres.size()) : stiffest * amplitude;
   return per_sphere / weakest;
 }

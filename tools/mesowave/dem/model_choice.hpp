@@ -42,7 +42,7 @@ struct ResolvedLoad {
 /// Estimated peak bond force / strength of one load: the per-sphere force
 /// (force actuators: |amplitude| / spheres; displacement actuators: stiffest
 /// K_n there times |amplitude|, or times |velocity| x duration for a moving
-/// platen) over the weakest bond at those spheres
+/// platen or wall) over the weakest bond at those spheres
 /// (min(T, C) R^2; K_n R, a strain of one, when the bonds never break).
 double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& spheres, const BondNetwork& bonds,
                              const CohesiveFrictionalMaterial& material, double duration_s);

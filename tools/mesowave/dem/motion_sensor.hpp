@@ -26,6 +26,7 @@ public:
   void record(const Model& model, std::int64_t step) override;
   signal::Signal signal(double dt_s) const override;
   std::string description() const override;
+  const std::vector<double>& samples() const override { return samples_; }
   const std::vector<std::size_t>& spheres() const { return spheres_; }
 
 private:

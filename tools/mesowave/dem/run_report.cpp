@@ -32,6 +32,7 @@ nlohmann::ordered_json to_json(const RunReport& r) {
   j["dt_cr_eigenvalue_s"] = finite_or_null(r.dt_cr.eigenvalue_s);
   j["dt_limit_s"] = finite_or_null(r.dt_cr.limit_s);
   j["lambda_max_1_s2"] = r.dt_cr.lambda_max;
+  if (r.dt_cr.boundary_lambda > 0) j["wall_lambda_1_s2"] = r.dt_cr.boundary_lambda;
   j["lanczos_iterations"] = r.dt_cr.lanczos_iterations;
   j["memory_estimate_MiB"] = double(r.memory_bytes) / (1024.0 * 1024.0);
   nlohmann::ordered_json m;
@@ -52,7 +53,8 @@ nlohmann::ordered_json to_json(const RunReport& r) {
     e["kind"] = a.kind;
     e["spheres"] = a.spheres;
     e["direction"] = vec(a.direction);
-    e[a.kind == "force" ? "amplitude_N" : a.kind == "velocity" ? "velocity_m_s" : "amplitude_m"] = a.amplitude;
+    const bool moving = a.kind == "velocity" || a.kind == "wall";
+    e[a.kind == "force" ? "amplitude_N" : moving ? "velocity_m_s" : "amplitude_m"] = a.amplitude;
     e["frequency_hz"] = a.frequency_hz;
     e["cycles"] = a.cycles;
     e["delay_s"] = a.delay_s;
@@ -89,6 +91,35 @@ nlohmann::ordered_json to_json(const RunReport& r) {
                                                           : nullptr;
   e["peak_stored_J"] = r.peak_stored_J;
   j["energy"] = e;
+  if (!r.stop_reason.empty()) j["stop_reason"] = r.stop_reason;
+  if (r.test) j["test"] = to_json(*r.test);
+  return j;
+}
+
+nlohmann::ordered_json to_json(const UniaxialTestResult& t) {
+  auto optional = [](const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nullptr; };
+  nlohmann::ordered_json j;
+  j["kind"] = t.kind;
+  j["area_mm2"] = t.area_m2 * 1e6;
+  j["samples"] = t.time_s.size();
+  j["peak_stress_MPa"] = t.peak_stress_Pa / 1e6;
+  j["peak_reached"] = t.peak_reached;
+  j["strain_at_peak"] = t.strain_at_peak;
+  j["time_at_peak_s"] = t.time_at_peak_s;
+  j["modulus_levels_MPa"] = nlohmann::ordered_json::array({t.sigma_b_Pa / 1e6, t.sigma_a_Pa / 1e6});
+  j["strains_at_levels"] = nlohmann::ordered_json::array({t.eps_b, t.eps_a});
+  j["E_glob_GPa"] = t.E_secant_Pa / 1e9;
+  j["nu_glob"] = optional(t.nu_secant);
+  j["E_fit_GPa"] = t.fit_points >= 3 ? nlohmann::ordered_json(t.E_fit_Pa / 1e9) : nullptr;
+  j["E_fit_r2"] = t.fit_points >= 3 ? nlohmann::ordered_json(t.E_fit_r2) : nullptr;
+  j["nu_fit"] = optional(t.nu_fit);
+  j["fit_points"] = t.fit_points;
+  j["strain_rate_1_s"] = t.strain_rate_1_s;
+  j["inertial_number_max"] = t.inertial_number_max;
+  j["inertial_number_bound"] = t.inertial_number_bound > 0 ? nlohmann::ordered_json(t.inertial_number_bound) : nullptr;
+  j["broken_bonds_at_peak"] = t.broken_bonds_at_peak;
+  j["broken_bonds_final"] = t.broken_bonds_final;
+  j["notes"] = t.notes;
   return j;
 }
 

@@ -7,6 +7,8 @@
 namespace mesowave::dem {
 
 nlohmann::ordered_json to_json(const RunReport& report);
+/// A [test]'s results (E_glob_GPa, nu_glob, peak_stress_MPa, inertial number ...), the "test" object of the summary.
+nlohmann::ordered_json to_json(const UniaxialTestResult& test);
 
 /// Signals as one CSV table for spreadsheets and gnuplot: `t_s` and one
 /// column per signal (named "<name> [<unit>]") when they share a time base,

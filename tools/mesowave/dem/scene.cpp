@@ -1,7 +1,9 @@
 #include "mesowave/dem/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
@@ -91,10 +93,19 @@ SphereTarget read_target(Keys& k) {
   if (has_face) {
     t.kind = SphereTarget::Kind::patch;
     t.patch.face = Face::parse(*k.text("face"));
-    auto centre = k.numbers("centre_mm", 3);
+    if (k.has("centre_mm") && k.has("centre_rel")) throw InputError(k.where() + ": give centre_mm or centre_rel, not both");
+    auto centre = k.numbers(k.has("centre_rel") ? "centre_rel" : "centre_mm", 3);
     auto size = k.numbers("patch_mm", 2);
-    if (!centre || !size) throw InputError(k.where() + " on a face needs centre_mm = [x, y, z] and patch_mm = [a, b]");
-    t.patch.centre_m = vec_mm(*centre);
+    if (!centre || !size)
+      throw InputError(k.where() + " on a face needs centre_mm = [x, y, z] (or centre_rel, fractions of the packing's "
+                       "extent) and patch_mm = [a, b]");
+    t.patch.relative = k.has("centre_rel");
+    if (t.patch.relative) {
+      for (int d = 0; d < 3; ++d)
+        t.patch.centre_rel[d] = require_in_range(k.where() + ".centre_rel", (*centre)[std::size_t(d)], 0.0, 1.0);
+    } else {
+      t.patch.centre_m = vec_mm(*centre);
+    }
     t.patch.size_m[0] = require_positive(k.where() + ".patch_mm", (*size)[0], "mm") * units::mm;
     t.patch.size_m[1] = require_positive(k.where() + ".patch_mm", (*size)[1], "mm") * units::mm;
     if (auto depth = k.number("depth_mm")) t.patch.depth_m = require_positive(k.where() + ".depth_mm", *depth, "mm") * units::mm;
@@ -111,6 +122,183 @@ SphereTarget read_target(Keys& k) {
   return t;
 }
 
+
+double read_ramp(Keys& k) {
+  return require_in_range(k.where() + ".ramp_us", k.number("ramp_us", 0.0), 0.0, 1e12, "us") * units::us;
+}
+
+void read_burst_or_platen(Keys& k, ActuatorSpec& spec) {
+  spec.target = read_target(k);
+  spec.direction = k.text("direction", spec.target.kind == SphereTarget::Kind::patch ? "inward" : "");
+  if (spec.direction.empty()) throw InputError(k.where() + " needs direction (x, -x, ...) when it is not on a face");
+  direction_vector(spec.direction, spec.target, k.where(), std::nullopt, true);
+  if (spec.direction == "magnitude" || spec.direction == "normal")
+    throw InputError(k.where() + ".direction must be inward or an axis (x, -x, ...)");
+  static const std::map<std::string, std::string> amplitude_key = {
+      {"force", "amplitude_N"}, {"displacement", "amplitude_nm"}, {"velocity", "velocity_mm_s"}};
+  if (!amplitude_key.count(spec.kind))
+    throw InputError(k.where() + ".kind (\"" + spec.kind + "\") must be force, displacement, velocity or wall");
+  for (const auto& [kind, key] : amplitude_key)
+    if (kind != spec.kind && k.has(key))
+      throw InputError(k.where() + ": a " + spec.kind + " actuator takes " + amplitude_key.at(spec.kind) + ", not " + key);
+  const std::string key = amplitude_key.at(spec.kind);
+  const double scale = spec.kind == "force" ? 1.0 : spec.kind == "displacement" ? units::nm : units::mm;
+  spec.amplitude = require_finite(k.where() + "." + key, k.required_number(key)) * scale;
+  if (spec.kind != "velocity") {
+    spec.frequency_hz = require_positive(k.where() + ".frequency_kHz", k.required_number("frequency_kHz"), "kHz") * units::kHz;
+    spec.cycles = require_positive(k.where() + ".cycles", k.number("cycles", 5.0));
+  }
+  spec.delay_s = require_in_range(k.where() + ".delay_us", k.number("delay_us", 0.0), 0.0, 1e9, "us") * units::us;
+  if (spec.kind == "velocity") spec.ramp_s = read_ramp(k);
+}
+
+// A platen: the whole face, moving inward (or fixed).
+void read_wall(Keys& k, ActuatorSpec& spec) {
+  auto face = k.text("face");
+  if (!face) throw InputError(k.where() + ": a wall needs face (x-, x+, y-, y+, z- or z+)");
+  for (const char* key : {"centre_mm", "patch_mm", "point_mm", "sphere", "direction", "amplitude_N"})
+    if (k.has(key)) throw InputError(k.where() + ": a wall covers its whole face and moves along its normal; drop " + key);
+  spec.target.kind = SphereTarget::Kind::patch;
+  spec.target.patch.face = Face::parse(*face);
+  spec.target.patch.size_m[0] = spec.target.patch.size_m[1] = std::numeric_limits<double>::infinity();
+  spec.direction = "inward";
+  spec.amplitude = require_in_range(k.where() + ".velocity_mm_s", k.number("velocity_mm_s", 0.0), 0.0, 1e6, "mm/s") * units::mm;
+  spec.delay_s = require_in_range(k.where() + ".delay_us", k.number("delay_us", 0.0), 0.0, 1e9, "us") * units::us;
+  spec.ramp_s = read_ramp(k);
+}
+
+void read_force_sensor(Keys& k, SensorSpec& spec, const std::vector<ActuatorSpec>& actuators) {
+  spec.kind = SensorSpec::Kind::force;
+  auto actuator = k.text("actuator");
+  if (!actuator) throw InputError(k.where() + ": quantity force needs actuator = NAME (the force it applies)");
+  bool known = false;
+  for (const auto& a : actuators) known = known || a.name == *actuator;
+  if (!known) throw InputError(k.where() + ": no actuator named \"" + *actuator + "\"");
+  spec.actuator = *actuator;
+}
+
+void read_motion_sensor(Keys& k, SensorSpec& spec, const std::string& quantity) {
+  spec.kind = SensorSpec::Kind::motion;
+  spec.quantity = parse_motion_quantity(quantity);
+  spec.target = read_target(k);
+  spec.component = k.text("component", spec.target.kind == SphereTarget::Kind::patch ? "normal" : "");
+  if (spec.component.empty()) throw InputError(k.where() + " needs component (x, -x, ..., magnitude) when it is not on a face");
+  if (spec.component == "inward") throw InputError(k.where() + ".component must be normal, an axis or magnitude");
+  direction_vector(spec.component, spec.target, k.where(), std::nullopt, true);
+}
+
+// An extensometer: two pads on one face, gauge_mm apart along component and
+// centred on centre_mm, or the two end spheres of a line.
+void read_extensometer(Keys& k, SensorSpec& spec) {
+  spec.kind = SensorSpec::Kind::strain;
+  spec.component = k.text("component", "");
+  static const std::set<std::string> axes = {"x", "y", "z", "line"};
+  if (!axes.count(spec.component))
+    throw InputError(k.where() + ": an extensometer needs component = \"x\", \"y\", \"z\" or \"line\" (its gauge axis)");
+  if (k.has("between")) {
+    const toml::array* a = k.get("between")->as_array();
+    if (!a || a->size() != 2 || !(*a)[0].value<std::string>() || !(*a)[1].value<std::string>())
+      throw InputError(k.where() + ".between must be [\"first\", \"last\"] (the end spheres of a line)");
+    for (int e = 0; e < 2; ++e) {
+      const std::string which = *(*a)[std::size_t(e)].value<std::string>();
+      if (which != "first" && which != "last")
+        throw InputError(k.where() + ".between: \"" + which + "\" must be \"first\" or \"last\"");
+      spec.ends[e].kind = SphereTarget::Kind::end;
+      spec.ends[e].last = which == "last";
+    }
+    if (spec.ends[0].last == spec.ends[1].last) throw InputError(k.where() + ".between names one sphere twice");
+    return;
+  }
+  const SphereTarget centre = read_target(k);
+  if (centre.kind != SphereTarget::Kind::patch)
+    throw InputError(k.where() + ": an extensometer sits on a face (face, centre_mm, gauge_mm, patch_mm) or between the "
+                     "ends of a line (between = [\"first\", \"last\"])");
+  if (spec.component == "line") throw InputError(k.where() + ": component \"line\" needs between = [\"first\", \"last\"]");
+  const int axis = spec.component[0] - 'x';
+  if (axis == centre.patch.face.axis)
+    throw InputError(k.where() + ": component " + spec.component + " is normal to face " + centre.patch.face.name() +
+                     "; a face's extensometer measures along the face");
+  // The pads sit gauge/2 either side of the centre, in the centre's own terms.
+  const bool relative = centre.patch.relative;
+  const char* key = relative ? "gauge_rel" : "gauge_mm";
+  if (k.has(relative ? "gauge_mm" : "gauge_rel"))
+    throw InputError(k.where() + ": centre_" + (relative ? "rel takes gauge_rel" : "mm takes gauge_mm") +
+                     " (both in the same terms)");
+  const double gauge = require_positive(k.where() + "." + key, k.required_number(key), relative ? "" : "mm") *
+                       (relative ? 1.0 : units::mm);
+  for (int e = 0; e < 2; ++e) {
+    spec.ends[e] = centre;
+    (relative ? spec.ends[e].patch.centre_rel : spec.ends[e].patch.centre_m)[axis] += (e == 0 ? -0.5 : 0.5) * gauge;
+  }
+}
+
+UniaxialTestSpec read_test(Keys& k, const std::vector<SensorSpec>& sensors) {
+  UniaxialTestSpec t;
+  const std::string kind = k.text("kind", "");
+  if (kind == "compression") t.kind = UniaxialTestSpec::Kind::compression;
+  else if (kind == "tension") t.kind = UniaxialTestSpec::Kind::tension;
+  else throw InputError(k.where() + ".kind (\"" + kind + "\") must be compression or tension");
+  auto names = [&](const std::string& key, SensorSpec::Kind want, const char* what, bool required) {
+    std::vector<std::string> out;
+    const toml::node* n = k.get(key);
+    if (!n) {
+      if (required) throw InputError(k.where() + " needs " + key + " = [sensor names] (" + what + ")");
+      return out;
+    }
+    if (auto single = n->value<std::string>()) out.push_back(*single);
+    else if (const toml::array* a = n->as_array())
+      for (const auto& e : *a) {
+        auto v = e.value<std::string>();
+        if (!v) throw InputError(k.where() + "." + key + " must list sensor names");
+        out.push_back(*v);
+      }
+    else throw InputError(k.where() + "." + key + " must list sensor names");
+    if (out.empty() && required) throw InputError(k.where() + "." + key + " is empty (" + what + ")");
+    for (const auto& name : out) {
+      const SensorSpec* found = nullptr;
+      for (const auto& s : sensors) if (s.name == name) found = &s;
+      if (!found) throw InputError(k.where() + "." + key + ": no sensor named \"" + name + "\"");
+      if (found->kind != want) throw InputError(k.where() + "." + key + ": sensor " + name + " is not " + what);
+    }
+    return out;
+  };
+  t.load = names("load", SensorSpec::Kind::force, "a force sensor", true);
+  t.axial = names("axial", SensorSpec::Kind::strain, "an extensometer", true);
+  t.lateral = names("lateral", SensorSpec::Kind::strain, "an extensometer", false);
+  const auto broken = names("broken_bonds", SensorSpec::Kind::broken_bonds, "a broken_bonds sensor", false);
+  if (broken.size() > 1) throw InputError(k.where() + ".broken_bonds names one sensor");
+  if (!broken.empty()) t.broken_bonds = broken.front();
+  std::optional<double> interval;
+  for (const auto& name : t.sensor_names())
+    for (const auto& s : sensors)
+      if (s.name == name) {
+        if (interval && *interval != s.sample_interval_s)
+          throw InputError(k.where() + ": the test's sensors must sample together; " + name +
+                           " has another sample_interval_ns than " + t.load.front());
+        interval = s.sample_interval_s;
+      }
+  if (auto area = k.number("area_mm2")) t.area_m2 = require_positive(k.where() + ".area_mm2", *area, "mm2") * units::mm * units::mm;
+  const bool pct = k.has("modulus_levels_pct"), abs = k.has("modulus_levels_MPa");
+  if (pct && abs) throw InputError(k.where() + ": give modulus_levels_pct or modulus_levels_MPa, not both");
+  if (pct || abs) {
+    const auto v = *k.numbers(pct ? "modulus_levels_pct" : "modulus_levels_MPa", 2);
+    const std::string key = k.where() + (pct ? ".modulus_levels_pct" : ".modulus_levels_MPa");
+    if (!(v[0] >= 0 && v[1] > v[0] && (abs || v[1] < 100)))
+      throw InputError(key + " [" + format_number(v[0]) + ", " + format_number(v[1]) + "] must rise from a lower to an upper level" +
+                       (pct ? " below 100 % of the peak" : ""));
+    t.levels_absolute = abs;
+    t.levels[0] = pct ? v[0] / 100 : v[0] * units::MPa;
+    t.levels[1] = pct ? v[1] / 100 : v[1] * units::MPa;
+  }
+  t.stop_drop = require_in_range(k.where() + ".stop_drop_pct", k.number("stop_drop_pct", 0.0), 0.0, 99.0, "%") / 100;
+  t.stop_armed_above_Pa = require_in_range(k.where() + ".stop_armed_above_MPa", k.number("stop_armed_above_MPa", 0.0), 0.0, 1e6, "MPa") * units::MPa;
+  if (t.stop_drop > 0 && !k.has("stop_armed_above_MPa"))
+    throw InputError(k.where() + ": stop_drop_pct needs stop_armed_above_MPa, the stress above which a drop counts (a "
+                     "testing machine's break detection; the first load steps are noisy)");
+  t.stop_at_Pa = require_in_range(k.where() + ".stop_at_MPa", k.number("stop_at_MPa", 0.0), 0.0, 1e6, "MPa") * units::MPa;
+  t.inertial_number_bound = require_in_range(k.where() + ".inertial_number_bound", k.number("inertial_number_bound", 1e-4), 0.0, 1.0);
+  return t;
+}
 }  // namespace
 
 std::string SphereTarget::describe() const {
@@ -126,8 +314,12 @@ std::string SphereTarget::describe() const {
   };
   switch (kind) {
     case Kind::patch:
+      if (std::isinf(patch.size_m[0])) return "face " + patch.face.name();
       return format_number(patch.size_m[0] / units::mm) + " x " + format_number(patch.size_m[1] / units::mm) +
-             " mm patch on face " + patch.face.name() + " at " + mm(patch.centre_m);
+             " mm patch on face " + patch.face.name() + " at " +
+             (patch.relative ? "(" + format_number(patch.centre_rel.x) + ", " + format_number(patch.centre_rel.y) + ", " +
+                                   format_number(patch.centre_rel.z) + ") of the packing's extent"
+                             : mm(patch.centre_m));
     case Kind::point: return "sphere nearest to " + mm(point_m);
     case Kind::end: return last ? "last sphere of the line" : "first sphere of the line";
   }
@@ -157,6 +349,28 @@ Vec3 direction_vector(const std::string& name, const SphereTarget& target, const
   return v;
 }
 
+const std::vector<std::string>& material_keys() {
+  static const std::vector<std::string> keys = {"E_dem_GPa", "nu_dem", "friction_angle_deg", "T_MPa",
+                                                "C_MPa",     "density_kg_m3", "damping", "bond_factor"};
+  return keys;
+}
+
+void set_material_value(Scene& s, const std::string& key, double value, const std::string& name) {
+  CohesiveFrictionalMaterial& m = s.material;
+  if (key == "E_dem_GPa") m.young_Pa = require_positive(name, value, "GPa") * units::GPa;
+  else if (key == "nu_dem") m.stiffness_ratio = require_in_range(name, value, 0.0, 10.0);
+  else if (key == "friction_angle_deg")
+    m.friction_angle_rad = require_in_range(name, value, 0.0, 89.9, "deg") * std::numbers::pi / 180.0;
+  else if (key == "T_MPa") m.tensile_strength_Pa = require_positive(name, value, "MPa") * units::MPa;
+  else if (key == "C_MPa") m.cohesion_Pa = require_positive(name, value, "MPa") * units::MPa;
+  else if (key == "density_kg_m3") {
+    m.density_kg_m3 = require_positive(name, value, "kg/m3");
+    s.density_given = true;
+  } else if (key == "damping") m.damping = require_in_range(name, value, 0.0, 0.99);
+  else if (key == "bond_factor") m.bond_factor = require_positive(name, value);
+  else throw InputError(name + ": unknown material key \"" + key + "\"");
+}
+
 Scene parse_scene(const std::string& text, const std::string& origin) {
   toml::table root;
   try {
@@ -165,7 +379,7 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
     throw InputError(origin + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
   }
   static const std::set<std::string> sections = {"scene", "packing", "material", "time", "model",
-                                                 "actuator", "sensor", "output"};
+                                                 "actuator", "sensor", "test", "output"};
   for (const auto& [key, node] : root)
     if (!sections.count(std::string(key.str())))
       throw InputError(origin + ": unknown section [" + std::string(key.str()) + "]");
@@ -186,19 +400,9 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
   }
   {
     Keys k(table_or_empty(root, "material", origin), origin + ": [material]");
-    auto& m = s.material;
-    m.young_Pa = require_positive(k.where() + ".E_dem_GPa", k.required_number("E_dem_GPa"), "GPa") * units::GPa;
-    m.stiffness_ratio = require_in_range(k.where() + ".nu_dem", k.number("nu_dem", 0.0), 0.0, 10.0);
-    m.friction_angle_rad = require_in_range(k.where() + ".friction_angle_deg", k.number("friction_angle_deg", 0.0),
-                                            0.0, 89.9, "deg") * std::numbers::pi / 180.0;
-    if (auto T = k.number("T_MPa")) m.tensile_strength_Pa = require_positive(k.where() + ".T_MPa", *T, "MPa") * units::MPa;
-    if (auto C = k.number("C_MPa")) m.cohesion_Pa = require_positive(k.where() + ".C_MPa", *C, "MPa") * units::MPa;
-    if (auto rho = k.number("density_kg_m3")) {
-      m.density_kg_m3 = require_positive(k.where() + ".density_kg_m3", *rho, "kg/m3");
-      s.density_given = true;
-    }
-    m.damping = require_in_range(k.where() + ".damping", k.number("damping", 0.0), 0.0, 0.99);
-    m.bond_factor = require_positive(k.where() + ".bond_factor", k.number("bond_factor", 1.1));
+    if (!k.has("E_dem_GPa")) throw InputError(k.where() + " needs E_dem_GPa");
+    for (const std::string& key : material_keys())
+      if (auto v = k.number(key)) set_material_value(s, key, *v, k.where() + "." + key);
     k.finish();
   }
   {
@@ -235,27 +439,11 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
       spec.name = k.text("name", "");
       unique_name(spec.name, k.where());
       spec.kind = k.text("kind", "force");
-      spec.target = read_target(k);
-      spec.direction = k.text("direction", spec.target.kind == SphereTarget::Kind::patch ? "inward" : "");
-      if (spec.direction.empty()) throw InputError(k.where() + " needs direction (x, -x, ...) when it is not on a face");
-      direction_vector(spec.direction, spec.target, k.where(), std::nullopt, true);
-      if (spec.direction == "magnitude" || spec.direction == "normal")
-        throw InputError(k.where() + ".direction must be inward or an axis (x, -x, ...)");
-      static const std::map<std::string, std::string> amplitude_key = {
-          {"force", "amplitude_N"}, {"displacement", "amplitude_nm"}, {"velocity", "velocity_mm_s"}};
-      if (!amplitude_key.count(spec.kind))
-        throw InputError(k.where() + ".kind (\"" + spec.kind + "\") must be force, displacement or velocity");
-      for (const auto& [kind, key] : amplitude_key)
-        if (kind != spec.kind && k.has(key))
-          throw InputError(k.where() + ": a " + spec.kind + " actuator takes " + amplitude_key.at(spec.kind) + ", not " + key);
-      const std::string key = amplitude_key.at(spec.kind);
-      const double scale = spec.kind == "force" ? 1.0 : spec.kind == "displacement" ? units::nm : units::mm;
-      spec.amplitude = require_finite(k.where() + "." + key, k.required_number(key)) * scale;
-      if (spec.kind != "velocity") {
-        spec.frequency_hz = require_positive(k.where() + ".frequency_kHz", k.required_number("frequency_kHz"), "kHz") * units::kHz;
-        spec.cycles = require_positive(k.where() + ".cycles", k.number("cycles", 5.0));
+      if (spec.kind == "wall") {
+        read_wall(k, spec);
+      } else {
+        read_burst_or_platen(k, spec);
       }
-      spec.delay_s = require_in_range(k.where() + ".delay_us", k.number("delay_us", 0.0), 0.0, 1e9, "us") * units::us;
       k.finish();
       s.actuators.push_back(std::move(spec));
     }
@@ -271,30 +459,20 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
       spec.name = k.text("name", "");
       unique_name(spec.name, k.where());
       const std::string quantity = k.text("quantity", "acceleration");
-      if (quantity == "force") {
-        auto actuator = k.text("actuator");
-        if (!actuator) throw InputError(k.where() + ": quantity force needs actuator = NAME (the force it applies)");
-        bool known = false;
-        for (const auto& a : s.actuators) known = known || a.name == *actuator;
-        if (!known) throw InputError(k.where() + ": no actuator named \"" + *actuator + "\"");
-        spec.actuator = *actuator;
-        if (auto interval = k.number("sample_interval_ns"))
-          spec.sample_interval_s = require_positive(k.where() + ".sample_interval_ns", *interval, "ns") * units::ns;
-        k.finish();
-        s.sensors.push_back(std::move(spec));
-        continue;
-      }
-      spec.quantity = parse_motion_quantity(quantity);
-      spec.target = read_target(k);
-      spec.component = k.text("component", spec.target.kind == SphereTarget::Kind::patch ? "normal" : "");
-      if (spec.component.empty()) throw InputError(k.where() + " needs component (x, -x, ..., magnitude) when it is not on a face");
-      if (spec.component == "inward") throw InputError(k.where() + ".component must be normal, an axis or magnitude");
-      direction_vector(spec.component, spec.target, k.where(), std::nullopt, true);
+      if (quantity == "force") read_force_sensor(k, spec, s.actuators);
+      else if (quantity == "strain") read_extensometer(k, spec);
+      else if (quantity == "broken_bonds") spec.kind = SensorSpec::Kind::broken_bonds;
+      else read_motion_sensor(k, spec, quantity);
       if (auto interval = k.number("sample_interval_ns"))
         spec.sample_interval_s = require_positive(k.where() + ".sample_interval_ns", *interval, "ns") * units::ns;
       k.finish();
       s.sensors.push_back(std::move(spec));
     }
+  }
+  if (root.contains("test")) {
+    Keys k(table_or_empty(root, "test", origin), origin + ": [test]");
+    s.test = read_test(k, s.sensors);
+    k.finish();
   }
   {
     Keys k(table_or_empty(root, "output", origin), origin + ": [output]");

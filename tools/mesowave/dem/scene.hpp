@@ -17,9 +17,17 @@
 //               [+ depth_mm] | point_mm | sphere = "first"/"last"), direction (inward | line | x | -x | ...),
 //               amplitude_N (force) or amplitude_nm (displacement) with frequency_kHz, cycles;
 //               velocity_mm_s (velocity: a platen moving at constant speed); delay_us
+//   [[actuator]] kind = "wall": a rigid frictionless wall on a face (face, velocity_mm_s inward, delay_us)
 //   [[sensor]]  name, quantity (acceleration | velocity | displacement), component
 //               (normal | line | x | -x | y | ... | magnitude), where (as for actuators), sample_interval_ns;
-//               or quantity = "force" with actuator = NAME: the force that actuator applies
+//               or quantity = "force" with actuator = NAME: the force that actuator applies;
+//               or quantity = "strain": an extensometer along component (x | y | z | line) between two
+//               pads (face + centre_mm + gauge_mm + patch_mm) or between = ["first", "last"];
+//               or quantity = "broken_bonds": the count of broken bonds
+//   [test]      a virtual lab test read from those sensors (uniaxial_test.hpp): kind (compression |
+//               tension), load, axial, lateral, broken_bonds (sensor names), area_mm2,
+//               modulus_levels_pct or modulus_levels_MPa, stop_drop_pct, stop_armed_above_MPa,
+//               stop_at_MPa, inertial_number_bound
 //   [output]    snapshot_interval_us (0 = none)
 #include <filesystem>
 #include <optional>
@@ -29,6 +37,7 @@
 #include "mesowave/dem/material.hpp"
 #include "mesowave/dem/motion_sensor.hpp"
 #include "mesowave/dem/sphere_selection.hpp"
+#include "mesowave/dem/uniaxial_test.hpp"
 
 namespace mesowave::dem {
 
@@ -43,21 +52,24 @@ struct SphereTarget {
 
 struct ActuatorSpec {
   std::string name;
-  std::string kind = "force";       ///< force | displacement | velocity
+  std::string kind = "force";       ///< force | displacement | velocity | wall
   SphereTarget target;
   std::string direction = "inward"; ///< inward (needs a face) | line | -line | x | -x | y | -y | z | -z
-  double amplitude = 0;             ///< N (force), m (displacement) or m/s (velocity)
+  double amplitude = 0;             ///< N (force), m (displacement) or m/s (velocity, wall)
   double frequency_hz = 0;
   double cycles = 5;
   double delay_s = 0;
+  double ramp_s = 0;                ///< velocity, wall: the time over which the velocity is reached
 };
 
 struct SensorSpec {
+  enum class Kind { motion, force, strain, broken_bonds } kind = Kind::motion;
   std::string name;
-  std::string actuator;  ///< set: this sensor records the force that actuator applies (quantity = "force")
+  std::string actuator;  ///< kind force: the actuator whose force it records
   MotionQuantity quantity = MotionQuantity::acceleration;
   std::string component = "normal";  ///< normal (outward, needs a face) | line | x | -x | ... | magnitude
   SphereTarget target;
+  SphereTarget ends[2];              ///< kind strain: the extensometer's two pads
   double sample_interval_s = 0;      ///< 0: every step
 };
 
@@ -73,10 +85,19 @@ struct Scene {
   int energy_check_steps = 100;
   std::vector<ActuatorSpec> actuators;
   std::vector<SensorSpec> sensors;
+  UniaxialTestSpec test;
   double snapshot_interval_s = 0;
 };
 
 Scene parse_scene(const std::string& text, const std::string& origin);
+
+/// The keys of a scene's [material] table, in order (E_dem_GPa, nu_dem, ...).
+const std::vector<std::string>& material_keys();
+/// Sets one [material] value with the scene file's checks; InputError naming
+/// the value as `name` ("scene.toml: [material].nu_dem", "--nu-dem") when it is
+/// out of range or the key is unknown.
+void set_material_value(Scene& scene, const std::string& key, double value, const std::string& name);
+
 /// InputError for a missing file, bad TOML, unknown keys or values out of range.
 Scene read_scene_file(const std::filesystem::path& path);
 

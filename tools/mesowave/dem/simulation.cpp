@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <numbers>
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
@@ -9,9 +10,11 @@
 #include "mesowave/dem/axial_chain.hpp"
 #include "mesowave/dem/cohesive_frictional_contact.hpp"
 #include "mesowave/dem/displacement_actuator.hpp"
+#include "mesowave/dem/extensometer.hpp"
 #include "mesowave/dem/force_actuator.hpp"
 #include "mesowave/dem/linear_bonded_network.hpp"
 #include "mesowave/dem/motion_sensor.hpp"
+#include "mesowave/dem/rigid_wall.hpp"
 #include "mesowave/dem/sphere_selection.hpp"
 
 namespace mesowave::dem {
@@ -34,6 +37,41 @@ std::int64_t whole_steps(double interval, double dt, const std::string& what) {
   if (steps < 1 || std::abs(ratio - double(steps)) > 1e-6 * ratio)
     throw InputError(what + " (" + ns_text(interval) + ") must be a whole number of time steps of " + ns_text(dt));
   return steps;
+}
+
+void add_boundary_stiffness(CriticalTimeStep& c, double stiffness_per_mass, double damping) {
+  c.boundary_lambda = stiffness_per_mass;
+  c.lambda_max += stiffness_per_mass;
+  c.eigenvalue_s = 2.0 / std::sqrt(c.lambda_max);
+  c.limit_s = c.eigenvalue_s / std::sqrt(1.0 + damping);
+  const double gershgorin = 4.0 / (c.stiffness_bound_s * c.stiffness_bound_s) + stiffness_per_mass;
+  c.stiffness_bound_s = 2.0 / std::sqrt(gershgorin);
+}
+
+// The loaded area (the bounding box across the load axis, or pi r^2 for a
+// line of spheres), the mean sphere diameter and the particle density.
+UniaxialTestSpecimen describe_specimen(const Model& model, const Box& box, const std::optional<Vec3>& line,
+                                       const CohesiveFrictionalMaterial& m, const Scene& scene) {
+  UniaxialTestSpecimen s;
+  double r_sum = 0;
+  for (std::size_t k = 0; k < model.sphere_count(); ++k) r_sum += model.radius(k);
+  const double r_mean = r_sum / double(model.sphere_count());
+  s.grain_diameter_m = 2 * r_mean;
+  s.particle_density_kg_m3 = m.density_kg_m3;
+  s.area_m2 = scene.test.area_m2;
+  if (s.area_m2 > 0) return s;
+  if (line) {
+    s.area_m2 = std::numbers::pi * r_mean * r_mean;
+    return s;
+  }
+  const SensorSpec* axial = nullptr;
+  for (const auto& sensor : scene.sensors)
+    if (sensor.name == scene.test.axial.front()) axial = &sensor;
+  if (axial->component == "line") throw InputError("[test]: an extensometer along \"line\" needs a line of spheres");
+  const int a = axial->component[0] - 'x';
+  const int p = (a + 1) % 3, q = (a + 2) % 3;
+  s.area_m2 = (box.upper[p] - box.lower[p]) * (box.upper[q] - box.lower[q]);
+  return s;
 }
 
 }  // namespace
@@ -59,10 +97,16 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     const std::string who = "actuator " + a.name;
     loads.push_back({&a, resolve(a.target, spheres, box, who), direction_vector(a.direction, a.target, who, line)});
   }
-  std::vector<std::vector<std::size_t>> sensor_spheres;
-  for (const auto& sensor : scene_.sensors)
-    sensor_spheres.push_back(sensor.actuator.empty() ? resolve(sensor.target, spheres, box, "sensor " + sensor.name)
-                                                     : std::vector<std::size_t>{});
+  // Spheres of each sensor: its patch (motion), or its two pads (an extensometer).
+  std::vector<std::vector<std::size_t>> sensor_spheres, sensor_pads;
+  for (const auto& sensor : scene_.sensors) {
+    const std::string who = "sensor " + sensor.name;
+    const bool motion = sensor.kind == SensorSpec::Kind::motion;
+    const bool strain = sensor.kind == SensorSpec::Kind::strain;
+    sensor_spheres.push_back(motion ? resolve(sensor.target, spheres, box, who) : std::vector<std::size_t>{});
+    sensor_pads.push_back(strain ? resolve(sensor.ends[1], spheres, box, who + " (second pad)") : std::vector<std::size_t>{});
+    if (strain) sensor_spheres.back() = resolve(sensor.ends[0], spheres, box, who + " (first pad)");
+  }
   const std::string requested = options_.model != "auto" ? options_.model : scene_.model;
   choice_ = choose_model(requested, scene_, spheres, bonds, loads);
 
@@ -96,15 +140,6 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     model_ = std::make_unique<CohesiveFrictionalContact>(std::move(spheres), std::move(bonds), m);
   }
 
-  double r_min = model_->radius(0);
-  for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
-  dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.young_Pa, m.damping);
-  if (options_.refuse_unstable_dt && !(scene_.dt_s <= dt_cr_.limit_s))
-    throw InputError("time step dt = " + ns_text(scene_.dt_s) + " exceeds the stable limit of this packing, " +
-                     ns_text(dt_cr_.limit_s) + " = 2/sqrt((1 + alpha_d) lambda_max) with lambda_max of the bonded "
-                     "network (the paper's estimate min R sqrt(rho/E) is " + ns_text(dt_cr_.paper_estimate_s) +
-                     "); choose dt_ns <= " + format_number(std::floor(dt_cr_.limit_s * 1e9 * 1000) / 1000));
-
   const double ratio = scene_.duration_s / scene_.dt_s;
   steps_ = std::int64_t(std::ceil(ratio - 1e-9));
 
@@ -118,9 +153,15 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     const ActuatorSpec& a = *loads[i].spec;
     actuator_placements_.push_back({a.name, a.kind, packing_indices(loads[i].spheres), loads[i].direction, a.amplitude,
                                     a.frequency_hz, a.cycles, a.delay_s});
+    if (a.kind == "wall") {
+      actuators_.push_back(std::make_unique<RigidWall>(a.name, *model_, box, a.target.patch.face, m.young_Pa,
+                                                       VelocityRamp{a.amplitude, a.delay_s, a.ramp_s},
+                                                       a.amplitude * scene_.duration_s));
+      continue;
+    }
     if (a.kind == "velocity") {
       actuators_.push_back(std::make_unique<DisplacementActuator>(DisplacementActuator::constant_velocity(
-          a.name, loads[i].spheres, loads[i].direction, a.amplitude, a.delay_s)));
+          a.name, loads[i].spheres, loads[i].direction, VelocityRamp{a.amplitude, a.delay_s, a.ramp_s})));
       continue;
     }
     const signal::HannBurst burst(a.frequency_hz, a.cycles, a.amplitude, a.delay_s);
@@ -133,7 +174,7 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     const std::vector<std::size_t>& chosen = sensor_spheres[i];
     const std::int64_t every =
         sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
-    if (!sensor.actuator.empty()) {
+    if (sensor.kind == SensorSpec::Kind::force) {
       const Actuator* source = nullptr;
       for (const auto& a : actuators_)
         if (a->name() == sensor.actuator) source = a.get();
@@ -141,16 +182,43 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
       sensor_placements_.push_back({sensor.name, "force of actuator " + sensor.actuator, {}, {}});
       continue;
     }
+    if (sensor.kind == SensorSpec::Kind::broken_bonds) {
+      sensors_.push_back(std::make_unique<BrokenBondCounter>(sensor.name, every));
+      sensor_placements_.push_back({sensor.name, "broken bonds", {}, {}});
+      continue;
+    }
+    if (sensor.kind == SensorSpec::Kind::strain) {
+      const Vec3 axis = direction_vector(sensor.component, sensor.target, who, line);
+      std::vector<std::uint32_t> both = packing_indices(chosen);
+      for (std::uint32_t k : packing_indices(sensor_pads[i])) both.push_back(k);
+      sensor_placements_.push_back({sensor.name, "strain", both, axis});
+      sensors_.push_back(std::make_unique<Extensometer>(sensor.name, *model_, chosen, sensor_pads[i], axis,
+                                                        sensor.component, every));
+      continue;
+    }
     const Vec3 component = direction_vector(sensor.component, sensor.target, who, line);
     sensor_placements_.push_back({sensor.name, to_string(sensor.quantity), packing_indices(chosen), component});
-    const std::int64_t interval =
-        sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
     Vec3 position{};
     for (std::size_t k : chosen) position += model_->reference_position(k);
     position = (1.0 / double(chosen.size())) * position;
     sensors_.push_back(std::make_unique<MotionSensor>(sensor.name, chosen, sensor.quantity, component, sensor.component,
-                                                      interval, position));
+                                                      every, position));
   }
+  double r_min = model_->radius(0);
+  for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
+  dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.young_Pa, m.damping);
+  // Walls add a contact spring to the spheres they touch: by Weyl's inequality
+  // lambda_max(K + D) <= lambda_max(K) + max D, D the largest k_w / m.
+  double boundary = 0;
+  for (const auto& a : actuators_) boundary = std::max(boundary, a->added_stiffness_per_mass());
+  if (boundary > 0) add_boundary_stiffness(dt_cr_, boundary, m.damping);
+  if (options_.refuse_unstable_dt && !(scene_.dt_s <= dt_cr_.limit_s))
+    throw InputError("time step dt = " + ns_text(scene_.dt_s) + " exceeds the stable limit of this packing, " +
+                     ns_text(dt_cr_.limit_s) + " = 2/sqrt((1 + alpha_d) lambda_max) with lambda_max of the bonded "
+                     "network (the paper's estimate min R sqrt(rho/E) is " + ns_text(dt_cr_.paper_estimate_s) +
+                     "); choose dt_ns <= " + format_number(std::floor(dt_cr_.limit_s * 1e9 * 1000) / 1000));
+
+  if (scene_.test.active()) test_specimen_ = describe_specimen(*model_, box, line, m, scene_);
   setup_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -193,7 +261,21 @@ RunReport Simulation::run() {
   std::int64_t snapshot_index = 0;
   if (snapshot_every > 0) options_.on_snapshot(model, 0.0, snapshot_index++);
 
+  // A test's stop rule reads the load sensors whenever they have a new sample.
+  std::optional<UniaxialTestMonitor> monitor;
+  std::vector<const Sensor*> loads;
+  if (test_specimen_) {
+    monitor.emplace(scene_.test, test_specimen_->area_m2);
+    for (const auto& name : scene_.test.load)
+      for (const auto& s : sensors_)
+        if (s->name() == name) loads.push_back(s.get());
+  }
+  std::vector<double> latest(loads.size());
+  std::size_t seen = 0;
+  std::string stop_reason;
+
   double initial_stored = 0, max_work = 0, peak_stored = 0;
+  std::int64_t done = 0;
   const auto start = std::chrono::steady_clock::now();
   for (std::int64_t n = 0; n < steps_; ++n) {
     const double t = double(n) * dt;
@@ -221,14 +303,26 @@ RunReport Simulation::run() {
     }
     if (snapshot_every > 0 && (n + 1) % snapshot_every == 0) options_.on_snapshot(model, double(n + 1) * dt, snapshot_index++);
     if (options_.on_progress) options_.on_progress(n + 1, steps_);
+    done = n + 1;
+    if (monitor && loads.front()->samples().size() > seen) {
+      seen = loads.front()->samples().size();
+      for (std::size_t i = 0; i < loads.size(); ++i) latest[i] = loads[i]->samples().back();
+      if (monitor->stop_after(latest)) {
+        stop_reason = monitor->reason();
+        break;
+      }
+    }
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   RunReport r = describe();
   r.ran = true;
+  r.steps = done;
+  r.duration_s = double(done) * dt;
+  r.stop_reason = stop_reason;
   r.wall_s = wall;
-  r.steps_per_s = wall > 0 ? double(steps_) / wall : 0;
-  r.ns_per_contact_step = steps_ > 0 && r.contacts > 0 ? wall * 1e9 / (double(steps_) * double(r.contacts)) : 0;
+  r.steps_per_s = wall > 0 ? double(done) / wall : 0;
+  r.ns_per_contact_step = done > 0 && r.contacts > 0 ? wall * 1e9 / (double(done) * double(r.contacts)) : 0;
   r.energy = model.energy();
   r.peak_stored_J = peak_stored;
   r.peak_force_ratio = model.peak_force_ratio();
@@ -246,6 +340,7 @@ RunReport Simulation::run() {
                        "strength " + format_number(r.peak_force_ratio) + " >= 1) and would break; rerun with --model full");
   }
   for (const auto& s : sensors_) r.signals.push_back(s->signal(dt));
+  if (test_specimen_) r.test = analyse_uniaxial_test(r.signals, scene_.test, *test_specimen_);
   return r;
 }
 

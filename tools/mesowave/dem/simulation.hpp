@@ -9,12 +9,15 @@
 //     actuators.after_step(t_n)     constraints at t_{n+1}
 //     sensors.record(n)
 //     every energy_check_steps: energies; a non-finite state or stored energy
-//       above 4x (initial + work put in) stops the run with an error.
+//       above 4x (initial + work put in) stops the run with an error;
+//     a [test]'s stop rule (a drop after the peak, a stress reached) ends it early.
 //
 // After the run the linear model's measured peak bond force / strength is
-// checked against the scene's bound (the chain's against 1: no breakage).
+// checked against the scene's bound (the chain's against 1: no breakage), and
+// a [test] is analysed (uniaxial_test.hpp).
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +28,7 @@
 #include "mesowave/dem/scene.hpp"
 #include "mesowave/dem/sensor.hpp"
 #include "mesowave/dem/time_step.hpp"
+#include "mesowave/dem/uniaxial_test.hpp"
 #include "mesowave/signal/signal.hpp"
 
 namespace mesowave::dem {
@@ -62,6 +66,8 @@ struct RunReport {
   bool ran = false;
   double setup_s = 0, wall_s = 0, steps_per_s = 0, ns_per_contact_step = 0;
   EnergyAccount energy;
+  std::string stop_reason;  ///< why the run ended before its duration (a test's stop rule); empty otherwise
+  std::optional<UniaxialTestResult> test;  ///< the [test] analysis
   double peak_stored_J = 0;
   double peak_force_ratio = 0;
   double validity_bound = 0;  ///< the bound the peak ratio was checked against (0: none)
@@ -96,6 +102,7 @@ private:
   double setup_s_ = 0;
   std::vector<std::string> notes_;
   std::vector<Placement> actuator_placements_, sensor_placements_;
+  std::optional<UniaxialTestSpecimen> test_specimen_;
 };
 
 }  // namespace mesowave::dem

@@ -39,8 +39,16 @@ Box bounding_box(const SphereSet& s) {
   return b;
 }
 
+Vec3 patch_centre(const Patch& patch, const Box& box) {
+  if (!patch.relative) return patch.centre_m;
+  Vec3 c;
+  for (int d = 0; d < 3; ++d) c[d] = box.lower[d] + patch.centre_rel[d] * (box.upper[d] - box.lower[d]);
+  return c;
+}
+
 std::vector<std::size_t> spheres_under_patch(const SphereSet& s, const Box& box, const Patch& patch,
                                              const std::string& who) {
+  const Vec3 centre = patch_centre(patch, box);
   double depth = patch.depth_m;
   if (depth < 0) {
     depth = std::numeric_limits<double>::infinity();
@@ -54,15 +62,15 @@ std::vector<std::size_t> spheres_under_patch(const SphereSet& s, const Box& box,
     const double r = s.radius_m[k];
     const double gap = patch.face.upper ? plane - (c[a] + r) : (c[a] - r) - plane;
     if (gap > depth) continue;
-    if (std::abs(c[p] - patch.centre_m[p]) > 0.5 * patch.size_m[0]) continue;
-    if (std::abs(c[q] - patch.centre_m[q]) > 0.5 * patch.size_m[1]) continue;
+    if (std::abs(c[p] - centre[p]) > 0.5 * patch.size_m[0]) continue;
+    if (std::abs(c[q] - centre[q]) > 0.5 * patch.size_m[1]) continue;
     chosen.push_back(k);
   }
   if (chosen.empty())
     throw InputError(who + ": no sphere under its " + format_number(patch.size_m[0] * 1e3) + " x " +
                      format_number(patch.size_m[1] * 1e3) + " mm patch on face " + patch.face.name() + " at (" +
-                     format_number(patch.centre_m.x * 1e3) + ", " + format_number(patch.centre_m.y * 1e3) + ", " +
-                     format_number(patch.centre_m.z * 1e3) + ") mm; enlarge the patch or its depth");
+                     format_number(centre.x * 1e3) + ", " + format_number(centre.y * 1e3) + ", " +
+                     format_number(centre.z * 1e3) + ") mm; enlarge the patch or its depth");
   // Order by packing index so the average is summed the same way whatever the numbering.
   std::sort(chosen.begin(), chosen.end(),
             [&](std::size_t i, std::size_t j) { return s.packing_index[i] < s.packing_index[j]; });

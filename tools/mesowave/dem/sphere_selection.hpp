@@ -30,10 +30,15 @@ Box bounding_box(const SphereSet& spheres);
 
 struct Patch {
   Face face;
-  Vec3 centre_m;               ///< a point on the face (its coordinate along the face normal is ignored)
+  Vec3 centre_m;               ///< a point on the face (its coordinate along the face normal is ignored) ...
+  bool relative = false;       ///< ... or, if set, centre_rel: fractions of the bounding box (0 lower, 1 upper face)
+  Vec3 centre_rel;
   double size_m[2] = {0, 0};   ///< extent along the face's two in-plane axes (in_plane(0), in_plane(1))
   double depth_m = -1;         ///< spheres whose surface comes within this of the face plane; < 0: the smallest radius
 };
+
+/// The patch centre in metres (resolves centre_rel against the box).
+Vec3 patch_centre(const Patch& patch, const Box& box);
 
 /// Spheres whose centre projects inside the patch and whose surface lies
 /// within the patch depth of the face plane; InputError naming `who` if none.

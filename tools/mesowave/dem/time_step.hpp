@@ -19,7 +19,8 @@ struct CriticalTimeStep {
   double paper_estimate_s = 0;   ///< min R sqrt(rho/E)
   double stiffness_bound_s = 0;  ///< 2 / sqrt(Gershgorin bound): a safe step
   double eigenvalue_s = 0;       ///< 2 / sqrt(lambda_max): the undamped stability limit
-  double lambda_max = 0;         ///< largest eigenvalue of M^-1/2 K M^-1/2 [1/s^2]
+  double lambda_max = 0;         ///< largest eigenvalue of M^-1/2 K M^-1/2 [1/s^2], walls included
+  double boundary_lambda = 0;    ///< what walls add to it at most (largest k_w / m) [1/s^2]
   double limit_s = 0;            ///< eigenvalue_s / sqrt(1 + alpha_d): larger steps are refused
   int lanczos_iterations = 0;
 };

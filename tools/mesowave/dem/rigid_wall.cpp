@@ -1,0 +1,64 @@
+#include "mesowave/dem/rigid_wall.hpp"
+
+#include <algorithm>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
+
+namespace mesowave::dem {
+
+RigidWall::RigidWall(std::string name, const Model& model, const Box& box, Face face, double young_Pa,
+                     const VelocityRamp& motion, double reach_m)
+    : name_(std::move(name)), face_(face), motion_(motion) {
+  const int a = face.axis;
+  inward_ = face.upper ? -1.0 : 1.0;
+  plane0_ = face.upper ? box.upper[a] : box.lower[a];
+  double r_max = 0;
+  for (std::size_t k = 0; k < model.sphere_count(); ++k) r_max = std::max(r_max, model.radius(k));
+  // A sphere can meet the wall only if the wall travels to it, or it to the
+  // wall; two radii of slack cover the specimen's own motion toward the wall.
+  const double reach = std::max(reach_m, 0.0) + 2.0 * r_max;
+  for (std::size_t k = 0; k < model.sphere_count(); ++k) {
+    const double c = model.reference_position(k)[a], r = model.radius(k);
+    const double gap = inward_ * (c - plane0_) - r;  // surface to plane, >= 0 at the start
+    if (gap > reach) continue;
+    candidates_.push_back(k);
+    radius_.push_back(r);
+    centre0_.push_back(c);
+    stiffness_.push_back(young_Pa * r);
+    max_stiffness_per_mass_ = std::max(max_stiffness_per_mass_, young_Pa * r / model.mass(k));
+  }
+  if (candidates_.empty()) throw InputError("wall " + name_ + ": no sphere near face " + face.name());
+}
+
+double RigidWall::plane_at(double t_s) const {
+  return plane0_ + inward_ * motion_.travel_m(t_s);
+}
+
+void RigidWall::before_step(Model& model, double t_s, double /*dt_s*/) {
+  const int a = face_.axis;
+  const double plane = plane_at(t_s);
+  double total = 0;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const std::size_t k = candidates_[i];
+    const double c = centre0_[i] + model.displacement(k)[a];
+    const double u = radius_[i] - inward_ * (c - plane);  // overlap of the sphere with the wall
+    if (u <= 0) continue;
+    const double f = stiffness_[i] * u;
+    Vec3 force;
+    force[a] = inward_ * f;
+    model.add_external_force(k, force);
+    total += f;
+  }
+  last_force_ = total;
+}
+
+std::string RigidWall::description() const {
+  return "rigid frictionless wall on face " + face_.name() + ", " +
+         (motion_.velocity_m_s == 0 ? std::string("fixed")
+                                    : "moving inward at " + format_number(motion_.velocity_m_s * 1e3) + " mm/s" +
+                                          (motion_.ramp_s > 0 ? " (reached over " + format_number(motion_.ramp_s * 1e6) + " us)" : "")) +
+         ", k_w = E_dem r, " + std::to_string(candidates_.size()) + " spheres within reach";
+}
+
+}  // namespace mesowave::dem
