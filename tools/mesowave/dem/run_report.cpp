@@ -66,6 +66,7 @@ nlohmann::ordered_json to_json(const RunReport& r) {
     e["name"] = s.name;
     e["quantity"] = s.kind;
     e["spheres"] = s.spheres;
+    if (!s.spheres_b.empty()) e["spheres_b"] = s.spheres_b;  // an extensometer: strain = (u_b - u_a) . e / L0
     e["component"] = vec(s.direction);
     j["sensor_points"].push_back(e);
   }

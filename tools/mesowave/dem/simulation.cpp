@@ -189,9 +189,8 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     }
     if (sensor.kind == SensorSpec::Kind::strain) {
       const Vec3 axis = direction_vector(sensor.component, sensor.target, who, line);
-      std::vector<std::uint32_t> both = packing_indices(chosen);
-      for (std::uint32_t k : packing_indices(sensor_pads[i])) both.push_back(k);
-      sensor_placements_.push_back({sensor.name, "strain", both, axis});
+      sensor_placements_.push_back({sensor.name, "strain", packing_indices(chosen), axis});
+      sensor_placements_.back().spheres_b = packing_indices(sensor_pads[i]);
       sensors_.push_back(std::make_unique<Extensometer>(sensor.name, *model_, chosen, sensor_pads[i], axis,
                                                         sensor.component, every));
       continue;

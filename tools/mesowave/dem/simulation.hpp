@@ -45,9 +45,10 @@ struct SimulationOptions {
 struct Placement {
   std::string name;
   std::string kind;                      ///< force | displacement | velocity | acceleration | ...
-  std::vector<std::uint32_t> spheres;    ///< packing indices, ascending
+  std::vector<std::uint32_t> spheres;    ///< packing indices, ascending (an extensometer: its first pad)
   Vec3 direction;                        ///< load direction or sensor component (zero: magnitude)
   double amplitude = 0, frequency_hz = 0, cycles = 0, delay_s = 0;  ///< actuators
+  std::vector<std::uint32_t> spheres_b;  ///< an extensometer's second pad
 };
 
 struct RunReport {
