@@ -49,7 +49,7 @@ pipeline: concrete-cube-summary concrete-cube-raw-summary steel-rod-summary repo
 	@echo; echo "report: $(CURDIR)/report/index.html"
 
 bench: build
-	@if [ -x bench/run ]; then bench/run; else echo "no benchmarks yet"; fi
+	bench/run
 
 clean:
 	rm -rf $(BUILD) results report db/provenance.sqlite db/provenance.sqlite-wal db/provenance.sqlite-shm
