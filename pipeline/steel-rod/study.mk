@@ -89,3 +89,4 @@ $(SR_OUT)/summary.md: $(SR_RESULTS) pipeline/steel-rod/summarize.sh $(SR_PAPER)/
 .PHONY: steel-rod-summary
 steel-rod-summary: $(SR_OUT)/summary.md
 	@cat $<
+include pipeline/steel-rod/calibration.mk

@@ -86,6 +86,7 @@ dem::CalibrationTrial run_compression_trial(const TrialRunner& runner, dem::Cali
   t.peak_Pa = test.at("peak_stress_MPa").get<double>() * 1e6;
   t.peak_reached = test.at("peak_reached").get<bool>();
   t.wall_s = s.at("wall_s").get<double>();
+  t.model = s.at("model").get<std::string>();
   t.summary_file = (runner.work_dir / (name + ".json")).string();
   return t;
 }
@@ -99,7 +100,7 @@ std::string describe(const dem::CalibrationTrial& t) {
   line += " -> E_glob " + format_number(std::round(t.E_glob_Pa / 1e7) / 100) + " GPa, nu_glob " +
           format_number(std::round(t.nu_glob * 1e4) / 1e4);
   if (t.kind == dem::CalibrationTrial::Kind::failure) line += ", peak " + format_number(std::round(t.peak_Pa / 1e4) / 100) + " MPa";
-  return line + " (" + format_number(std::round(t.wall_s * 10) / 10) + " s)";
+  return line + " (" + t.model + " model, " + format_number(std::round(t.wall_s * 10) / 10) + " s)";
 }
 
 dem::StressStrainCurve read_curve(const fs::path& csv, const ordered_json& test) {

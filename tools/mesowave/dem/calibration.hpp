@@ -49,6 +49,7 @@ struct CalibrationTrial {
   double E_glob_Pa = 0, nu_glob = 0, peak_Pa = 0;
   bool peak_reached = false;
   double wall_s = 0;
+  std::string model;         ///< the model that ran (linear | full)
   std::string summary_file;  ///< the run's summary (mw-dem --summary)
   std::string kind_name() const { return kind == Kind::elastic ? "elastic" : "failure"; }
 };

@@ -13,12 +13,12 @@ std::string calibration_trials_csv(const std::vector<CalibrationTrial>& trials) 
   for (const auto& t : trials) {
     const auto& p = t.parameters;
     const bool failure = t.kind == CalibrationTrial::Kind::failure;
-    rows.push_back({std::to_string(t.number), t.kind_name(), format_exact(p.E_dem_Pa / 1e9), format_exact(p.nu_dem),
+    rows.push_back({std::to_string(t.number), t.kind_name(), t.model, format_exact(p.E_dem_Pa / 1e9), format_exact(p.nu_dem),
                     failure ? format_exact(p.T_Pa / 1e6) : "", failure ? format_exact(p.c_over_t * p.T_Pa / 1e6) : "",
                     format_exact(t.E_glob_Pa / 1e9), format_exact(t.nu_glob), failure ? format_exact(t.peak_Pa / 1e6) : "",
                     failure ? (t.peak_reached ? "yes" : "no") : "", format_exact(t.wall_s), t.summary_file});
   }
-  return io::to_csv({"trial", "kind", "E_dem_GPa", "nu_dem", "T_MPa", "C_MPa", "E_glob_GPa", "nu_glob", "peak_MPa",
+  return io::to_csv({"trial", "kind", "model", "E_dem_GPa", "nu_dem", "T_MPa", "C_MPa", "E_glob_GPa", "nu_glob", "peak_MPa",
                      "peak_reached", "wall_s", "summary"},
                     rows);
 }
