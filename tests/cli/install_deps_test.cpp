@@ -6,7 +6,11 @@
 // every call.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "support/run_tool.hpp"
 
@@ -17,9 +21,9 @@ namespace {
 
 // The packages CMakeLists.txt finds (DESIGN.md section 2) and the tools to build with.
 const std::vector<std::string> kBuildPackages = {
-    "build-essential",     "cmake",           "pkg-config",       "libeigen3-dev",       "libsqlite3-dev",
-    "libhdf5-dev",         "libfftw3-dev",    "libcli11-dev",     "libgtest-dev",        "libtomlplusplus-dev",
-    "nlohmann-json3-dev",  "libpng-dev",      "libtiff-dev"};
+    "build-essential", "cmake",        "pkg-config",   "libeigen3-dev", "libsqlite3-dev",      "libhdf5-dev",
+    "libfftw3-dev",    "libcli11-dev", "libgtest-dev", "libpng-dev",    "libtomlplusplus-dev", "nlohmann-json3-dev",
+    "libtiff-dev"};
 
 class Shims {
 public:
