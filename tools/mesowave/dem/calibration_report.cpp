@@ -45,22 +45,22 @@ std::string calibration_trajectory_script(const CompressionCalibration& c, const
   s += io::gnuplot_datablock("el", {en, e, enu});
   s += io::gnuplot_datablock("fa", {fn, n, nu, fs});
   s += "set grid\nset xrange [0.5:" + format_number(last) + "]\nset xtics 1\nset xlabel 'trial'\n"
-       "set key top right\nset style fill transparent solid 0.15 noborder\n";
+       "set style fill transparent solid 0.15 noborder\n";
   s += "set multiplot layout 1,3 title '" + title + "'\n";
   auto band = [&](double lo, double hi) {
     return "'+' using 1:(" + format_number(lo) + "):(" + format_number(hi) + ") with filledcurves lc rgb '#2e8b57' title 'tolerance', ";
   };
   const double te = 100 * tol.E_relative, ts = 100 * tol.sigma_relative;
-  s += "set title 'E_{glob} against E_{st} = " + format_number(std::round(tg.E_Pa / 1e7) / 100) + " GPa'\n"
+  s += "set key bottom right\nset title 'E_{glob} against E_{st} = " + format_number(std::round(tg.E_Pa / 1e7) / 100) + " GPa'\n"
        "set ylabel 'E_{glob} / E_{st} - 1 [%]'\n"
        "plot " + band(-te, te) + "$el using 1:2 with linespoints pt 7 ps 1.4 lc rgb '#1f4e9c' title 'elastic trials', "
        "$fa using 1:2 with linespoints pt 5 ps 1.4 lc rgb '#c0392b' title 'failure trials'\n";
-  s += "set title '{/Symbol n}_{glob} against {/Symbol n}_{st} = " + format_number(tg.nu) + "'\n"
+  s += "set key top right\nset title '{/Symbol n}_{glob} against {/Symbol n}_{st} = " + format_number(tg.nu) + "'\n"
        "set ylabel '{/Symbol n}_{glob}'\n"
        "plot " + band(tg.nu - tol.nu_absolute, tg.nu + tol.nu_absolute) +
        "$el using 1:3 with linespoints pt 7 ps 1.4 lc rgb '#1f4e9c' title 'elastic trials', "
        "$fa using 1:3 with linespoints pt 5 ps 1.4 lc rgb '#c0392b' title 'failure trials'\n";
-  s += "set title '{/Symbol s}_{peak} against {/Symbol s}_{max} = " + format_number(std::round(tg.sigma_Pa / 1e4) / 100) +
+  s += "set key bottom right\nset title '{/Symbol s}_{peak} against {/Symbol s}_{max} = " + format_number(std::round(tg.sigma_Pa / 1e4) / 100) +
        " MPa'\nset ylabel '{/Symbol s}_{peak} / {/Symbol s}_{max} - 1 [%]'\n"
        "plot " + band(-ts, ts) + "$fa using 1:4 with linespoints pt 5 ps 1.4 lc rgb '#c0392b' title 'failure trials'\n";
   s += "unset multiplot\n";
@@ -92,7 +92,7 @@ std::string stress_strain_script(const StressStrainCurve& c, double E_target_Pa,
   };
   auto gpa = [](double pa) { return format_number(std::round(pa / 1e7) / 100); };
   s += "set datafile missing 'nan'\nset grid\nset xlabel 'strain [10^{-3}] (lateral < 0 < axial)'\n"
-       "set ylabel 'stress [MPa]'\nset yrange [0:*]\nset key top center opaque\nset title '" + title + "'\nset samples 800\n";
+       "set ylabel 'stress [MPa]'\nset yrange [0:*]\nset key bottom right opaque\nset title '" + title + "'\nset samples 800\n";
   s += "plot $c using 1:3 with lines lw 2 lc rgb '#1f4e9c' title 'axial strain', "
        "$c using 2:3 with lines lw 2 lc rgb '#8e44ad' title 'lateral strain', " +
        segment(c.E_glob_Pa, c.nu_glob, false) + " with lines dt 2 lw 2 lc rgb '#c0392b' title 'E_{glob} = " +
