@@ -15,12 +15,10 @@
 #   two pads as packing indices).
 # OUT.json: the curves, E_glob, nu_glob, peak, wall time.
 #
-# Bonds as in wave.py: the stock Yade law computes F_n = k_n (penetrationDepth -
-# unp) with unp = 0 at bond creation, so this script creates the C_f bonds in
-# one step with every sphere held, sets each bond's unp to its initial
-# penetrationDepth (Eq. 1), sets the adhesions, and resets the detection
-# factors to 1. The adhesions are 1e30 R^2 (unbreakable, what mw-dem's
-# --unbreakable-bonds runs) unless --strengths asks for the scene's T R^2, C R^2.
+# Bonds: eq1_bonds.py (shared with wave.py: step 0 makes the C_f bonds match
+# Eq. (1), which stock Yade does not). The adhesions are 1e30 R^2 (unbreakable,
+# what mw-dem's --unbreakable-bonds runs) unless --strengths asks for the
+# scene's T R^2, C R^2.
 #
 # The test, with mw-dem's definitions (tools/mesowave/dem/rigid_wall.*,
 # extensometer.*, uniaxial_test.*):
@@ -46,10 +44,14 @@
 # - the run stops at the first sample whose stress reaches --stop-at-MPa.
 import argparse
 import json
+import os
+import sys
 import math
 import time
 import tomllib
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))  # eq1_bonds.py beside this script
+from eq1_bonds import make_eq1_bonds
 from yade import ymport, utils
 
 parser = argparse.ArgumentParser(prog="compression.py")
@@ -109,24 +111,9 @@ O.engines = [
 ]
 O.dt = dt
 
-# Step 0: bonds, with nothing moving and no wall yet.
-for b in O.bodies:
-    b.state.blockedDOFs = "xyzXYZ"
 running = False  # move_walls and record (below) wait for the bonds; a PyRunner skips the first step anyway
-O.step()
-bonds = 0
-for i in O.interactions:
-    i.phys.unp = i.geom.penetrationDepth  # Eq. (1): F_n = K_n (u - u_0)
-    r = min(O.bodies[i.id1].shape.radius, O.bodies[i.id2].shape.radius)
-    i.phys.normalAdhesion = strength_T * r * r  # Eq. (6)
-    i.phys.shearAdhesion = strength_C * r * r
-    bonds += 1
-sphere_bounds.aabbEnlargeFactor = 1.0
-ig2.interactionDetectionFactor = 1.0
-for b in O.bodies:
-    b.state.blockedDOFs = ""
-    b.state.vel = Vector3(0, 0, 0)
-    b.state.angVel = Vector3(0, 0, 0)
+# Step 0: the bonds of Eq. (1), with nothing moving and no wall yet (eq1_bonds.py).
+bonds = make_eq1_bonds(strength_T, strength_C, sphere_bounds, ig2)
 
 pos0 = [Vector3(O.bodies[k].state.pos) for k in ids]
 radius = [O.bodies[k].shape.radius for k in ids]

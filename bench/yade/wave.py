@@ -10,16 +10,16 @@
 # OUT.json: wall time per step and each sensor's velocity samples v_{n+1/2}
 #   (the leapfrog velocity after step n, mesowave's velocity signal).
 #
-# The stock Yade 2023.02a law computes F_n = k_n (penetrationDepth - unp) with
-# unp = 0 at bond creation: a dense packing would start pre-stressed and gap
-# bonds would break at once. To match Eq. (1) this script creates the C_f
-# bonds in one step with every sphere held still, sets each bond's unp to its
-# initial penetrationDepth, and resets the detection factors to 1.
+# Bonds: eq1_bonds.py (stock Yade 2023.02a does not subtract the initial
+# overlap; the shared step 0 makes its bonds match Eq. (1)).
 import json
 import math
+import os
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))  # eq1_bonds.py beside this script
+from eq1_bonds import make_eq1_bonds
 from yade import ymport
 
 spheres_file, info_file, out_file = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -55,9 +55,6 @@ O.engines = [
 ]
 O.dt = info["dt_s"]
 
-# Step 0: bonds, with nothing moving.
-for b in O.bodies:
-    b.state.blockedDOFs = "xyzXYZ"
 recording = False
 def apply_loads():
     if not recording:
@@ -81,20 +78,8 @@ def record():
         for k in s["spheres"]:
             v += O.bodies[k].state.vel
         samples[s["name"]].append((v / len(s["spheres"])).dot(Vector3(*s["component"])))
-O.step()
-bonds = 0
-for i in O.interactions:
-    i.phys.unp = i.geom.penetrationDepth  # Eq. (1): F_n = K_n (u - u_0)
-    r = min(O.bodies[i.id1].shape.radius, O.bodies[i.id2].shape.radius)
-    i.phys.normalAdhesion = strength_T * r * r  # Eq. (6)
-    i.phys.shearAdhesion = strength_C * r * r
-    bonds += 1
-collider.boundDispatcher.functors[0].aabbEnlargeFactor = 1.0
-ig2.interactionDetectionFactor = 1.0
-for b in O.bodies:
-    b.state.blockedDOFs = ""
-    b.state.vel = Vector3(0, 0, 0)
-    b.state.angVel = Vector3(0, 0, 0)
+# Step 0: the bonds of Eq. (1), with nothing moving (eq1_bonds.py).
+bonds = make_eq1_bonds(strength_T, strength_C, collider.boundDispatcher.functors[0], ig2)
 
 if threads and O.numThreads != threads:
     print("yade: warning: %d threads requested, running on %d (start yade with -j%d)" % (threads, O.numThreads, threads))

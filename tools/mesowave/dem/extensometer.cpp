@@ -20,9 +20,9 @@ Vec3 mean_centre(const Model& model, const std::vector<std::size_t>& group) {
 Extensometer::Extensometer(std::string name, const Model& model, std::vector<std::size_t> end_a,
                            std::vector<std::size_t> end_b, const Vec3& axis, std::string axis_name,
                            std::int64_t interval_steps)
-    : name_(std::move(name)), axis_name_(std::move(axis_name)), a_(std::move(end_a)), b_(std::move(end_b)),
-      axis_(axis), interval_(interval_steps) {
-  const std::string who = "extensometer " + name_;
+    : Sensor(std::move(name), interval_steps), axis_name_(std::move(axis_name)), a_(std::move(end_a)),
+      b_(std::move(end_b)), axis_(axis) {
+  const std::string who = "extensometer " + this->name();
   if (a_.empty() || b_.empty()) throw InputError(who + ": an end holds no sphere");
   for (std::size_t k : a_)
     if (std::find(b_.begin(), b_.end(), k) != b_.end())
@@ -41,41 +41,26 @@ double Extensometer::mean_displacement(const Model& model, const std::vector<std
   return sum / double(group.size());
 }
 
-void Extensometer::record(const Model& model, std::int64_t step) {
-  if (step % interval_ != 0) return;
-  samples_.push_back((mean_displacement(model, b_) - mean_displacement(model, a_)) / gauge_m_);
+double Extensometer::sample(const Model& model) const {
+  return (mean_displacement(model, b_) - mean_displacement(model, a_)) / gauge_m_;
 }
 
 signal::Signal Extensometer::signal(double dt_s) const {
-  return signal::Signal{.name = name_,
-                        .quantity = std::string("strain"),
-                        .unit = std::string("1"),
-                        .component = axis_name_,
-                        .t0_s = dt_s,
-                        .dt_s = double(interval_) * dt_s,
-                        .samples = samples_,
-                        .position_m = std::array<double, 3>{midpoint_.x, midpoint_.y, midpoint_.z}};
+  // After step n the displacement is x_{n+1} - x_0: t0 = dt.
+  return recorded("strain", "1", axis_name_, dt_s, dt_s, std::array<double, 3>{midpoint_.x, midpoint_.y, midpoint_.z});
 }
 
 std::string Extensometer::description() const {
   return "extensometer along " + axis_name_ + ", gauge length " + format_number(std::abs(gauge_m_) * 1e3) +
-         " mm between " + std::to_string(a_.size()) + " and " + std::to_string(b_.size()) + " spheres, every " +
-         std::to_string(interval_) + " steps";
+         " mm between " + std::to_string(a_.size()) + " and " + std::to_string(b_.size()) + " spheres, " + every();
 }
 
 signal::Signal BrokenBondCounter::signal(double dt_s) const {
-  return signal::Signal{.name = name_,
-                        .quantity = std::string("broken_bonds"),
-                        .unit = std::string("1"),
-                        .component = std::string("count"),
-                        .t0_s = 0.0,  // bonds break while the forces at x_n are computed
-                        .dt_s = double(interval_) * dt_s,
-                        .samples = samples_,
-                        .position_m = std::nullopt};
+  return recorded("broken_bonds", "1", "count", 0.0, dt_s);  // bonds break while the forces at x_n are computed
 }
 
 std::string BrokenBondCounter::description() const {
-  return "broken bonds, every " + std::to_string(interval_) + " steps";
+  return "broken bonds, " + every();
 }
 
 }  // namespace mesowave::dem

@@ -18,44 +18,33 @@ public:
   /// empty, share a sphere, or lie less than a sphere radius apart along e.
   Extensometer(std::string name, const Model& model, std::vector<std::size_t> end_a, std::vector<std::size_t> end_b,
                const Vec3& axis, std::string axis_name, std::int64_t interval_steps);
-  const std::string& name() const override { return name_; }
-  void prepare(std::int64_t steps) override { samples_.reserve(std::size_t(steps / interval_ + 1)); }
-  void record(const Model& model, std::int64_t step) override;
   signal::Signal signal(double dt_s) const override;
   std::string description() const override;
-  const std::vector<double>& samples() const override { return samples_; }
   double gauge_length_m() const { return gauge_m_; }
+
+protected:
+  double sample(const Model& model) const override;
 
 private:
   double mean_displacement(const Model& model, const std::vector<std::size_t>& group) const;
 
-  std::string name_, axis_name_;
+  std::string axis_name_;
   std::vector<std::size_t> a_, b_;
   Vec3 axis_;
-  std::int64_t interval_;
   double gauge_m_ = 0;
   Vec3 midpoint_;
-  std::vector<double> samples_;
 };
 
 /// The number of bonds broken so far (tension or Mohr-Coulomb), sampled every
 /// `interval` steps: the damage history of a test to failure.
 class BrokenBondCounter : public Sensor {
 public:
-  BrokenBondCounter(std::string name, std::int64_t interval_steps) : name_(std::move(name)), interval_(interval_steps) {}
-  const std::string& name() const override { return name_; }
-  void prepare(std::int64_t steps) override { samples_.reserve(std::size_t(steps / interval_ + 1)); }
-  void record(const Model& model, std::int64_t step) override {
-    if (step % interval_ == 0) samples_.push_back(double(model.broken_bond_count()));
-  }
+  BrokenBondCounter(std::string name, std::int64_t interval_steps) : Sensor(std::move(name), interval_steps) {}
   signal::Signal signal(double dt_s) const override;
   std::string description() const override;
-  const std::vector<double>& samples() const override { return samples_; }
 
-private:
-  std::string name_;
-  std::int64_t interval_;
-  std::vector<double> samples_;
+protected:
+  double sample(const Model& model) const override { return double(model.broken_bond_count()); }
 };
 
 }  // namespace mesowave::dem

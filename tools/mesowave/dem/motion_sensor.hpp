@@ -21,23 +21,19 @@ public:
   /// `component_name` as written in the signal file (x, normal, magnitude...).
   MotionSensor(std::string name, std::vector<std::size_t> spheres, MotionQuantity quantity, const Vec3& component,
                std::string component_name, std::int64_t interval_steps, const Vec3& position_m);
-  const std::string& name() const override { return name_; }
-  void prepare(std::int64_t steps) override;
-  void record(const Model& model, std::int64_t step) override;
   signal::Signal signal(double dt_s) const override;
   std::string description() const override;
-  const std::vector<double>& samples() const override { return samples_; }
   const std::vector<std::size_t>& spheres() const { return spheres_; }
 
+protected:
+  double sample(const Model& model) const override;
+
 private:
-  std::string name_;
   std::vector<std::size_t> spheres_;
   MotionQuantity quantity_;
   Vec3 component_;
   std::string component_name_;
-  std::int64_t interval_;
   Vec3 position_;
-  std::vector<double> samples_;
 };
 
 }  // namespace mesowave::dem
