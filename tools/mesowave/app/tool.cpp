@@ -141,6 +141,9 @@ Tool::Tool(std::string name, std::string description) : name_(std::move(name)), 
   app_.set_version_flag("--version", name_ + " " + source_version());
   app_.config_formatter(std::make_shared<QuantityConfig>(&app_));
   app_.allow_config_extras(CLI::config_extras_mode::ignore_all);
+  // Subcommands inherit this: the tool's own options (--from, --db) may follow the
+  // subcommand's (`mw-dem run scene.toml --from calibration.json`) as well as precede them.
+  app_.fallthrough();
   app_.set_config("--from", "",
                   "Read option values from FILE: lab-data TOML ([t_p] value = 35, unit = \"us\" fills --t-p-us) "
                   "or an earlier tool's JSON ({\"E_d_GPa\": 36.7} fills --E-d-GPa). Repeatable; the last file wins, "
