@@ -73,7 +73,7 @@ pipeline: concrete-cube-summary concrete-cube-raw-summary concrete-cube-waves-su
 	@echo; echo "report: $(CURDIR)/$(REPORT_DIR)/index.html"
 
 bench: build
-	@if [ -x bench/run ]; then bench/run; else echo "no benchmarks yet"; fi
+	bench/run
 
 clean:
 	rm -rf $(BUILD) results report results-quick report-quick

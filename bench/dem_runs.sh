@@ -6,7 +6,7 @@
 #     100 kHz (mw-dem run, linear and full, 2 threads and 1);
 #  3. the rod chain (191 spheres, 30,000 steps);
 #  4. Yade 2023.02a on the same cube and parameters (bench/yade/wave.py,
-#     a few hundred steps), back to back.
+#     1,000 steps), back to back.
 # The machine is shared: each measurement records the 1-minute load average
 # before it, and the script first waits (up to WAIT_MIN minutes) for the load
 # to drop below LOAD_MAX.
@@ -16,7 +16,7 @@ set -euo pipefail
 BUILD=${1:-build}
 BIN=$BUILD/bin
 REPS=${REPS:-5}
-YADE_STEPS=${YADE_STEPS:-200}
+YADE_STEPS=${YADE_STEPS:-1000}
 LOAD_MAX=${LOAD_MAX:-1.0}
 WAIT_MIN=${WAIT_MIN:-30}
 CUBE=results/concrete-cube/packing.h5
@@ -33,7 +33,7 @@ wait_quiet() {
 }
 note() { echo "# $(date -u +%FT%TZ) load $(load): $*"; }
 
-[ -f "$CUBE" ] || $BIN/mw-pack box --cube-side-mm 50 --porosity-pct 7 --d-min-mm 1.6 --d-max-mm 2 \
+{ [ -f "$CUBE" ] && [ -f "$CUBE_TXT" ]; } || $BIN/mw-pack box --cube-side-mm 50 --porosity-pct 7 --d-min-mm 1.6 --d-max-mm 2 \
   --density-kg-m3 2129.56 --packing "$CUBE" --export-yade "$CUBE_TXT" --quiet > /dev/null
 echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
 
@@ -67,7 +67,7 @@ if command -v yade > /dev/null; then
     wait_quiet
     note "yade -j$j, $YADE_STEPS steps of the same cube"
     yade -n -j$j -x bench/yade/wave.py "$CUBE_TXT" results/bench/cube-info.json results/bench/cube-yade-j$j.json \
-      $YADE_STEPS $j 2>&1 | grep '^yade:'
+      $YADE_STEPS $j 2>&1 | { grep '^yade:' || echo "# yade failed: run the command above by hand to see why"; }
     wait_quiet
     note "mw-dem, same $YADE_STEPS steps, threads $j (linear, then full)"
     for model in linear full; do

@@ -108,3 +108,4 @@ $(SR_OUT)/summary.md $(SR_OUT)/pcc.csv $(SR_OUT)/table1.csv $(SR_OUT)/table2.csv
 .PHONY: steel-rod-summary
 steel-rod-summary: $(SR_OUT)/summary.md
 	@cat $<
+include pipeline/steel-rod/calibration.mk

@@ -2,6 +2,9 @@
 // answered with one line, exit status 1 and no file written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+
 #include <nlohmann/json.hpp>
 
 #include "support/run_tool.hpp"
@@ -83,8 +86,15 @@ TEST(EstaticCli, RejectsBadInput) {
   const auto table = (dir / "t1.csv").string();
   expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "12", "--density-kg-m3", "2129", "--table", table}),
                   "too small for BS 8110-2", dir);
+  // At E_d = 15.2 GPa Eq. (12) gives exactly 0: non-positive, refused as well.
+  expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "15.2", "--density-kg-m3", "2129", "--table", table}),
+                  "gives a non-positive static modulus", dir);
   expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "0", "--density-kg-m3", "2129", "--table", table}),
                   "--E-d-GPa (0 GPa)", dir);
+  expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "nan", "--density-kg-m3", "2129", "--table", table}),
+                  "--E-d-GPa (nan GPa)", dir);
+  expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "36", "--density-kg-m3", "inf", "--table", table}),
+                  "--density-kg-m3 (inf kg/m3)", dir);
   expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "36", "--density-kg-m3", "0", "--table", table}),
                   "--density-kg-m3 (0 kg/m3)", dir);
   expect_rejected(run_tool("mw-estatic", {"--E-d-GPa", "36", "--density-kg-m3", "2129", "--E-st-measured-GPa", "-3",
@@ -120,6 +130,19 @@ TEST(SpecimenCli, RejectsBadInput) {
     TempDir dir;
     expect_rejected(run_tool("mw-specimen", {"--side-mm", "-1", "--mass-g", "7", "--out", (dir / "o").string()}),
                     "--side-mm (-1 mm)", dir);
+  }
+  // Non-finite mass and length, and the prism's sides.
+  for (const auto& [args, needle] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--side-mm", "150", "--mass-g", "nan"}, "--mass-g (nan g)"},
+           {{"--side-mm", "150", "--mass-g", "-inf"}, "--mass-g (-inf g)"},
+           {{"--side-mm", "inf", "--mass-g", "7000"}, "--side-mm (inf mm)"},
+           {{"--shape", "prism", "--length-mm", "0", "--width-mm", "100", "--height-mm", "100", "--mass-g", "7000"},
+            "--length-mm (0 mm)"},
+           {{"--shape", "cylinder", "--diameter-mm", "nan", "--height-mm", "200", "--mass-g", "3000"},
+            "--diameter-mm (nan mm)"}}) {
+    TempDir dir;
+    SCOPED_TRACE(needle);
+    expect_rejected(run_tool("mw-specimen", with(args, {"--out", (dir / "o").string()})), needle, dir);
   }
   {
     TempDir dir;
@@ -161,11 +184,21 @@ TEST(FromFiles, ABadLabFileIsNamed) {
                   "bad.toml: [t_p] has source 'measured'", out);
 }
 
+// Every tool of tools/cli (found there, so a new tool is covered without
+// editing this list): --help that explains, --db, --version.
 TEST(Help, EveryToolTeachesAndVersions) {
-  for (const std::string tool : {"mw-specimen", "mw-upv", "mw-estatic", "mw-compare", "mw-prov"}) {
+  std::vector<std::string> tools;
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(MESOWAVE_SOURCE_DIR) / "tools/cli"))
+    if (e.path().extension() == ".cpp" && e.path().stem().string().rfind("mw-", 0) == 0)
+      tools.push_back(e.path().stem().string());
+  EXPECT_GE(tools.size(), 15u);
+  for (const std::string& tool : tools) {
     const auto h = run_tool(tool, {"--help"});
     EXPECT_EQ(h.exit_status, 0) << tool;
     EXPECT_NE(h.out.find("--db"), std::string::npos) << tool;
+    EXPECT_NE(h.out.find("Usage: " + tool), std::string::npos) << tool;
+    // More than CLI11's option list: a description of what the tool computes before it.
+    EXPECT_GT(h.out.find("Usage: "), 40u) << tool << " has no description";
     const auto v = run_tool(tool, {"--version"});
     EXPECT_EQ(v.exit_status, 0) << tool;
     EXPECT_EQ(v.out.rfind(tool + " ", 0), 0u) << v.out;

@@ -1,6 +1,9 @@
 // mw-dem end to end: info and run on small scenes, outputs only on success.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "mesowave/dem/packing_file.hpp"
@@ -48,6 +51,9 @@ TEST(MwDem, InfoOnTheShippedRodSceneChoosesTheChain) {
   EXPECT_EQ(j["bonds"], 190);
   EXPECT_EQ(j["steps"], 30000);
   EXPECT_GT(j["dt_limit_s"].get<double>(), 5e-8);
+  // Memory: positions, velocities, forces of 191 spheres and 190 bonds, and one sensor's 30,001 samples.
+  EXPECT_GT(j["memory_estimate_MiB"].get<double>(), 30001 * 8 / 1048576.0);
+  EXPECT_LT(j["memory_estimate_MiB"].get<double>(), 1.0);
   EXPECT_EQ(test::count_files(dir.path()), 2u);  // info writes nothing
 }
 
@@ -68,6 +74,41 @@ TEST(MwDem, RunWritesSignalsAndSummary) {
   EXPECT_EQ(j["model"], "chain");
   EXPECT_GT(j["steps_per_s"].get<double>(), 0.0);
   EXPECT_EQ(j["energy"]["external_work_J"].get<double>() > 0, true);
+  // The chain's critical step is the closed form 2 / omega_max, omega_max = 2 sqrt(K_n / m)
+  // (no damping), and the paper's estimate R sqrt(rho / E) sits below it.
+  const double R = 5.1e-3, kn = 660e9 * R, m = 6044.37 * 4.0 / 3.0 * 3.14159265358979 * R * R * R;
+  EXPECT_NEAR(j["dt_cr_eigenvalue_s"].get<double>() / (1.0 / std::sqrt(kn / m)), 1.0, 1e-3);
+  EXPECT_NEAR(j["dt_cr_paper_estimate_s"].get<double>(), R * std::sqrt(6044.37 / 660e9), 1e-12);
+  EXPECT_LE(j["dt_limit_s"].get<double>(), j["dt_cr_eigenvalue_s"].get<double>());
+  // Undamped: what the force put in is in the rod, to round-off.
+  EXPECT_LT(std::abs(j["energy"]["residual_relative"].get<double>()), 1e-9);
+  // Peak bond force / strength: the rod scene gives no strengths, so nothing can break (0).
+  EXPECT_EQ(j["peak_force_ratio"].get<double>(), 0.0);
+  EXPECT_EQ(j["validity_bound"], nullptr);
+}
+
+TEST(MwDem, RecordsItsRunWithInputsOutputsAndMetrics) {
+  test::TempDir dir;
+  dem::write_packing_file(dir / "rod.h5", rod(50, 5.1e-3, 1.03 * 5.1e-3));
+  test::write_file(dir / "rod.toml", rod_scene(dir / "rod.h5"));
+  const std::string db = (dir / "prov.sqlite").string();
+  const auto r = run_tool("mw-dem", {"run", (dir / "rod.toml").string(), "--duration-ms", "0.05", "--signals",
+                                     (dir / "s.h5").string(), "--summary", (dir / "s.json").string(), "--quiet",
+                                     "--db", db});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const auto show = run_tool("mw-prov", {"show", "1", "--json", "--db", db});
+  ASSERT_EQ(show.exit_status, 0) << show.err;
+  const auto j = nlohmann::json::parse(show.out);
+  EXPECT_EQ(j["tool"], "mw-dem");
+  EXPECT_EQ(j["exit_status"], 0);
+  std::vector<std::string> inputs, outputs, metrics;
+  for (const auto& f : j["inputs"]) inputs.push_back(std::filesystem::path(f["path"].get<std::string>()).filename());
+  for (const auto& f : j["outputs"]) outputs.push_back(std::filesystem::path(f["path"].get<std::string>()).filename());
+  for (const auto& m : j["metrics"]) metrics.push_back(m["name"]);
+  EXPECT_EQ(inputs, (std::vector<std::string>{"rod.toml", "rod.h5"}));
+  EXPECT_EQ(outputs, (std::vector<std::string>{"s.h5", "s.json"}));
+  for (const char* name : {"steps_per_s", "wall", "dt_limit", "peak_force_ratio"})
+    EXPECT_NE(std::find(metrics.begin(), metrics.end(), name), metrics.end()) << name;
 }
 
 TEST(MwDem, ATooLargeTimeStepIsRefusedAndNothingIsWritten) {

@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   std::map<std::string, double> material_values;  // [material] key -> value given on the command line
   std::map<std::string, std::string> material_option_names;
   bool unbreakable = false;
-  double stop_at_MPa = 0;
+  double stop_at_MPa = 0, velocity_mm_s = 0;
   std::vector<double> levels_MPa;
 
   auto common = [&](CLI::App* sub) {
@@ -82,6 +82,8 @@ int main(int argc, char** argv) {
     sub->add_flag("--unbreakable-bonds", unbreakable,
                   "Bonds never break (no T, C): the elastic response (mw-calibrate's elastic trials)");
     sub->add_option("--stop-at-MPa", stop_at_MPa, "A [test] ends once its stress reaches this [MPa]");
+    sub->add_option("--velocity-mm-s", velocity_mm_s,
+                    "Every moving platen or wall (velocity, wall actuators with a velocity) at this speed instead [mm/s]");
     sub->add_option("--modulus-levels-MPa", levels_MPa,
                     "A [test]'s secant modulus between these two stresses [MPa] instead of the scene's levels")
         ->expected(2)->delimiter(',');
@@ -113,6 +115,11 @@ int main(int argc, char** argv) {
     if (!packing_path.empty()) scene.packing_file = packing_path;
     for (const auto& [key, value] : material_values)
       dem::set_material_value(scene, key, value, material_option_names.at(key));
+    if (velocity_mm_s != 0) {
+      require_positive("--velocity-mm-s", velocity_mm_s, "mm/s");
+      for (auto& a : scene.actuators)
+        if ((a.kind == "velocity" || a.kind == "wall") && a.amplitude != 0) a.amplitude = velocity_mm_s * units::mm;
+    }
     if (unbreakable)
       scene.material.tensile_strength_Pa = scene.material.cohesion_Pa = std::numeric_limits<double>::infinity();
     if ((stop_at_MPa != 0 || !levels_MPa.empty()) && !scene.test.active())

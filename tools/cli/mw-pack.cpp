@@ -319,6 +319,10 @@ int main(int argc, char** argv) {
     summary["fabric_eigenvalue_min"] = stats.fabric_min;
     summary["fabric_eigenvalue_max"] = stats.fabric_max;
     summary["spheres_outside"] = stats.spheres_outside;
+    if (packing.container.shape == "line")
+      summary["note"] = "a line of n = ceil(L / d) spheres spans (n - 1) d + 2 R, more than the rod's length L, and "
+                        "its balls overlap: spheres_outside (the end spheres) and solid_to_rod_volume > 1 are "
+                        "expected; the model's mass is the rod's through the particle density";
     if (mass) {
       summary["specimen_mass_g"] = *mass / units::g;
       summary["particle_density_kg_m3"] = packing.particle_density_kg_m3;

@@ -78,7 +78,6 @@ int main(int argc, char** argv) {
                  "  mw-signal convert B.csv C.csv D.csv experiment.h5");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
-  cli.fallthrough();  // --db and --from may follow the subcommand
   fs::path json_out;
   auto add_json = [&](CLI::App* sub) {
     sub->add_option("--json", json_out, "Also write the JSON summary (printed on stdout) to FILE")->type_name("FILE");

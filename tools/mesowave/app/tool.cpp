@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "mesowave/app/tool.hpp"
 
 #include <chrono>
@@ -64,6 +65,30 @@ std::vector<std::string> from_files_in(int argc, char** argv) {
     else if (arg.rfind("--from=", 0) == 0) files.push_back(arg.substr(7));
   }
   return files;
+}
+
+// The arguments for CLI11 (program name dropped), with every `--from FILE`
+// moved to the front: CLI11 2.1 applies a config option given after a
+// subcommand only to options that are not required, so `mw-calibrate cube
+// --from static-test.toml` would miss its required targets. Anywhere on the
+// line, --from means the same.
+std::vector<std::string> from_options_first(int argc, char** argv) {
+  std::vector<std::string> from, rest;
+  bool literal = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (!literal && arg == "--") literal = true;
+    if (!literal && arg == "--from" && i + 1 < argc) {
+      from.insert(from.end(), {arg, argv[++i]});
+    } else if (!literal && arg.rfind("--from=", 0) == 0) {
+      from.push_back(arg);
+    } else {
+      rest.push_back(arg);
+    }
+  }
+  from.insert(from.end(), rest.begin(), rest.end());
+  std::reverse(from.begin(), from.end());  // CLI11 takes a vector in reverse order
+  return from;
 }
 
 nlohmann::ordered_json json_value(const std::string& text) {
@@ -141,9 +166,7 @@ Tool::Tool(std::string name, std::string description) : name_(std::move(name)), 
   app_.set_version_flag("--version", name_ + " " + source_version());
   app_.config_formatter(std::make_shared<QuantityConfig>(&app_));
   app_.allow_config_extras(CLI::config_extras_mode::ignore_all);
-  // Subcommands inherit this: the tool's own options (--from, --db) may follow the
-  // subcommand's (`mw-dem run scene.toml --from calibration.json`) as well as precede them.
-  app_.fallthrough();
+  app_.fallthrough();  // --db, --from and --json may follow a subcommand
   app_.set_config("--from", "",
                   "Read option values from FILE: lab-data TOML ([t_p] value = 35, unit = \"us\" fills --t-p-us) "
                   "or an earlier tool's JSON ({\"E_d_GPa\": 36.7} fills --E-d-GPa). Repeatable; the last file wins, "
@@ -166,7 +189,7 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
 
   try {
     for (const auto& file : from_files_in(argc, argv)) io::read_quantity_file(file);  // named errors first
-    app_.parse(argc, argv);
+    app_.parse(from_options_first(argc, argv));
   } catch (const CLI::Success& e) {
     return app_.exit(e);
   } catch (const CLI::ParseError& e) {
