@@ -29,7 +29,7 @@ RESULTS := results
 REPORT_DIR := report
 endif
 QUICK_DB := $(CURDIR)/db/provenance-quick.sqlite
-export MESOWAVE_DB ?= $(CURDIR)/db/provenance.sqlite
+export MESOWAVE_DB ?= $(if $(filter 1,$(QUICK)),$(QUICK_DB),$(CURDIR)/db/provenance.sqlite)
 
 .PHONY: all help deps build test reproduce reproduce-quick pipeline bench clean
 
