@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
       "rod: a solid rod along z (end faces z = 0 and z = L), axisymmetric ring elements (default; cheap) or 3D\n"
       "  hexahedra; force at the centre of the z = 0 end (or a traction patch), default sensor S at the centre of the\n"
       "  far end, as in the rod paper. box: a block of identical hexahedra (the concrete cube), force normal to the face\n"
-      "  the source point lies on, sensors anywhere (component 'normal' = the normal of their face).\n"
+      "  the source point lies on, sensors anywhere (component 'normal' = the outward normal of their face, as in mw-dem).\n"
       "Elements: fully integrated trilinear hexahedra (2x2x2 Gauss) or bilinear rings; stiffness precomputed per element\n"
       "shape. The stable step comes from a rigorous eigenvalue bound of the mesh; a --dt-us above it is refused.\n\n"
       "  mw-fem rod --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1 --length-mm 1000 --mesh-mm 1 "
