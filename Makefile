@@ -1,11 +1,13 @@
 # mesowave - the one entry point.
 #
-#   make reproduce   install what is missing, build, run the studies on lab-data/
-#   make test        install what is missing, build, run every test (CTest summary at the end)
-#   make bench       benchmarks (bench/), results in docs/benchmarks.md
-#   make clean       remove build/, results/ and the provenance database
+#   make reproduce        install what is missing, build, run both studies on lab-data/ (results/, report/)
+#   make reproduce-quick  the same rules on small models and short records (results-quick/, report-quick/)
+#   make test             install what is missing, build, run every test (CTest summary at the end)
+#   make bench            benchmarks (bench/), results in docs/benchmarks.md
+#   make clean            remove build/, both result trees, reports and provenance databases
 #
-# Every tool run by the pipeline records itself in $(MESOWAVE_DB).
+# Every tool run by the pipeline records itself in $(MESOWAVE_DB): db/provenance.sqlite for the
+# full tree, db/provenance-quick.sqlite for the quick one.
 
 SHELL := /bin/bash
 .DELETE_ON_ERROR:
@@ -14,14 +16,27 @@ BUILD ?= build
 BIN := $(BUILD)/bin
 JOBS ?= $(shell nproc)
 CMAKE_BUILD_TYPE ?= Release
-export MESOWAVE_DB ?= $(CURDIR)/db/provenance.sqlite
 
-.PHONY: all help deps build test reproduce pipeline bench clean
+# Two pipeline trees made by the same rules: the full-size studies (QUICK=0) and a first look
+# on small models and short records (QUICK=1, `make reproduce-quick`; for tests too). The
+# studies choose their sizes from QUICK; each tree has its own results, report and database.
+QUICK ?= 0
+ifeq ($(QUICK),1)
+RESULTS := results-quick
+REPORT_DIR := report-quick
+else
+RESULTS := results
+REPORT_DIR := report
+endif
+QUICK_DB := $(CURDIR)/db/provenance-quick.sqlite
+export MESOWAVE_DB ?= $(if $(filter 1,$(QUICK)),$(QUICK_DB),$(CURDIR)/db/provenance.sqlite)
+
+.PHONY: all help deps build test reproduce reproduce-quick pipeline bench clean
 
 all: build
 
 help:
-	@sed -n '2,10p' Makefile | sed 's/^# \{0,1\}//'
+	@sed -n '2,11p' Makefile | sed 's/^# \{0,1\}//'
 
 deps:
 	@scripts/install-deps
@@ -37,19 +52,30 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The pipeline runs in a second make, after the build, so that make compares
-# the results' timestamps with the tools as they are now.
+# the results' timestamps with the tools as they are now. The wall time of the
+# pipeline (without the build) is printed at the end.
+PRINT_WALL_TIME = awk -v s=$$start -v e=$$(date +%s.%N) -v l="$$(cut -d' ' -f1-3 /proc/loadavg)" -v n=$$(nproc) \
+  'BEGIN { printf "pipeline wall time: %.1f s (load average now %s, %d cores)\n", e - s, l, n }'
 reproduce: build
-	@$(MAKE) --no-print-directory pipeline
+	@start=$$(date +%s.%N); $(MAKE) --no-print-directory pipeline && \
+	  $(PRINT_WALL_TIME)
+
+reproduce-quick: build
+	@start=$$(date +%s.%N); $(MAKE) --no-print-directory pipeline QUICK=1 MESOWAVE_DB=$(QUICK_DB) && \
+	  $(PRINT_WALL_TIME)
 
 include pipeline/concrete-cube/study.mk
 include pipeline/steel-rod/study.mk
 include pipeline/report.mk
 
-pipeline: concrete-cube-summary concrete-cube-raw-summary steel-rod-summary report/index.html
-	@echo; echo "report: $(CURDIR)/report/index.html"
+pipeline: concrete-cube-summary concrete-cube-raw-summary concrete-cube-waves-summary steel-rod-summary \
+    $(REPORT_DIR)/index.html
+	@echo; echo "report: $(CURDIR)/$(REPORT_DIR)/index.html"
 
 bench: build
 	bench/run
 
 clean:
-	rm -rf $(BUILD) results report db/provenance.sqlite db/provenance.sqlite-wal db/provenance.sqlite-shm
+	rm -rf $(BUILD) results report results-quick report-quick
+	rm -f db/provenance.sqlite db/provenance.sqlite-wal db/provenance.sqlite-shm \
+	  db/provenance-quick.sqlite db/provenance-quick.sqlite-wal db/provenance-quick.sqlite-shm

@@ -3,18 +3,30 @@
 # Pochhammer-Chree theory: PCC of each DEM model against the FEM per frequency (Table 1's
 # last column), group velocities by the paper's peak-to-peak (echo) method and their RSS to
 # theory (Table 2), the dispersion figure (Figure 9), speed against error. Included by the
-# top Makefile, which defines BIN and exports MESOWAVE_DB.
+# top Makefile, which defines BIN, RESULTS and QUICK and exports MESOWAVE_DB.
 #
-#   make steel-rod-summary        everything below, results/steel-rod/summary.md at the end
+#   make steel-rod-summary        everything below, $(RESULTS)/steel-rod/summary.md at the end
+#
+# The quick tree (QUICK=1) runs the same rules on a 500 mm rod, three frequencies and
+# 0.6 ms FEM records (long enough for the echo: it arrives after 3 L / c, about 300 us).
+# The DEM chains keep 1.5 ms (they cost milliseconds): 0.95R spreads its echo over
+# longer than that.
 
-SR_OUT := results/steel-rod
+SR_OUT := $(RESULTS)/steel-rod
 SR_SCENES := pipeline/steel-rod/scenes
 SR_PAPER := lab-data/steel-rod/paper
 # Rod paper Section 4.1 (the rod) and Sections 4.2-4.3 (bursts, FEM damping, duration).
 SR_STEEL := --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1
+ifeq ($(QUICK),1)
+SR_LENGTH_MM := 500
+SR_FREQS := 50 100 150
+SR_DURATION_MS := 0.6
+else
 SR_LENGTH_MM := 1000
-SR_ROUND_TRIP_MM := 2000   # the FEM's far-end sensor sees the echo after 2 L
 SR_FREQS := 50 60 70 80 90 100 110 120 130 140 150
+SR_DURATION_MS := 1.5
+endif
+SR_ROUND_TRIP_MM := $(shell echo $$((2 * $(SR_LENGTH_MM))))   # the FEM's far-end sensor sees the echo after 2 L
 # The four chains of Table 1, and 0.95R with the contact modulus that reproduces its E_DEM.
 SR_MODELS := 0.95R 1.03R 1.05R 1.15R 0.95R-EDEM
 # The FEM reference: axisymmetric rings (validated against the 3D hexahedra, docs/models.md);
@@ -22,7 +34,11 @@ SR_MODELS := 0.95R 1.03R 1.05R 1.15R 0.95R-EDEM
 SR_FEM_MODEL ?= axisymmetric
 SR_FEM_MESH ?= 1
 # Further meshes for speed against error (same model).
+ifeq ($(QUICK),1)
+SR_SPEED_MESHES ?= 2
+else
 SR_SPEED_MESHES ?= 2 0.5
+endif
 
 sr_base = $(firstword $(subst -, ,$1))
 sr_scene = $(SR_SCENES)/rod-wave$(if $(filter 1.03R,$1),,-$1).toml
@@ -33,20 +49,22 @@ $(SR_OUT)/packing-%R.h5: $(BIN)/mw-pack
 	$(BIN)/mw-pack line --sphere-radius-mm 5.1 --spacing-R $* --length-mm $(SR_LENGTH_MM) \
 	  --density-kg-m3 7850.66 --packing $@ --out $(SR_OUT)/packing-$*R.json > /dev/null
 
-# DEM runs: force burst on the first sphere, acceleration of the last (the scene).
+# DEM runs: force burst on the first sphere, acceleration of the last (the scene), on
+# this tree's packing.
 define SR_DEM_RUN
 $(SR_OUT)/dem-$1-$2kHz.h5: $(call sr_scene,$1) $(SR_OUT)/packing-$(call sr_base,$1).h5 $(BIN)/mw-dem
-	$(BIN)/mw-dem run $(call sr_scene,$1) --frequency-kHz $2 --quiet --signals $$@ \
-	  --summary $(SR_OUT)/dem-$1-$2kHz.json > /dev/null
+	$(BIN)/mw-dem run $(call sr_scene,$1) --packing $(SR_OUT)/packing-$(call sr_base,$1).h5 --frequency-kHz $2 \
+	  --quiet --signals $$@ --summary $(SR_OUT)/dem-$1-$2kHz.json > /dev/null
 endef
 $(foreach m,$(SR_MODELS),$(foreach f,$(SR_FREQS),$(eval $(call SR_DEM_RUN,$m,$f))))
 
-# FEM runs: 1 mm mesh, alpha = 2000 1/s, 1.5 ms, force at the centre of one end, far-end sensor S.
+# FEM runs: 1 mm mesh, alpha = 2000 1/s, 1.5 ms (quick: 0.6 ms), force at the centre of one end, far-end sensor S.
 define SR_FEM_RUN
 $(SR_OUT)/fem-$1mm-$2kHz.h5: $(BIN)/mw-fem
 	@mkdir -p $$(@D)
 	$(BIN)/mw-fem rod $(SR_STEEL) --length-mm $(SR_LENGTH_MM) --model $(SR_FEM_MODEL) --mesh-mm $1 \
-	  --frequency-kHz $2 --alpha-damping 2000 --duration-ms 1.5 --signals $$@ --out $(SR_OUT)/fem-$1mm-$2kHz.json > /dev/null
+	  --frequency-kHz $2 --alpha-damping 2000 --duration-ms $(SR_DURATION_MS) --quiet --signals $$@ \
+	  --out $(SR_OUT)/fem-$1mm-$2kHz.json > /dev/null
 endef
 $(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),$(foreach f,$(SR_FREQS),$(eval $(call SR_FEM_RUN,$h,$f))))
 
@@ -81,10 +99,11 @@ SR_RESULTS := $(foreach m,$(SR_MODELS),$(SR_OUT)/measure-$m.csv $(foreach f,$(SR
               $(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),$(SR_OUT)/measure-fem-$(h)mm.csv)
 
 # Tables beside the paper's, the findings checked, Figure 9 and speed against error.
-$(SR_OUT)/summary.md: $(SR_RESULTS) pipeline/steel-rod/summarize.sh $(SR_PAPER)/table1.csv $(SR_PAPER)/table2.csv \
+$(SR_OUT)/summary.md $(SR_OUT)/pcc.csv $(SR_OUT)/table1.csv $(SR_OUT)/table2.csv $(SR_OUT)/speed.csv \
+    $(SR_OUT)/figure9.png $(SR_OUT)/speed-error.png &: $(SR_RESULTS) pipeline/steel-rod/summarize.sh $(SR_PAPER)/table1.csv $(SR_PAPER)/table2.csv \
     $(BIN)/mw-dispersion
 	pipeline/steel-rod/summarize.sh $(SR_OUT) $(SR_PAPER) $(BIN) "$(SR_MODELS)" "$(SR_FREQS)" \
-	  "$(SR_FEM_MESH) $(SR_SPEED_MESHES)" $(SR_FEM_MESH) "$(SR_STEEL)"
+	  "$(SR_FEM_MESH) $(SR_SPEED_MESHES)" $(SR_FEM_MESH) "$(SR_STEEL)" $(SR_DURATION_MS)
 
 .PHONY: steel-rod-summary
 steel-rod-summary: $(SR_OUT)/summary.md

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Tables, checks and figures of the steel-rod study (called by pipeline/steel-rod/study.mk):
-#   summarize.sh OUT PAPER BIN "MODELS" "FREQS" "FEM_MESHES" FEM_MESH "STEEL_OPTIONS"
+#   summarize.sh OUT PAPER BIN "MODELS" "FREQS" "FEM_MESHES" FEM_MESH "STEEL_OPTIONS" [DURATION_MS]
 # Writes OUT/pcc.csv (per model and frequency), OUT/table1.csv (mean PCC against the FEM,
 # beside the paper's), OUT/table2.csv (RSS to Pochhammer-Chree, beside the paper's),
 # OUT/speed.csv (wall time against RSS), OUT/figure9.png, OUT/speed-error.png, OUT/summary.md.
 set -euo pipefail
-out=$1 paper=$2 bin=$3 models=$4 freqs=$5 meshes=$6 mesh=$7 steel=$8
+out=$1 paper=$2 bin=$3 models=$4 freqs=$5 meshes=$6 mesh=$7 steel=$8 duration=${9:-1.5}
 paper_models="0.95R 1.03R 1.05R 1.15R"
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
@@ -41,7 +41,7 @@ row2() {  # label measure.json paper-key
 row2 "FEM ${mesh} mm" "$out/measure-fem-${mesh}mm.json" FEM
 for m in $models; do row2 "$m" "$out/measure-$m.json" "$m"; done
 
-# Speed against error: median wall time of one run (1.5 ms simulated) against the RSS.
+# Speed against error: median wall time of one run ($duration ms simulated) against the RSS.
 echo "model,wall_s,rss_m2_s2" > "$out/speed.csv"
 for h in $meshes; do
   w=$(for f in $freqs; do jq .wall_s "$out/fem-${h}mm-${f}kHz.json"; done | median)
@@ -75,7 +75,7 @@ set terminal pngcairo size 950,600 font 'Sans,11'
 set output '$out/speed-error.png'
 set logscale xy
 set grid
-set xlabel 'wall time of one 1.5 ms run, one thread [s]'
+set xlabel 'wall time of one $duration ms run, one thread [s]'
 set ylabel 'RSS of the group velocity, 50-150 kHz [m^2/s^2]'
 set title 'Steel rod: speed against error (DEM chains, mw-fem axisymmetric; this machine)'
 set key outside right top box
@@ -115,7 +115,7 @@ done
   echo
   echo "## Table 1 (last column): PCC of each DEM model against the FEM, mean over $(echo $freqs | wc -w) frequencies"
   echo
-  echo "Sensor S (far end), acceleration, whole 1.5 ms record. The paper's column matches the PCC of the"
+  echo "Sensor S (far end), acceleration, whole $duration ms record. The paper's column matches the PCC of the"
   echo "Hilbert envelopes (its Fig. 8b); the raw signals decorrelate once the packets drift a fraction of a"
   echo "cycle apart over the 1 m rod."
   echo

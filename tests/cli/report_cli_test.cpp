@@ -2,6 +2,11 @@
 // Chromium by scripts/check-report (every table there, every figure decoded).
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdlib>
+
 #include "support/run_tool.hpp"
 
 using namespace mesowave::test;
@@ -14,7 +19,9 @@ const fs::path kSource = MESOWAVE_SOURCE_DIR;
 struct SmallReport : ::testing::Test {
   TempDir dir;
   std::string db = (dir / "p.sqlite").string();
+  double runs_elapsed_s = 0;  // measured here around the two recorded runs
   void SetUp() override {
+    const auto t0 = std::chrono::steady_clock::now();
     ASSERT_EQ(run_tool("mw-upv", {"--path-mm", "150", "--t-p-us", "35", "--t-s-us", "55.1", "--density-kg-m3", "2129.56",
                                   "--out", (dir / "upv.json").string(), "--db", db})
                   .exit_status,
@@ -24,6 +31,7 @@ struct SmallReport : ::testing::Test {
                                       (dir / "upv-vs-paper.csv").string(), "--db", db})
                   .exit_status,
               0);
+    runs_elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     write_file(dir / "sketch.svg",
                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"120\" height=\"40\"><rect width=\"120\" height=\"40\" "
                "fill=\"#8ab\"/></svg>\n");
@@ -59,6 +67,25 @@ TEST_F(SmallReport, RendersEveryTableAndFigureWithProvenance) {
   const auto c = check({"1", "2"});
   EXPECT_EQ(c.exit_status, 0) << c.out << c.err;
   EXPECT_EQ(c.out.rfind("report OK: 1 tables", 0), 0u) << c.out;
+}
+
+TEST_F(SmallReport, StatesThePipelinesWallTime) {
+  ASSERT_EQ(report().exit_status, 0);
+  const auto html = read_file(dir / "report/index.html");
+  const std::string key = "<th>wall time of the pipeline</th><td>";
+  const auto at = html.find(key);
+  ASSERT_NE(at, std::string::npos);
+  const double span = std::strtod(html.c_str() + at + key.size(), nullptr);
+  // From the first run's start to the last run's end: at least the two runs' own wall times
+  // (they ran one after the other), at most what this test measured around them (the
+  // recorded times have millisecond resolution).
+  // Runs 1 and 2 made the report's files; run 3 is mw-report itself.
+  const auto runs = nlohmann::json::parse(run_tool("mw-prov", {"--db", db, "runs", "--json"}).out);
+  ASSERT_EQ(runs.size(), 3u);
+  ASSERT_EQ(runs[2]["tool"], "mw-report");
+  const double walls = runs[0]["wall_s"].get<double>() + runs[1]["wall_s"].get<double>();
+  EXPECT_GE(span, walls - 0.0025);
+  EXPECT_LE(span, runs_elapsed_s + 0.0025);
 }
 
 TEST_F(SmallReport, ChromiumCatchesAFigureThatDoesNotDecode) {

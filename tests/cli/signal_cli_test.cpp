@@ -187,6 +187,27 @@ TEST(PccCli, TimeBasesAndBadRecordsAreRefused) {
   EXPECT_NE(r.out.find("by cubic-spline interpolation"), std::string::npos) << r.out;
 }
 
+TEST(PccCli, FiguresOfBothSetsSensorBySensor) {
+  TempDir dir;
+  make_burst(dir, "a.h5", {"--delay-us", "30", "--name", "B"});
+  make_burst(dir, "b.h5", {"--delay-us", "31", "--name", "B", "--amplitude", "0.5"});
+  const std::string a = (dir / "a.h5").string(), b = (dir / "b.h5").string();
+  const auto r = run_tool("mw-pcc", {a, b, "--labels", "FEM,DEM", "--plot-signals", (dir / "signals.png").string(),
+                                     "--plot-envelopes", (dir / "envelopes.svg").string(), "--plot-window-us", "0,100",
+                                     "--plot-spectra", (dir / "spectra.png").string(), "--max-frequency-kHz", "300"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  for (const char* png : {"signals.png", "spectra.png"})
+    EXPECT_EQ(read_file(dir / png).rfind("\x89PNG\r\n\x1a\n", 0), 0u) << png;
+  const auto svg = read_file(dir / "envelopes.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("B: PCC"), std::string::npos);  // the panel names the sensor and its PCC
+  EXPECT_NE(svg.find("DEM"), std::string::npos);
+  // Refused before any work: a figure format gnuplot is not asked for, a window that ends before it starts.
+  expect_refusal(run_tool("mw-pcc", {a, b, "--plot-signals", (dir / "s.pdf").string()}), "must end in .png or .svg", dir, 5);
+  expect_refusal(run_tool("mw-pcc", {a, b, "--plot-signals", (dir / "s.png").string(), "--plot-window-us", "50,10"}),
+                 "the end must exceed the start", dir, 5);
+}
+
 TEST(SignalCli, RecordsProvenance) {
   TempDir dir;
   const std::string db = (dir / "prov.sqlite").string();

@@ -30,26 +30,32 @@ int main(int argc, char** argv) {
       "rod: a solid rod along z (end faces z = 0 and z = L), axisymmetric ring elements (default; cheap) or 3D\n"
       "  hexahedra; force at the centre of the z = 0 end (or a traction patch), default sensor S at the centre of the\n"
       "  far end, as in the rod paper. box: a block of identical hexahedra (the concrete cube), force normal to the face\n"
-      "  the source point lies on, sensors anywhere (component 'normal' = the normal of their face).\n"
+      "  the source point lies on, sensors anywhere (component 'normal' = the outward normal of their face, as in mw-dem).\n"
       "Elements: fully integrated trilinear hexahedra (2x2x2 Gauss) or bilinear rings; stiffness precomputed per element\n"
       "shape. The stable step comes from a rigorous eigenvalue bound of the mesh; a --dt-us above it is refused.\n\n"
       "  mw-fem rod --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1 --length-mm 1000 --mesh-mm 1 "
       "--frequency-kHz 100 --alpha-damping 2000 --signals rod.h5\n"
       "  mw-fem rod ... --model 3d --mesh-mm 1 --signals rod3d.h5\n"
       "  mw-fem box --E-GPa 36.67 --nu 0.162 --density-kg-m3 2129.56 --size-mm 50 --mesh-mm 1 --source-mm 25,25,0 "
-      "--sensor B=25,25,50 --sensor C=0,25,25 --frequency-kHz 100 --signals cube.h5");
+      "--sensor B=25,25,50 --sensor C=0,25,25 --frequency-kHz 100 --signals cube.h5\n"
+      "  mw-fem --from results/concrete-cube/upv.json box --size-mm 50 ...   (E_d, nu_d and the density from mw-upv)");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
   double E_GPa = 0, nu = 0, rho = 0, mesh_mm = 1, f_kHz = 100, cycles = 5, force_N = 1, alpha = 0,
          duration_ms = 1.5, sample_dt_us = 0.1, patch_mm = 0;
   std::optional<double> dt_us;
   int threads = 0;
+  bool quiet = false;
   std::string quantity = "acceleration";
   std::vector<std::string> sensors;
   fs::path signals_path, out;
   const auto common = [&](CLI::App* sub) {
-    sub->add_option("--E-GPa", E_GPa, "Young's modulus [GPa]")->required();
-    sub->add_option("--nu", nu, "Poisson ratio (-1 < nu < 0.5)")->required();
+    // The second names are mw-upv's: a wave test's continuum reference takes the dynamic moduli, and
+    // `mw-fem --from upv.json box ...` fills them (and --density-kg-m3) from its E_d_GPa and nu_d.
+    sub->add_option("--E-GPa,--E-d-GPa", E_GPa, "Young's modulus [GPa] (--from mw-upv's JSON fills it with E_d)")
+        ->required();
+    sub->add_option("--nu,--nu-d", nu, "Poisson ratio (-1 < nu < 0.5) (--from mw-upv's JSON fills it with nu_d)")
+        ->required();
     sub->add_option("--density-kg-m3", rho, "Density [kg/m3]")->required();
     sub->add_option("--mesh-mm", mesh_mm, "Element size [mm]")->capture_default_str();
     sub->add_option("--frequency-kHz", f_kHz, "Centre frequency of the Hann burst [kHz]")->capture_default_str();
@@ -70,6 +76,7 @@ int main(int argc, char** argv) {
     sub->add_option("--signals", signals_path, "Signal file to write (HDF5, mesowave signal layout)")->required();
     sub->add_option("--threads", threads,
                     "OpenMP threads (default: the cores the machine is not busy with; same bits for any count)");
+    sub->add_flag("--quiet", quiet, "No progress bar");
     app::add_out_option(*sub, out, "the JSON report (cost, stable step)");
   };
 
@@ -150,7 +157,7 @@ int main(int argc, char** argv) {
     opt.steps = stepping.steps;
     opt.sample_stride = stepping.stride;
     opt.alpha_damping_per_s = alpha;
-    app::Progress progress("mw-fem " + model.description, stepping.steps);
+    app::Progress progress("mw-fem " + model.description, stepping.steps, "steps", !quiet);
     opt.progress = [&](std::int64_t n) { progress.update(n); };
     auto result = wave::run_explicit(model, load, probes, opt, want_st ? &st : nullptr);
     progress.finish();

@@ -5,11 +5,15 @@
 //   mw-pcc experiment.h5 simulation.h5
 //   mw-pcc --a exp-100kHz.csv --b sim-100kHz.h5 --sensors B,C,D --resample linear --csv pcc.csv --out pcc.json
 //   mw-pcc experiment.h5 simulation.h5 --spectra spectra.csv --max-frequency-kHz 600
+//   mw-pcc fem.h5 dem.h5 --resample linear --labels FEM,DEM --plot-signals signals.png --plot-envelopes env.png
+#include <cmath>
+
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/core/units.hpp"
 #include "mesowave/io/csv.hpp"
+#include "mesowave/io/sensor_panels.hpp"
 #include "mesowave/io/signal_csv.hpp"
 #include "mesowave/io/text_table.hpp"
 #include "mesowave/signal/correlation.hpp"
@@ -28,6 +32,26 @@ std::vector<Signal> read_set(app::Run& run, const std::vector<fs::path>& files) 
     for (auto& s : io::read_signals(f)) all.push_back(std::move(s));
   }
   return all;
+}
+
+const Signal* find(std::span<const Signal> set, const std::string& name) {
+  for (const auto& s : set)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+io::Curve time_curve_us(const Signal& s) {
+  io::Curve c;
+  c.y = s.samples;
+  c.x.resize(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) c.x[i] = s.time(i) / units::us;
+  return c;
+}
+
+io::Curve spectrum_curve_kHz(const Spectrum& sp) {
+  io::Curve c{sp.frequency_hz, sp.amplitude};
+  for (auto& f : c.x) f /= units::kHz;
+  return c;
 }
 
 std::string join(const std::vector<fs::path>& files) {
@@ -55,6 +79,10 @@ int main(int argc, char** argv) {
   std::string detrend_text = "none", pad_text = "none";
   fs::path csv_out, spectra_out, out;
   std::optional<double> max_frequency_kHz;
+  fs::path plot_signals, plot_envelopes, plot_spectra;
+  std::vector<double> plot_window_us;
+  std::vector<std::string> labels = {"a", "b"};
+  std::string title;
   auto& cli = tool.cli();
   cli.add_option("files", files, "Two signal files (HDF5 .h5 or CSV .csv): the first set and the second");
   cli.add_option("--a", set_a, "The first set as one or more files (e.g. experiment)")->type_name("FILE ...");
@@ -73,7 +101,24 @@ int main(int argc, char** argv) {
                  "Also write the amplitude spectra of both sets (concrete paper Fig. 15) as CSV: f_kHz, then "
                  "'<sensor> a [unit]', '<sensor> b [unit]' per sensor")
       ->type_name("FILE");
-  cli.add_option("--max-frequency-kHz", max_frequency_kHz, "--spectra: up to this frequency [kHz] only");
+  cli.add_option("--max-frequency-kHz", max_frequency_kHz, "--spectra, --plot-spectra: up to this frequency [kHz] only");
+  cli.add_option("--plot-signals", plot_signals,
+                 "Draw the signals (.png or .svg): one panel per sensor, both sets overlaid, each curve divided by its "
+                 "largest |value| in the window, the PCC in the panel's title (concrete paper Figs. 12-13)")
+      ->type_name("FILE");
+  cli.add_option("--plot-envelopes", plot_envelopes,
+                 "Draw the Hilbert envelopes the same way (concrete paper Fig. 14)")->type_name("FILE");
+  cli.add_option("--plot-spectra", plot_spectra,
+                 "Draw the amplitude spectra the same way (concrete paper Fig. 15; the spectra of --spectra)")
+      ->type_name("FILE");
+  cli.add_option("--plot-window-us", plot_window_us, "--plot-signals, --plot-envelopes: from,to [us] (default: all)")
+      ->delimiter(',')
+      ->expected(2);
+  cli.add_option("--labels", labels, "Legend names of the two sets, comma separated (e.g. FEM,DEM)")
+      ->delimiter(',')
+      ->expected(2)
+      ->capture_default_str();
+  cli.add_option("--title", title, "Title of the figures (default: the two files)");
   app::add_out_option(cli, out, "the JSON result");
 
   return tool.run(argc, argv, [&](app::Run& run) {
@@ -92,7 +137,19 @@ int main(int argc, char** argv) {
       throw InputError("--window-end-us (" + format_number(*end_us) + ") must exceed --window-begin-us (" +
                        format_number(*begin_us) + ")");
     options.envelope = {parse_detrend(detrend_text), Padding::parse(pad_text)};
-    if (!spectra_out.empty()) options.spectra = SpectrumOptions{options.envelope.detrend, options.envelope.padding};
+    for (const auto* plot : {&plot_signals, &plot_envelopes, &plot_spectra}) {
+      const auto ext = plot->extension();
+      if (!plot->empty() && ext != ".png" && ext != ".svg")
+        throw InputError("plot file " + plot->string() + " must end in .png or .svg");
+    }
+    std::optional<std::pair<double, double>> window;
+    if (!plot_window_us.empty()) {
+      if (!(plot_window_us[1] > plot_window_us[0]) || !std::isfinite(plot_window_us[0]) || !std::isfinite(plot_window_us[1]))
+        throw InputError("--plot-window-us " + format_number(plot_window_us[0]) + "," + format_number(plot_window_us[1]) +
+                         ": the end must exceed the start");
+      window = std::pair{plot_window_us[0], plot_window_us[1]};
+    }
+    if (!spectra_out.empty() || !plot_spectra.empty()) options.spectra = SpectrumOptions{options.envelope.detrend, options.envelope.padding};
     if (max_frequency_kHz) require_positive("--max-frequency-kHz", *max_frequency_kHz, "kHz");
 
     const auto a = read_set(run, set_a), b = read_set(run, set_b);
@@ -154,6 +211,41 @@ int main(int argc, char** argv) {
         spectra_rows.push_back(std::move(row));
       }
       run.write_text(spectra_out, io::to_csv(spectra_header, spectra_rows));
+    }
+    // Figures: every compared sensor in the order of the first set, each set on its own time base.
+    const std::string figure_title = title.empty() ? labels[0] + ": " + join(set_a) + "   " + labels[1] + ": " + join(set_b) : title;
+    const auto figure = [&](const std::string& what, const std::string& x_label, const std::string& y_label) {
+      io::SensorPanelsFigure f;
+      f.title = figure_title + " - " + what;
+      f.x_label = x_label;
+      f.y_label = y_label;
+      f.label_a = labels[0];
+      f.label_b = labels[1];
+      return f;
+    };
+    const auto panel_title = [](const SensorCorrelation& s) {
+      return s.sensor + ": PCC " + format_fixed(s.pcc_signal, 3) + ", envelopes " + format_fixed(s.pcc_envelope, 3);
+    };
+    if (!plot_signals.empty() || !plot_envelopes.empty()) {
+      auto signals = figure("signals", "t [us]", "signal / max |signal|");
+      auto envelopes = figure("Hilbert envelopes", "t [us]", "envelope / max envelope");
+      signals.x_range = envelopes.x_range = window;
+      for (const auto& s : table.sensors) {
+        const Signal &sa = *find(a, s.sensor), &sb = *find(b, s.sensor);
+        signals.panels.push_back({panel_title(s), time_curve_us(sa), time_curve_us(sb)});
+        if (!plot_envelopes.empty())
+          envelopes.panels.push_back({panel_title(s), time_curve_us(envelope(sa, options.envelope)),
+                                      time_curve_us(envelope(sb, options.envelope))});
+      }
+      if (!plot_signals.empty()) io::render_sensor_panels(signals, plot_signals, run.output(plot_signals));
+      if (!plot_envelopes.empty()) io::render_sensor_panels(envelopes, plot_envelopes, run.output(plot_envelopes));
+    }
+    if (!plot_spectra.empty()) {
+      auto spectra = figure("amplitude spectra", "f [kHz]", "amplitude / max amplitude");
+      if (max_frequency_kHz) spectra.x_range = std::pair{0.0, *max_frequency_kHz};
+      for (const auto& s : table.sensors)
+        spectra.panels.push_back({panel_title(s), spectrum_curve_kHz(s.spectrum_a), spectrum_curve_kHz(s.spectrum_b)});
+      io::render_sensor_panels(spectra, plot_spectra, run.output(plot_spectra));
     }
     if (!out.empty()) {
       json result;

@@ -1,7 +1,11 @@
 #include "mesowave/report/html_report.hpp"
 
+#include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -141,6 +145,19 @@ std::string first_line_of(const std::string& file, const std::string& key) {
   return "";
 }
 
+// Seconds since the epoch of an ISO 8601 UTC time as the recorder writes it
+// ("2026-11-22T04:21:33.390Z"); nullopt for anything else.
+std::optional<double> epoch_seconds(const std::string& iso) {
+  std::tm t{};
+  int millis = 0;
+  if (std::sscanf(iso.c_str(), "%4d-%2d-%2dT%2d:%2d:%2d.%3dZ", &t.tm_year, &t.tm_mon, &t.tm_mday, &t.tm_hour, &t.tm_min,
+                  &t.tm_sec, &millis) != 7)
+    return std::nullopt;
+  t.tm_year -= 1900;
+  t.tm_mon -= 1;
+  return double(timegm(&t)) + millis / 1000.0;
+}
+
 std::string machine_html(const prov::Database* db, const std::set<std::int64_t>& runs) {
   std::ostringstream out;
   const std::string cpu = first_line_of("/proc/cpuinfo", "model name");
@@ -175,6 +192,12 @@ std::string machine_html(const prov::Database* db, const std::set<std::int64_t>&
     out << "<tr><th>runs behind this report</th><td>" << runs.size() << " tool runs, " << format_fixed(wall, 1)
         << " s wall and " << format_fixed(cpu_s, 1) << " s CPU in total, first started " << escape_html(first)
         << ", last ended " << escape_html(last) << "</td></tr>";
+    // With -j the runs overlap, so the span, not the sum, is the pipeline's wall time - when one
+    // make made them all (runs kept from an earlier make stretch it by the time in between).
+    const auto t0 = epoch_seconds(first), t1 = epoch_seconds(last);
+    if (t0 && t1)
+      out << "<tr><th>wall time of the pipeline</th><td>" << format_number(std::round((*t1 - *t0) * 1000) / 1000) << " s ("
+          << format_fixed((*t1 - *t0) / 60, 1) << " min) from the first run's start to the last run's end</td></tr>";
     out << "<tr><th>by tool</th><td>";
     bool comma = false;
     for (const auto& [tool, v] : by_tool) {

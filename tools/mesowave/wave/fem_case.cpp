@@ -74,10 +74,16 @@ std::vector<Probe> make_probes(const FemModel& model, const std::vector<SensorSp
       throw InputError("sensor " + s.name + " lies " + format_quantity(dist / units::mm, "mm") +
                        " from the nearest node: outside the body");
     std::string comp = s.component.empty() ? default_component : s.component;
+    double sign = 1.0;
+    std::string label;
     if (comp == "normal") {
+      // The outward normal, as a transducer on the face sees it (and as mw-dem records "normal"):
+      // -x on the face x = 0, +x on the face x = X.
       const auto face = box_size ? box_face_of(x, *box_size, model.mesh_size_m * 1e-6) : std::nullopt;
       if (!face) throw InputError("sensor " + s.name + ": component 'normal' needs a point on a face of the box");
       comp = std::string(1, "xyz"[face->first]);
+      sign = face->second ? 1.0 : -1.0;
+      label = (face->second ? "" : "-") + comp;
     }
     std::size_t c = 0;
     if (model.dim == 3) {
@@ -90,7 +96,7 @@ std::vector<Probe> make_probes(const FemModel& model, const std::vector<SensorSp
       else if (comp == "z") c = 1;
       else throw InputError("sensor " + s.name + ": an axisymmetric model records r or z, not " + comp);
     }
-    probes.push_back({s.name, node * std::size_t(model.dim) + c, quantity, comp});
+    probes.push_back({s.name, node * std::size_t(model.dim) + c, quantity, label.empty() ? comp : label, sign});
   }
   return probes;
 }

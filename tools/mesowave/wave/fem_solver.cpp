@@ -196,14 +196,15 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
     Quantity quantity;
     double* out;
     std::size_t stride;
+    double sign;
   };
   std::vector<Tap> taps;
   for (std::size_t p = 0; p < probes.size(); ++p)
-    taps.push_back({probes[p].dof, probes[p].quantity, res.signals[p].samples.data(), 1});
+    taps.push_back({probes[p].dof, probes[p].quantity, res.signals[p].samples.data(), 1, probes[p].sign});
   if (st) {
     res.spacetime.assign(std::size_t(nsamples) * st->dofs.size(), 0.0);
     for (std::size_t j = 0; j < st->dofs.size(); ++j)
-      taps.push_back({st->dofs[j], st->quantity, res.spacetime.data() + j, st->dofs.size()});
+      taps.push_back({st->dofs[j], st->quantity, res.spacetime.data() + j, st->dofs.size(), 1.0});
   }
   std::sort(taps.begin(), taps.end(), [](const Tap& a, const Tap& b) { return a.dof < b.dof; });
 
@@ -244,7 +245,7 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
             case Quantity::Velocity: value = 0.5 * (v_new + v[i]); break;
             default: value = (v_new - v[i]) / dt;
           }
-          t->out[k * t->stride] = value;
+          t->out[k * t->stride] = t->sign * value;
         }
       }
       for (std::size_t i = b; i < e; ++i) {

@@ -37,7 +37,8 @@ struct Probe {
   std::string name;
   std::size_t dof = 0;
   Quantity quantity = Quantity::Acceleration;
-  std::string component;  ///< x | y | z | r
+  std::string component;  ///< x | y | z | r, or -x | -y | -z (the outward normal of a lower face)
+  double sign = 1.0;      ///< the recorded value is sign * the dof's (-1: along -axis)
 };
 
 /// Optional space-time record (for a 2D FFT): one quantity at many dofs.

@@ -42,6 +42,10 @@ void render_plot(const PlotSpec& spec, const std::filesystem::path& final_name,
   s << "set output " << quoted(write_to.string()) << "\n";
   s << "set title " << quoted(spec.title) << "\nset xlabel " << quoted(spec.x_label) << "\nset ylabel "
     << quoted(spec.y_label) << "\nset grid\nset key " << spec.key << " box opaque\nset datafile missing 'NaN'\n";
+  if (!spec.logscale.empty()) s << "set logscale " << spec.logscale << "\n";
+  // gnuplot's pngcairo puts a key below the plot on top of the x label unless the margin makes room.
+  if (spec.key.rfind("below", 0) == 0) s << "set bmargin 7\n";
+  if (spec.margins) s << "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
   if (spec.x_range) s << "set xrange [" << spec.x_range->first << ":" << spec.x_range->second << "]\n";
   if (spec.y_range) s << "set yrange [" << spec.y_range->first << ":" << spec.y_range->second << "]\n";
   for (std::size_t i = 0; i < spec.series.size(); ++i) {

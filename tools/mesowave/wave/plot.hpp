@@ -21,6 +21,8 @@ struct PlotSpec {
   std::vector<PlotSeries> series;
   int width_px = 1000, height_px = 650;
   std::string key = "outside right top";  ///< gnuplot key position ("inside bottom left", ...)
+  std::string logscale;                   ///< axes on a log scale: "", "x", "y" or "xy"
+  bool margins = false;                   ///< keep points off the frame (5 % of the range on each side)
 };
 
 /// Renders `spec` to `write_to` (a staged temporary) in the format named by

@@ -1,0 +1,193 @@
+#include "mesowave/io/table_gather.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
+#include "mesowave/io/quantity_file.hpp"
+
+namespace mesowave::io {
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+std::string trim(std::string s) {
+  const auto b = s.find_first_not_of(" \t");
+  const auto e = s.find_last_not_of(" \t");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+std::optional<double> as_number(const std::string& s) {
+  if (s.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size()) return std::nullopt;
+  return v;
+}
+
+bool same_key(const std::string& a, const std::string& b) {
+  const auto x = as_number(a), y = as_number(b);
+  return (x && y) ? *x == *y : a == b;
+}
+
+// One input file, read once: a CSV table, a JSON document, or TOML quantities.
+struct Source {
+  fs::path path;
+  std::optional<CsvTable> csv;
+  std::optional<json> doc;
+  std::map<std::string, std::string> quantities;
+
+  static Source load(const fs::path& p) {
+    Source s;
+    s.path = p;
+    if (!fs::is_regular_file(p)) throw InputError(p.string() + " does not exist");
+    const auto ext = p.extension().string();
+    if (ext == ".csv") {
+      s.csv = read_csv(p);
+    } else if (ext == ".json") {
+      std::ifstream in(p);
+      try {
+        s.doc = json::parse(in);
+      } catch (const json::exception& e) {
+        throw InputError(p.string() + " is not JSON: " + e.what());
+      }
+      if (!s.doc->is_object()) throw InputError(p.string() + ": expected a JSON object");
+    } else if (ext == ".toml") {
+      for (const auto& q : read_quantity_file(p)) s.quantities[q.name] = q.value;
+    } else {
+      throw InputError(p.string() + ": a gathered file must be .csv, .json or .toml");
+    }
+    return s;
+  }
+
+  // The value of `source`, if this file holds it.
+  std::optional<std::string> value(const std::string& source, const std::optional<RowSelector>& where) const {
+    if (csv) {
+      const auto col = csv->find_column(source);
+      if (!col) return std::nullopt;
+      std::vector<std::size_t> hits;
+      if (where) {
+        const auto sel = csv->find_column(where->first);
+        if (!sel) throw InputError(path.string() + " has no column '" + where->first + "' to pick a row by");
+        for (std::size_t r = 0; r < csv->rows.size(); ++r)
+          if (csv->text(r, *sel) == where->second) hits.push_back(r);
+        if (hits.size() != 1)
+          throw InputError(path.string() + " has " + std::to_string(hits.size()) + " rows with " + where->first + " = " +
+                           where->second + " (need exactly one)");
+      } else {
+        if (csv->rows.size() != 1)
+          throw InputError(path.string() + " has " + std::to_string(csv->rows.size()) +
+                           " rows: say which one (a row selector COLUMN=VALUE)");
+        hits.push_back(0);
+      }
+      return csv->text(hits.front(), *col);
+    }
+    if (doc) {
+      const json* node = &*doc;
+      std::istringstream parts(source);
+      std::string part;
+      while (std::getline(parts, part, '.')) {
+        if (!node->is_object() || !node->contains(part)) return std::nullopt;
+        node = &(*node)[part];
+      }
+      if (node->is_number()) return format_exact(node->get<double>());
+      if (node->is_string()) return node->get<std::string>();
+      if (node->is_boolean()) return std::string(node->get<bool>() ? "true" : "false");
+      throw InputError(path.string() + ": '" + source + "' is not a number, text or true/false");
+    }
+    const auto it = quantities.find(source);
+    if (it == quantities.end()) return std::nullopt;
+    return it->second;
+  }
+};
+
+}  // namespace
+
+RowSelector parse_row_selector(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("row selector '" + text + "' must read COLUMN=VALUE");
+  return {trim(text.substr(0, eq)), trim(text.substr(eq + 1))};
+}
+
+ColumnSource parse_column_source(const std::string& text) {
+  ColumnSource c;
+  std::string rest = text;
+  if (const auto at = rest.find('@'); at != std::string::npos) {
+    c.where = parse_row_selector(rest.substr(at + 1));
+    rest = rest.substr(0, at);
+  }
+  const auto eq = rest.find('=');
+  c.name = trim(rest.substr(0, eq));
+  c.source = eq == std::string::npos ? c.name : trim(rest.substr(eq + 1));
+  if (c.name.empty() || c.source.empty())
+    throw InputError("column '" + text + "' must read NAME, NAME=SOURCE or NAME=SOURCE@COLUMN=VALUE");
+  return c;
+}
+
+GatherRow parse_gather_row(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw InputError("row '" + text + "' must read KEY=FILE[,FILE...]");
+  GatherRow r;
+  r.key = trim(text.substr(0, eq));
+  std::istringstream files(text.substr(eq + 1));
+  std::string f;
+  while (std::getline(files, f, ','))
+    if (!trim(f).empty()) r.files.emplace_back(trim(f));
+  if (r.files.empty()) throw InputError("row '" + text + "' names no file");
+  return r;
+}
+
+CsvTable gather_rows(const GatherSpec& spec) {
+  if (spec.rows.empty()) throw InputError("a gathered table needs at least one row");
+  if (spec.columns.empty()) throw InputError("a gathered table needs at least one column");
+  CsvTable table;
+  table.origin = "gathered table";
+  table.header.push_back(spec.key_name);
+  for (const auto& c : spec.columns) table.header.push_back(c.name);
+  for (const auto& row : spec.rows) {
+    std::vector<Source> sources;
+    for (const auto& f : row.files) sources.push_back(Source::load(f));
+    std::vector<std::string> fields = {row.key};
+    for (const auto& c : spec.columns) {
+      std::optional<std::string> v;
+      for (const auto& s : sources)
+        if ((v = s.value(c.source, c.where ? c.where : spec.where))) break;
+      if (!v) {
+        std::string names;
+        for (const auto& f : row.files) names += (names.empty() ? "" : ", ") + f.string();
+        throw InputError("row " + row.key + ": no file holds '" + c.source + "' (" + names + ")");
+      }
+      fields.push_back(*v);
+    }
+    table.rows.push_back(std::move(fields));
+  }
+  return table;
+}
+
+void join_columns(CsvTable& table, const CsvTable& other, const std::string& key,
+                  const std::vector<ColumnSource>& columns) {
+  const auto key_here = table.column(key), key_there = other.column(key);
+  std::vector<std::size_t> from;
+  for (const auto& c : columns) from.push_back(other.column(c.source));
+  for (std::size_t r = 0; r < other.rows.size(); ++r)
+    for (std::size_t q = r + 1; q < other.rows.size(); ++q)
+      if (same_key(other.text(r, key_there), other.text(q, key_there)))
+        throw InputError(other.origin + " has " + key + " = " + other.text(r, key_there) + " twice");
+  for (const auto& c : columns) table.header.push_back(c.name);
+  for (auto& row : table.rows) {
+    std::optional<std::size_t> match;
+    for (std::size_t r = 0; r < other.rows.size(); ++r)
+      if (same_key(row[key_here], other.text(r, key_there))) match = r;
+    for (auto col : from) row.push_back(match ? other.text(*match, col) : std::string());
+  }
+}
+
+}  // namespace mesowave::io

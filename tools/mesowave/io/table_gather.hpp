@@ -1,0 +1,66 @@
+#pragma once
+// Tables made of other tools' outputs: one row per run (a frequency, a model),
+// each value taken from the CSV table or the JSON / TOML summary that run
+// wrote, so that a summary table such as the concrete paper's Table 3 (mean PCC
+// per frequency, from one mw-pcc table per frequency) is itself a recorded run
+// whose inputs are the files its numbers come from.
+//
+//   row    "100=results/pcc-100kHz.csv,results/dem-100kHz.json"   key, then its files
+//   column "pcc_mean=pcc_signal"            output column = a column (CSV) or key (JSON, TOML)
+//          "B=pcc_signal@sensor=B"          ... in the CSV row whose column `sensor` is "B"
+//          "wall_s"                         same name in and out
+//          "residual=energy.residual_relative"   a JSON key inside an object
+// In a CSV file the value comes from the row the column's selector (or the
+// gather's default selector) picks; a file of one row needs none. The first of
+// a row's files that holds the source gives the value.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mesowave/io/csv.hpp"
+
+namespace mesowave::io {
+
+/// "COLUMN=VALUE": pick the CSV row whose COLUMN reads VALUE.
+using RowSelector = std::pair<std::string, std::string>;
+RowSelector parse_row_selector(const std::string& text);
+
+struct ColumnSource {
+  std::string name;                   ///< the output column
+  std::string source;                 ///< column (CSV) or key (JSON, TOML) in the files
+  std::optional<RowSelector> where;   ///< CSV: the row; default: the gather's selector
+};
+/// "NAME", "NAME=SOURCE" or "NAME=SOURCE@COLUMN=VALUE"; InputError otherwise.
+ColumnSource parse_column_source(const std::string& text);
+
+struct GatherRow {
+  std::string key;
+  std::vector<std::filesystem::path> files;
+};
+/// "KEY=FILE[,FILE...]"; InputError otherwise.
+GatherRow parse_gather_row(const std::string& text);
+
+struct GatherSpec {
+  std::string key_name = "key";        ///< header of the first column
+  std::vector<GatherRow> rows;
+  std::vector<ColumnSource> columns;
+  std::optional<RowSelector> where;    ///< default row selector for CSV files
+};
+
+/// The gathered table: key_name, then the columns, one row per GatherRow in
+/// order. Numbers are copied as written (CSV) or in their shortest exact form
+/// (JSON). InputError naming the file when a CSV has no row or several rows
+/// matching the selector (or several rows and no selector), or when none of a
+/// row's files holds a column's source.
+CsvTable gather_rows(const GatherSpec& spec);
+
+/// Adds `columns` of `other` to `table`, matching rows by `key` (a column of
+/// both; numbers compare as numbers, so "100" meets "100.0"). A row `other`
+/// lacks gets an empty field; InputError if `other` has a key twice or lacks a
+/// column.
+void join_columns(CsvTable& table, const CsvTable& other, const std::string& key,
+                  const std::vector<ColumnSource>& columns);
+
+}  // namespace mesowave::io
