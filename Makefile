@@ -68,7 +68,8 @@ include pipeline/concrete-cube/study.mk
 include pipeline/steel-rod/study.mk
 include pipeline/report.mk
 
-pipeline: concrete-cube-summary concrete-cube-raw-summary concrete-cube-waves-summary steel-rod-summary \
+pipeline: concrete-cube-summary concrete-cube-raw-summary concrete-cube-calibration-summary concrete-cube-waves-summary \
+    steel-rod-summary steel-rod-calibration \
     $(REPORT_DIR)/index.html
 	@echo; echo "report: $(CURDIR)/$(REPORT_DIR)/index.html"
 

@@ -70,6 +70,34 @@ TEST(TableGather, OneRowPerRunFromCsvJsonAndToml) {
   EXPECT_EQ(t.rows[1][3], "12");
 }
 
+// One quantity under different names in different tools' summaries (a lab-data
+// TOML entry, mw-calibrate's flat JSON, mw-dem's nested "test" object).
+TEST(TableGather, AlternativeSourcesTakeTheFirstNameAFileHolds) {
+  TempDir dir;
+  write_file(dir / "lab.toml", "[E_glob_GPa]\nvalue = 27.65\nunit = \"GPa\"\nsource = \"paper\"\ncite = \"Table 2\"\n");
+  write_file(dir / "calibration.json", R"({"E_glob_GPa": 27.45, "test": {"E_glob_GPa": 1.0}})");
+  write_file(dir / "run.json", R"({"test": {"E_glob_GPa": 24.2}})");
+  GatherSpec spec;
+  for (const char* r : {"paper", "calibrated", "run"}) {
+    const std::string file = std::string(r) == "paper" ? "lab.toml" : std::string(r) == "run" ? "run.json" : "calibration.json";
+    spec.rows.push_back(parse_gather_row(std::string(r) + "=" + (dir / file).string()));
+  }
+  spec.columns.push_back(parse_column_source("E=E_glob_GPa|test.E_glob_GPa"));
+  const auto t = gather_rows(spec);
+  ASSERT_EQ(t.rows.size(), 3u);
+  EXPECT_EQ(t.rows[0][1], "27.65");
+  EXPECT_EQ(t.rows[1][1], "27.45");  // the first name wins in a file holding both
+  EXPECT_EQ(t.rows[2][1], "24.2");
+  spec.significant_digits = 4;  // JSON numbers rounded; the TOML value as written
+  const auto rounded = gather_rows(spec);
+  EXPECT_EQ(rounded.rows[0][1], "27.65");
+  EXPECT_EQ(rounded.rows[2][1], "24.2");
+  write_file(dir / "run.json", R"({"test": {"E_glob_GPa": 24.210599476597476}})");
+  EXPECT_EQ(gather_rows(spec).rows[2][1], "24.21");
+  spec.columns = {parse_column_source("E=E_st_GPa|E_glob")};
+  EXPECT_THROW(gather_rows(spec), InputError);
+}
+
 TEST(TableGather, AmbiguousOrMissingValuesAreErrorsNamingTheFile) {
   TempDir dir;
   const auto pcc = (dir / "pcc.csv").string();

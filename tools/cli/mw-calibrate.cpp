@@ -4,10 +4,10 @@
 // mw-calibrate decides what to run next (dem/calibration.hpp) and writes the
 // calibrated parameters as JSON that `mw-dem run --from` reads.
 //
-//   mw-calibrate cube --scene pipeline/concrete-cube/scenes/cube-compression.toml \
-//       --from lab-data/concrete-cube/static-test.toml --work-dir results/concrete-cube/calibration \
+//   mw-calibrate cube --scene pipeline/concrete-cube/scenes/cube-compression.toml
+//       --from lab-data/concrete-cube/static-test.toml --work-dir results/concrete-cube/calibration
 //       --out results/concrete-cube/calibration.json
-//   mw-calibrate rod --scene pipeline/steel-rod/scenes/rod-tension.toml \
+//   mw-calibrate rod --scene pipeline/steel-rod/scenes/rod-tension.toml
 //       --packing results/steel-rod/packing-1.05R.h5 --E-GPa 208.72 --out rod-1.05R.json
 #include <cmath>
 #include <fstream>

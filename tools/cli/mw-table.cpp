@@ -59,18 +59,23 @@ int main(int argc, char** argv) {
 
   auto* gather = cli.add_subcommand("gather", "One row per run: values picked from the runs' CSV, JSON or TOML files");
   std::string key_name = "key", where_text;
+  int significant_digits = 0;
   std::vector<std::string> row_texts, column_texts, join_texts;
   fs::path csv_out;
   gather->add_option("--key-name", key_name, "Header of the key column (e.g. f_kHz)")->capture_default_str();
   gather->add_option("--row", row_texts, "KEY=FILE[,FILE...]: one row; repeatable, in order")->required();
   gather->add_option("--column", column_texts,
-                     "NAME[=SOURCE][@COLUMN=VALUE]: an output column from a CSV column or JSON/TOML key; repeatable")
+                     "NAME[=SOURCE][@COLUMN=VALUE]: an output column from a CSV column or JSON/TOML key (SOURCE may be A|B: A, else B, for a quantity named differently in different files); repeatable")
       ->required();
   gather->add_option("--where", where_text, "COLUMN=VALUE: the row of every CSV file to take values from");
   gather->add_option("--join", join_texts,
                      "FILE:NAME=SOURCE[,NAME=SOURCE...]: columns of a CSV table with the key column, matched by key "
                      "(empty where it has no row); repeatable");
   gather->add_option("--csv", csv_out, "The table to write (CSV)")->type_name("FILE")->required();
+  gather->add_option("--significant-digits", significant_digits,
+                     "Round the numbers taken from JSON files to this many significant digits (default: all, "
+                     "the shortest text that reads back exactly; CSV and TOML values are copied as written)")
+      ->check(CLI::Range(1, 17));
 
   auto* plot = cli.add_subcommand("plot", "Columns of a CSV table against one of its columns (gnuplot)");
   fs::path table_path, plot_out;
@@ -102,6 +107,7 @@ int main(int argc, char** argv) {
       io::GatherSpec spec;
       spec.key_name = key_name;
       if (!where_text.empty()) spec.where = io::parse_row_selector(where_text);
+      if (significant_digits > 0) spec.significant_digits = significant_digits;
       for (const auto& r : row_texts) spec.rows.push_back(io::parse_gather_row(r));
       for (const auto& c : column_texts) spec.columns.push_back(io::parse_column_source(c));
       for (const auto& r : spec.rows)

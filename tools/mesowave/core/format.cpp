@@ -21,6 +21,13 @@ std::string format_exact(double value) {
   return std::string(buffer, end);
 }
 
+std::string format_significant(double value, int digits) {
+  if (!std::isfinite(value)) return format_exact(value);
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+  return buffer;
+}
+
 std::string format_quantity(double value, std::string_view unit) {
   std::string text = format_number(value);
   if (!unit.empty()) {

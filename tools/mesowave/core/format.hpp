@@ -16,6 +16,9 @@ std::string format_exact(double value);
 /// `format_number(value)` followed by the unit, if any ("35 us").
 std::string format_quantity(double value, std::string_view unit);
 
+/// `digits` significant digits, the shortest way ("27.41", "0.16", "1.5e-06").
+std::string format_significant(double value, int digits);
+
 /// Fixed-point text with `digits` decimals ("30.44").
 std::string format_fixed(double value, int digits);
 

@@ -152,7 +152,7 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
   for (std::size_t i = 0; i < loads.size(); ++i) {
     const ActuatorSpec& a = *loads[i].spec;
     actuator_placements_.push_back({a.name, a.kind, packing_indices(loads[i].spheres), loads[i].direction, a.amplitude,
-                                    a.frequency_hz, a.cycles, a.delay_s});
+                                    a.frequency_hz, a.cycles, a.delay_s, {}});
     if (a.kind == "wall") {
       actuators_.push_back(std::make_unique<RigidWall>(a.name, *model_, box, a.target.patch.face, m.young_Pa,
                                                        VelocityRamp{a.amplitude, a.delay_s, a.ramp_s},
@@ -179,24 +179,24 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
       for (const auto& a : actuators_)
         if (a->name() == sensor.actuator) source = a.get();
       sensors_.push_back(std::make_unique<ActuatorForceSensor>(sensor.name, *source, every));
-      sensor_placements_.push_back({sensor.name, "force of actuator " + sensor.actuator, {}, {}});
+      sensor_placements_.push_back({sensor.name, "force of actuator " + sensor.actuator, {}, {}, 0, 0, 0, 0, {}});
       continue;
     }
     if (sensor.kind == SensorSpec::Kind::broken_bonds) {
       sensors_.push_back(std::make_unique<BrokenBondCounter>(sensor.name, every));
-      sensor_placements_.push_back({sensor.name, "broken bonds", {}, {}});
+      sensor_placements_.push_back({sensor.name, "broken bonds", {}, {}, 0, 0, 0, 0, {}});
       continue;
     }
     if (sensor.kind == SensorSpec::Kind::strain) {
       const Vec3 axis = direction_vector(sensor.component, sensor.target, who, line);
-      sensor_placements_.push_back({sensor.name, "strain", packing_indices(chosen), axis});
-      sensor_placements_.back().spheres_b = packing_indices(sensor_pads[i]);
+      sensor_placements_.push_back(
+          {sensor.name, "strain", packing_indices(chosen), axis, 0, 0, 0, 0, packing_indices(sensor_pads[i])});
       sensors_.push_back(std::make_unique<Extensometer>(sensor.name, *model_, chosen, sensor_pads[i], axis,
                                                         sensor.component, every));
       continue;
     }
     const Vec3 component = direction_vector(sensor.component, sensor.target, who, line);
-    sensor_placements_.push_back({sensor.name, to_string(sensor.quantity), packing_indices(chosen), component});
+    sensor_placements_.push_back({sensor.name, to_string(sensor.quantity), packing_indices(chosen), component, 0, 0, 0, 0, {}});
     Vec3 position{};
     for (std::size_t k : chosen) position += model_->reference_position(k);
     position = (1.0 / double(chosen.size())) * position;

@@ -67,7 +67,8 @@ struct Source {
   }
 
   // The value of `source`, if this file holds it.
-  std::optional<std::string> value(const std::string& source, const std::optional<RowSelector>& where) const {
+  std::optional<std::string> value(const std::string& source, const std::optional<RowSelector>& where,
+                                   std::optional<int> digits) const {
     if (csv) {
       const auto col = csv->find_column(source);
       if (!col) return std::nullopt;
@@ -96,7 +97,7 @@ struct Source {
         if (!node->is_object() || !node->contains(part)) return std::nullopt;
         node = &(*node)[part];
       }
-      if (node->is_number()) return format_exact(node->get<double>());
+      if (node->is_number()) return digits ? format_significant(node->get<double>(), *digits) : format_exact(node->get<double>());
       if (node->is_string()) return node->get<std::string>();
       if (node->is_boolean()) return std::string(node->get<bool>() ? "true" : "false");
       throw InputError(path.string() + ": '" + source + "' is not a number, text or true/false");
@@ -145,6 +146,19 @@ GatherRow parse_gather_row(const std::string& text) {
   return r;
 }
 
+namespace {
+// "E_glob_GPa|test.E_glob_GPa": the names one quantity goes by in different
+// tools' summaries, tried in order in each file.
+std::vector<std::string> split_alternatives(const std::string& source) {
+  std::vector<std::string> names;
+  std::istringstream parts(source);
+  std::string name;
+  while (std::getline(parts, name, '|'))
+    if (!trim(name).empty()) names.push_back(trim(name));
+  return names;
+}
+}  // namespace
+
 CsvTable gather_rows(const GatherSpec& spec) {
   if (spec.rows.empty()) throw InputError("a gathered table needs at least one row");
   if (spec.columns.empty()) throw InputError("a gathered table needs at least one column");
@@ -158,8 +172,12 @@ CsvTable gather_rows(const GatherSpec& spec) {
     std::vector<std::string> fields = {row.key};
     for (const auto& c : spec.columns) {
       std::optional<std::string> v;
-      for (const auto& s : sources)
-        if ((v = s.value(c.source, c.where ? c.where : spec.where))) break;
+      const auto alternatives = split_alternatives(c.source);
+      for (const auto& s : sources) {
+        for (const auto& a : alternatives)
+          if ((v = s.value(a, c.where ? c.where : spec.where, spec.significant_digits))) break;
+        if (v) break;
+      }
       if (!v) {
         std::string names;
         for (const auto& f : row.files) names += (names.empty() ? "" : ", ") + f.string();

@@ -10,6 +10,7 @@
 //          "B=pcc_signal@sensor=B"          ... in the CSV row whose column `sensor` is "B"
 //          "wall_s"                         same name in and out
 //          "residual=energy.residual_relative"   a JSON key inside an object
+//          "E=E_glob_GPa|test.E_glob_GPa"   the first of these names a file holds
 // In a CSV file the value comes from the row the column's selector (or the
 // gather's default selector) picks; a file of one row needs none. The first of
 // a row's files that holds the source gives the value.
@@ -29,7 +30,7 @@ RowSelector parse_row_selector(const std::string& text);
 
 struct ColumnSource {
   std::string name;                   ///< the output column
-  std::string source;                 ///< column (CSV) or key (JSON, TOML) in the files
+  std::string source;                 ///< column (CSV) or key (JSON, TOML) in the files; "A|B": A, else B
   std::optional<RowSelector> where;   ///< CSV: the row; default: the gather's selector
 };
 /// "NAME", "NAME=SOURCE" or "NAME=SOURCE@COLUMN=VALUE"; InputError otherwise.
@@ -47,6 +48,7 @@ struct GatherSpec {
   std::vector<GatherRow> rows;
   std::vector<ColumnSource> columns;
   std::optional<RowSelector> where;    ///< default row selector for CSV files
+  std::optional<int> significant_digits;  ///< JSON numbers rounded to these (CSV, TOML: as written)
 };
 
 /// The gathered table: key_name, then the columns, one row per GatherRow in
