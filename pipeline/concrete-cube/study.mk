@@ -5,7 +5,7 @@
 #
 # Blocks, in the flowchart's order: steps 1 and 3 (density, UPV dynamic moduli,
 # static-modulus conversions, Table 1); steps 2-4 from raw lab data; step 5 (the
-# DEM packing); step 6 (calibration: the lead's block); the wave test at
+# DEM packing); step 6 (calibration and Table 2); the wave test at
 # 100-500 kHz with its continuum reference, PCC (Table 3), figures and speed
 # against error.
 

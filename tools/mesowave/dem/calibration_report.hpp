@@ -11,7 +11,8 @@
 
 namespace mesowave::dem {
 
-/// One row per trial: trial, kind, model, parameters, results, wall time, summary file.
+/// One row per trial: trial, kind, model, parameters, results (six significant digits), wall
+/// time (0.1 s), summary file (which has the numbers in full).
 std::string calibration_trials_csv(const std::vector<CalibrationTrial>& trials);
 
 /// Three panels against the trial number: E_glob / E_st, nu_glob, sigma_peak /

@@ -136,7 +136,10 @@ std::string to_csv(const std::vector<std::string>& header, const std::vector<std
   };
   std::string out;
   auto line = [&](const std::vector<std::string>& fields) {
-    for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? "," : "") + field(fields[i]);
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      if (i) out += ',';
+      out += field(fields[i]);
+    }
     out += '\n';
   };
   line(header);

@@ -33,6 +33,15 @@ std::string gnuplot_quote(const fs::path& path) {
   return out + "'";
 }
 
+std::string gnuplot_text(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
 namespace {
 std::string shell_quote(const std::string& text) {
   std::string out = "'";

@@ -14,6 +14,10 @@ std::string gnuplot_datablock(const std::string& name, const std::vector<std::ve
 /// Quotes a path for a gnuplot string ('...'; single quotes doubled).
 std::string gnuplot_quote(const std::filesystem::path& path);
 
+/// Text as a gnuplot string in double quotes, for titles and labels: an
+/// apostrophe stays as it is, a double quote or backslash is escaped.
+std::string gnuplot_text(const std::string& text);
+
 /// Runs gnuplot on `script` (written to a temporary file). InputError if
 /// gnuplot is not installed or fails (its message is passed on).
 void run_gnuplot(const std::string& script);

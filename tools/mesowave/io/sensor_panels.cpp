@@ -16,16 +16,6 @@ bool in_range(double x, const std::optional<std::pair<double, double>>& range) {
   return !range || (x >= range->first && x <= range->second);
 }
 
-// A gnuplot string in double quotes (titles may hold an apostrophe).
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 Curve scaled(const Curve& c, const std::optional<std::pair<double, double>>& range, bool normalise) {
   double peak = 0;
   for (std::size_t i = 0; i < c.x.size(); ++i)
@@ -96,18 +86,18 @@ std::string sensor_panels_script(const SensorPanelsFigure& figure, const fs::pat
       s << gnuplot_datablock(name, {d.x, d.y});
     }
   }
-  s << "set multiplot layout " << rows << "," << columns << " title " << quoted(figure.title) << "\n";
-  s << "set grid\nset xlabel " << quoted(figure.x_label) << "\nset ylabel " << quoted(figure.y_label) << "\n";
+  s << "set multiplot layout " << rows << "," << columns << " title " << gnuplot_text(figure.title) << "\n";
+  s << "set grid\nset xlabel " << gnuplot_text(figure.x_label) << "\nset ylabel " << gnuplot_text(figure.y_label) << "\n";
   if (figure.x_range) s << "set xrange [" << figure.x_range->first << ":" << figure.x_range->second << "]\n";
   s << "set key top right opaque box samplen 2\n";
   for (std::size_t p = 0; p < figure.panels.size(); ++p) {
     const auto& panel = figure.panels[p];
     // The legend once, in the first panel; the sets keep their colours throughout.
     if (p == 1) s << "unset key\n";
-    s << "set title " << quoted(panel.title) << "\n";
-    s << "plot $a" << p << " using 1:2 with lines lw 1.2 lc rgb '#0060ad' title " << quoted(figure.label_a);
+    s << "set title " << gnuplot_text(panel.title) << "\n";
+    s << "plot $a" << p << " using 1:2 with lines lw 1.2 lc rgb '#0060ad' title " << gnuplot_text(figure.label_a);
     if (!panel.b.x.empty())
-      s << ", $b" << p << " using 1:2 with lines lw 1 lc rgb '#50dd181f' title " << quoted(figure.label_b);
+      s << ", $b" << p << " using 1:2 with lines lw 1 lc rgb '#50dd181f' title " << gnuplot_text(figure.label_b);
     s << "\n";
   }
   s << "unset multiplot\nunset output\n";

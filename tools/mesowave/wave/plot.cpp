@@ -9,21 +9,9 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/io/gnuplot.hpp"
 
 namespace mesowave::wave {
-
-namespace {
-
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
-}  // namespace
 
 void require_plot_extension(const std::filesystem::path& path) {
   const auto ext = path.extension().string();
@@ -39,9 +27,9 @@ void render_plot(const PlotSpec& spec, const std::filesystem::path& final_name,
     s << "set terminal pngcairo size " << spec.width_px << "," << spec.height_px << " font 'Sans,11'\n";
   else
     s << "set terminal svg size " << spec.width_px << "," << spec.height_px << " font 'Sans,11' background '#ffffff'\n";
-  s << "set output " << quoted(write_to.string()) << "\n";
-  s << "set title " << quoted(spec.title) << "\nset xlabel " << quoted(spec.x_label) << "\nset ylabel "
-    << quoted(spec.y_label) << "\nset grid\nset key " << spec.key << " box opaque\nset datafile missing 'NaN'\n";
+  s << "set output " << io::gnuplot_quote(write_to) << "\n";
+  s << "set title " << io::gnuplot_text(spec.title) << "\nset xlabel " << io::gnuplot_text(spec.x_label) << "\nset ylabel "
+    << io::gnuplot_text(spec.y_label) << "\nset grid\nset key " << spec.key << " box opaque\nset datafile missing 'NaN'\n";
   if (!spec.logscale.empty()) s << "set logscale " << spec.logscale << "\n";
   // gnuplot's pngcairo puts a key below the plot on top of the x label unless the margin makes room.
   if (spec.key.rfind("below", 0) == 0) s << "set bmargin 7\n";
@@ -61,7 +49,7 @@ void render_plot(const PlotSpec& spec, const std::filesystem::path& final_name,
   for (std::size_t i = 0; i < spec.series.size(); ++i) {
     const auto& ser = spec.series[i];
     s << (i ? ", \\\n     " : "") << "$d" << i << " using 1:2 with " << ser.style
-      << (ser.label.empty() ? " notitle" : " title " + quoted(ser.label));
+      << (ser.label.empty() ? " notitle" : " title " + io::gnuplot_text(ser.label));
   }
   s << "\nunset output\n";
 
