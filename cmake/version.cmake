@@ -1,6 +1,7 @@
 # The version string every provenance record carries: `git describe` of the
-# source tree, refreshed at every build but rewritten only when it changes, so
-# an unchanged tree does not relink every tool.
+# last commit that changed the code (write_version.cmake), refreshed at every
+# build but rewritten only when it changes, so that unchanged code does not
+# relink every tool.
 set(MESOWAVE_VERSION_CPP ${CMAKE_BINARY_DIR}/generated/version.cpp)
 add_custom_target(mesowave_version_stamp
   COMMAND ${CMAKE_COMMAND}

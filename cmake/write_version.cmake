@@ -1,20 +1,32 @@
-# Script mode: writes OUTPUT with the git description of SOURCE_DIR.
-# The version describes the code: the commit, and "-dirty" only when what is compiled
-# (tools/, cmake/, CMakeLists.txt) differs from it. A changed lab-data value or doc does not
-# change the tools, so it must not relink them - which would make every pipeline output look
-# out of date (its rules depend on the tools). The binary's own SHA-256 is recorded beside.
+# Script mode: writes OUTPUT with the git description of SOURCE_DIR's code.
+# The version describes the code: the last commit that changed what is compiled into the
+# tools (tools/, cmake/, CMakeLists.txt, db/schema.sql), and "-dirty" when those differ from
+# it. A commit of docs or a change of lab-data leaves the tools as they are, so it must not
+# relink them - which would make every pipeline output look out of date (its rules depend on
+# the tools) and re-run the whole pipeline. The binary's own SHA-256 is recorded beside the
+# version in every run.
+set(code_paths tools cmake CMakeLists.txt db/schema.sql)
 execute_process(
-  COMMAND git describe --always --tags
+  COMMAND git log -1 --format=%H -- ${code_paths}
   WORKING_DIRECTORY ${SOURCE_DIR}
-  OUTPUT_VARIABLE describe
+  OUTPUT_VARIABLE code_commit
   OUTPUT_STRIP_TRAILING_WHITESPACE
   ERROR_QUIET
   RESULT_VARIABLE rc)
+if(rc EQUAL 0 AND NOT code_commit STREQUAL "")
+  execute_process(
+    COMMAND git describe --always --tags ${code_commit}
+    WORKING_DIRECTORY ${SOURCE_DIR}
+    OUTPUT_VARIABLE describe
+    OUTPUT_STRIP_TRAILING_WHITESPACE
+    ERROR_QUIET
+    RESULT_VARIABLE rc)
+endif()
 if(NOT rc EQUAL 0 OR describe STREQUAL "")
   set(describe "${FALLBACK}-nogit")
 else()
   execute_process(
-    COMMAND git status --porcelain -- tools cmake CMakeLists.txt
+    COMMAND git status --porcelain -- ${code_paths}
     WORKING_DIRECTORY ${SOURCE_DIR}
     OUTPUT_VARIABLE changed
     OUTPUT_STRIP_TRAILING_WHITESPACE

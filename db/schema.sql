@@ -13,7 +13,7 @@ INSERT OR IGNORE INTO meta (key, value) VALUES ('application', 'mesowave provena
 CREATE TABLE IF NOT EXISTS runs (
   id            INTEGER PRIMARY KEY,
   tool          TEXT    NOT NULL,  -- mw-upv, mw-dem, ...
-  version       TEXT    NOT NULL,  -- git describe of the source tree it was built from
+  version       TEXT    NOT NULL,  -- git describe of the last commit that changed the code it was built from (+ -dirty)
   binary_sha256 TEXT    NOT NULL,  -- SHA-256 of the executable that ran
   argv          TEXT    NOT NULL,  -- JSON array, as typed
   params        TEXT    NOT NULL,  -- JSON object: every option's final value, files included

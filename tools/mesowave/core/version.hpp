@@ -2,8 +2,9 @@
 
 namespace mesowave {
 
-/// `git describe --always --dirty --tags` of the tree the library was built
-/// from (generated at build time by cmake/write_version.cmake).
+/// `git describe` of the last commit that changed the code the library was
+/// built from (tools/, cmake/, CMakeLists.txt, db/schema.sql), "-dirty" if it has
+/// uncommitted changes (generated at build time by cmake/write_version.cmake).
 const char* source_version();
 
 }  // namespace mesowave
