@@ -49,7 +49,8 @@ TEST(MwUpv, OnsetInsideThePretrigger) {
   std::string text = read_file(dir / "p.csv"), shifted = "t_us,amplitude_V\n";
   std::istringstream in(text);
   std::string line;
-  std::getline(in, line);
+  while (std::getline(in, line) && (line.empty() || line[0] == '#')) {
+  }  // the label, then the header line just read
   while (std::getline(in, line)) {
     const auto comma = line.find(',');
     shifted += format_fixed(std::stod(line.substr(0, comma)) - 45.0, 2) + line.substr(comma) + "\n";

@@ -217,8 +217,9 @@ int main(int argc, char** argv) {
       c.dropout_stuck = drop_stuck;
       c.seed = seed;
       const auto tests = lab::synthetic_compression_tests(c);
-      run.write_text(cyclic, lab::compression_record_csv(tests.cyclic));
-      run.write_text(failure, lab::compression_record_csv(tests.failure));
+      const std::string label = lab::synthetic_record_label();
+      run.write_text(cyclic, label + lab::compression_record_csv(tests.cyclic));
+      run.write_text(failure, label + lab::compression_record_csv(tests.failure));
       title = "Synthetic compression tests of a " + format_number(side_mm) + " mm cube: " + cyclic.filename().string() +
               " (cyclic, EN 12390-13 method B) and " + failure.filename().string() + " (to failure)";
       entries = {{"true_E_st", E_GPa, "GPa", "modulus of every unloading/reloading cycle after the first loading"},
@@ -251,7 +252,8 @@ int main(int argc, char** argv) {
         spec.precursor_tof_s = pre > 0 ? t_p_us * units::us : 0.0;
         spec.precursor_fraction = pre;
         spec.seed = s;
-        run.write_text(file, lab::waveform_csv(lab::synthetic_upv_waveform(spec)));
+        run.write_text(file, lab::synthetic_record_label() +
+                                 lab::waveform_csv(lab::synthetic_upv_waveform(spec)));
       };
       if (!p_wave.empty()) make(p_wave, t_p_us, f_p_kHz, 0, seed);
       if (!s_wave.empty()) make(s_wave, t_s_us, f_s_kHz, precursor, seed + 1);

@@ -23,6 +23,11 @@ std::string toml_float(double v) {
 }
 }  // namespace
 
+std::string synthetic_record_label() {
+  return "# source: synthetic - made by mesowave's generator (mw-synth) from the ground truth in the truth file "
+         "written with it, not measured\n";
+}
+
 std::string truth_toml(const std::string& title, const std::string& command, const std::vector<TruthEntry>& entries) {
   std::ostringstream s;
   s << "# " << title << "\n"

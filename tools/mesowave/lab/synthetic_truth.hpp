@@ -20,4 +20,9 @@ struct TruthEntry {
 /// one table per entry with value, unit, source and cite.
 std::string truth_toml(const std::string& title, const std::string& command, const std::vector<TruthEntry>& entries);
 
+/// The first line of a synthetic record (CSV: a comment the readers skip), so
+/// that the file itself says it is not a measurement. It names no file: the
+/// same seed gives the same bytes whatever the outputs are called.
+std::string synthetic_record_label();
+
 }  // namespace mesowave::lab
