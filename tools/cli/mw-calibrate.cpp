@@ -21,8 +21,10 @@
 #include "mesowave/core/units.hpp"
 #include "mesowave/dem/calibration.hpp"
 #include "mesowave/dem/calibration_report.hpp"
+#include "mesowave/dem/material.hpp"
 #include "mesowave/dem/packing_file.hpp"
 #include "mesowave/dem/scene.hpp"
+#include "mesowave/dem/vec3.hpp"
 #include "mesowave/io/csv.hpp"
 #include "mesowave/io/gnuplot.hpp"
 
@@ -61,24 +63,25 @@ struct TrialRunner {
   }
 };
 
-std::string number(double v) { return format_exact(v); }
+// trial-01, trial-02, ...: the files of one trial in the work folder.
+std::string trial_name(int k) { return "trial-" + std::string(k < 10 ? "0" : "") + std::to_string(k); }
 
 dem::CalibrationTrial run_compression_trial(const TrialRunner& runner, dem::CalibrationTrial t,
                                             const dem::CalibrationTargets& targets, double friction_deg) {
   const auto& p = t.parameters;
-  std::vector<std::string> options = {"--E-dem-GPa", number(p.E_dem_Pa / 1e9), "--nu-dem", number(p.nu_dem),
-                                      "--friction-angle-deg", number(friction_deg)};
+  std::vector<std::string> options = {"--E-dem-GPa", format_exact(p.E_dem_Pa / 1e9), "--nu-dem", format_exact(p.nu_dem),
+                                      "--friction-angle-deg", format_exact(friction_deg)};
   if (t.kind == dem::CalibrationTrial::Kind::elastic) {
     // The elastic response alone, read where the lab reads it: between 10 % and
     // 1/3 of the target strength (EN 12390-13), the run ending just above; the
     // linearised network is valid there (the scene's linear_validity_bound says how far).
     const double b = 0.1 * targets.sigma_Pa / 1e6, a = targets.sigma_Pa / 3 / 1e6;
     options.insert(options.end(), {"--unbreakable-bonds", "--model", "linear", "--modulus-levels-MPa",
-                                   number(b) + "," + number(a), "--stop-at-MPa", number(1.02 * a)});
+                                   format_exact(b) + "," + format_exact(a), "--stop-at-MPa", format_exact(1.02 * a)});
   } else {
-    options.insert(options.end(), {"--T-MPa", number(p.T_Pa / 1e6), "--C-MPa", number(p.c_over_t * p.T_Pa / 1e6)});
+    options.insert(options.end(), {"--T-MPa", format_exact(p.T_Pa / 1e6), "--C-MPa", format_exact(p.c_over_t * p.T_Pa / 1e6)});
   }
-  const std::string name = "trial-" + std::string(t.number < 10 ? "0" : "") + std::to_string(t.number);
+  const std::string name = trial_name(t.number);
   const ordered_json s = runner.run(name, options);
   const auto& test = s.at("test");
   t.E_glob_Pa = test.at("E_glob_GPa").get<double>() * 1e9;
@@ -204,8 +207,8 @@ int main(int argc, char** argv) {
       double E_start_result = 0, E_result = 0;
       for (int k = 1;; ++k) {
         if (k > max_trials) throw InputError("the rod calibration did not reach " + format_number(target) + " GPa within " + std::to_string(max_trials) + " trials");
-        const std::string name = "trial-" + std::string(k < 10 ? "0" : "") + std::to_string(k);
-        const ordered_json s = runner.run(name, {"--E-dem-GPa", number(E_c)});
+        const std::string name = trial_name(k);
+        const ordered_json s = runner.run(name, {"--E-dem-GPa", format_exact(E_c)});
         E_result = s.at("test").at("E_fit_GPa").get<double>();
         if (k == 1) E_start_result = E_result;
         trials.push_back({{"trial", k}, {"E_dem_GPa", E_c}, {"E_DEM_GPa", E_result}, {"wall_s", s.at("wall_s")}});
@@ -216,9 +219,13 @@ int main(int argc, char** argv) {
         E_c *= target / E_result;  // E_DEM = E_c R d / (pi R^2): proportional to E_c
       }
       const double R = packing.radii_m.front();
-      const auto& c0 = packing.centres_m[0];
-      const auto& c1 = packing.centres_m[1];
-      const double d = std::sqrt((c1[0] - c0[0]) * (c1[0] - c0[0]) + (c1[1] - c0[1]) * (c1[1] - c0[1]) + (c1[2] - c0[2]) * (c1[2] - c0[2]));
+      auto centre = [&](std::size_t i) {
+        const auto& c = packing.centres_m[i];
+        return dem::Vec3{c[0], c[1], c[2]};
+      };
+      const double d = dem::norm(centre(1) - centre(0));
+      dem::CohesiveFrictionalMaterial calibrated = m;
+      calibrated.young_Pa = E_c * 1e9;
       ordered_json j;
       j["spheres"] = packing.size();
       j["sphere_radius_mm"] = R * 1e3;
@@ -226,7 +233,7 @@ int main(int argc, char** argv) {
       j["spacing_R"] = d / R;
       j["rho_p_kg_m3"] = packing.particle_density_kg_m3;
       j["E_dem_GPa"] = E_c;
-      j["Kn_N_m"] = E_c * 1e9 * R;  // K_n = E_c 2 R R / (R + R) = E_c R (Eq. 3)
+      j["Kn_N_m"] = dem::normal_stiffness(calibrated, R, R);  // Eq. (3): E_c R for equal spheres
       j["E_DEM_GPa"] = E_result;
       j["E_target_GPa"] = target;
       j["E_dem_start_GPa"] = trials.front().at("E_dem_GPa");
