@@ -11,11 +11,11 @@
 
 #include <cmath>
 #include <numbers>
-#include <random>
 
 #include "mesowave/signal/correlation.hpp"
 #include "mesowave/signal/envelope.hpp"
 #include "mesowave/signal/hann_burst.hpp"
+#include "mesowave/signal/noise.hpp"
 #include "mesowave/signal/spectrum.hpp"
 
 using namespace mesowave::signal;
@@ -24,11 +24,10 @@ namespace {
 
 // A burst train in noise: the kind of record the tools see.
 std::vector<double> record(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> noise(0.0, 0.05);
+  const auto noise = gaussian_noise(n, 0.05, seed);
   const HannBurst burst(100e3 + 50e3 * double(seed % 9), 5, 1.0, 0.0);
   std::vector<double> x(n);
-  for (std::size_t i = 0; i < n; ++i) x[i] = burst(double(i % 2000) * 1e-7) + noise(rng);
+  for (std::size_t i = 0; i < n; ++i) x[i] = burst(double(i % 2000) * 1e-7) + noise[i];
   return x;
 }
 

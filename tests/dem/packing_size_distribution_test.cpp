@@ -37,7 +37,7 @@ TEST(PackingSizeDistribution, UniformMomentsInClosedForm) {
   EXPECT_NEAR(s.mean_power(1), (a + b) / 2, 1e-18);
   EXPECT_NEAR(s.mean_power(3), (std::pow(b, 4) - std::pow(a, 4)) / (4 * (b - a)), 1e-21);
   // Samples: the mean of d^3 within 4 standard errors of the closed form.
-  SeededRandom random(11);
+  Mt64Random random(11);
   const int n = 200000;
   double sum = 0, sum2 = 0;
   for (int i = 0; i < n; ++i) {
@@ -61,7 +61,7 @@ TEST(PackingSizeDistribution, UniformVolumeCdf) {
   EXPECT_NEAR(s.volume_cdf(1.5), (std::pow(1.5, 4) - 1) / 15, 1e-15);
   EXPECT_NEAR(s.number_cdf(1.25), 0.25, 1e-15);
   const auto one = SizeDistribution::uniform(1.8e-3, 1.8e-3);
-  SeededRandom random(1);
+  Mt64Random random(1);
   EXPECT_EQ(one.sample_diameter(random), 1.8e-3);
   EXPECT_THROW(SizeDistribution::uniform(2e-3, 1.6e-3), InputError);
   EXPECT_THROW(SizeDistribution::uniform(-1e-3, 1.6e-3), InputError);
@@ -99,7 +99,7 @@ TEST(PackingSizeDistribution, SieveNumberCdfMatchesNumericalIntegration) {
 
 TEST(PackingSizeDistribution, SieveSamplesPassKolmogorovSmirnov) {
   const auto s = SizeDistribution::sieve(sand());
-  SeededRandom random(5);
+  Mt64Random random(5);
   std::vector<double> d(20000);
   for (double& v : d) v = s.sample_diameter(random);
   std::sort(d.begin(), d.end());
@@ -111,7 +111,7 @@ TEST(PackingSizeDistribution, PackingFilledByVolumeReproducesTheSieveCurve) {
   // Spheres drawn until their volume reaches a target: the mass fraction
   // passing each sieve is the curve's (by mass), within sampling noise.
   const auto s = SizeDistribution::sieve(sand());
-  SeededRandom random(9);
+  Mt64Random random(9);
   const auto d = draw_diameters_for_volume(s, 2e-6, random);  // 2 cm^3 of sand, ~ 3000 grains
   double total = 0;
   for (double v : d) total += v * v * v;

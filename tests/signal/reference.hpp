@@ -1,13 +1,15 @@
 #pragma once
 // Independent references for the signal tests: the DFT by its definition
 // (O(N^2), twiddles from exact integer phase j k mod N), scipy.signal.hilbert's
-// analytic signal built on it, and reproducible Gaussian noise.
+// analytic signal built on it, and reproducible noise.
 #include <cmath>
 #include <complex>
 #include <cstdint>
 #include <numbers>
-#include <random>
 #include <vector>
+
+#include "mesowave/core/random.hpp"
+#include "mesowave/signal/noise.hpp"
 
 namespace mesowave::test {
 
@@ -58,24 +60,17 @@ inline std::vector<cplx> scipy_hilbert_definition(const std::vector<double>& x) 
   return z;
 }
 
-/// Reproducible standard normal samples (Box-Muller on mt19937_64, whose
-/// output the C++ standard fixes).
+/// Reproducible standard normal samples: signal::gaussian_noise at unit RMS
+/// (Box-Muller on core/random.hpp's Mt64Random, the same bits everywhere).
 inline std::vector<double> gaussian_noise(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  auto uniform = [&] { return (double(rng() >> 11) + 0.5) * 0x1.0p-53; };
-  std::vector<double> out(n);
-  for (std::size_t i = 0; i < n; i += 2) {
-    const double r = std::sqrt(-2.0 * std::log(uniform())), a = 2.0 * std::numbers::pi * uniform();
-    out[i] = r * std::cos(a);
-    if (i + 1 < n) out[i + 1] = r * std::sin(a);
-  }
-  return out;
+  return signal::gaussian_noise(n, 1.0, seed);
 }
 
+/// Reproducible uniform samples in [-1, 1).
 inline std::vector<double> uniform_values(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
+  Mt64Random random(seed);
   std::vector<double> out(n);
-  for (auto& v : out) v = double(rng() >> 11) * 0x1.0p-53 * 2.0 - 1.0;
+  for (auto& v : out) v = random.uniform01() * 2.0 - 1.0;
   return out;
 }
 

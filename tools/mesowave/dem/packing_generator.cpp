@@ -68,7 +68,7 @@ struct Region {
     }
   }
 
-  Vec3 random_point(double r, SeededRandom& random) const {
+  Vec3 random_point(double r, Mt64Random& random) const {
     if (!cylinder) return {random.uniform(lo[0] + r, hi[0] - r), random.uniform(lo[1] + r, hi[1] - r),
                            random.uniform(lo[2] + r, hi[2] - r)};
     const double reach = R - r;
@@ -328,7 +328,7 @@ Packing generate_packing(const Container& container, const PackingOptions& o, Pa
     throw InputError("the packing would hold about " + format_number(std::round(expected)) +
                      " spheres; mw-pack stops at 50 million");
 
-  SeededRandom random(o.seed);
+  Mt64Random random(o.seed);
   std::vector<double> diameters = draw_diameters_for_volume(o.sizes, solid, random);
   if (diameters.empty())
     throw InputError("porosity " + format_number(o.porosity) + " leaves less solid than one sphere of d_min = " +

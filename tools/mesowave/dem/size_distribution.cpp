@@ -120,7 +120,7 @@ SizeDistribution SizeDistribution::sieve(const SieveCurve& curve, std::optional<
   return s;
 }
 
-double SizeDistribution::sample_diameter(SeededRandom& random) const {
+double SizeDistribution::sample_diameter(Mt64Random& random) const {
   const double u = random.uniform01();
   if (uniform_) return sizes_[0] + (sizes_[1] - sizes_[0]) * u;
   // Inverse of the piecewise number CDF; within an interval n(d) ~ d^-3.
@@ -183,7 +183,7 @@ std::string SizeDistribution::describe() const {
          format_number(sizes_.back() / 1e-3) + "] mm, " + std::to_string(sizes_.size() - 1) + " intervals";
 }
 
-std::vector<double> draw_diameters_for_volume(const SizeDistribution& sizes, double solid_volume, SeededRandom& random) {
+std::vector<double> draw_diameters_for_volume(const SizeDistribution& sizes, double solid_volume, Mt64Random& random) {
   constexpr double sixth_pi = std::numbers::pi / 6;
   std::vector<double> d;
   d.reserve(std::size_t(solid_volume / sizes.mean_sphere_volume() * 1.01) + 16);

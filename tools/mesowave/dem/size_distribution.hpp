@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "mesowave/dem/seeded_random.hpp"
+#include "mesowave/core/random.hpp"
 
 namespace mesowave::dem {
 
@@ -53,7 +53,7 @@ public:
   /// Mass fraction of the sieve curve the distribution represents (1 for uniform).
   double represented_fraction() const { return represented_; }
 
-  double sample_diameter(SeededRandom& random) const;
+  double sample_diameter(Mt64Random& random) const;
 
   /// Fraction of spheres, by number, with diameter <= d.
   double number_cdf(double d) const;
@@ -82,6 +82,6 @@ private:
 /// (it stays short by less than one smallest sphere only if no sphere can take
 /// the remainder, or no sphere fits at all: an empty result).
 std::vector<double> draw_diameters_for_volume(const SizeDistribution& sizes, double solid_volume_m3,
-                                              SeededRandom& random);
+                                              Mt64Random& random);
 
 }  // namespace mesowave::dem

@@ -6,8 +6,8 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/core/random.hpp"
 #include "mesowave/io/csv.hpp"
-#include "mesowave/lab/synthetic_rng.hpp"
 
 namespace mesowave::lab {
 
@@ -55,7 +55,7 @@ SyntheticCompressionTests synthetic_compression_tests(const SyntheticCompression
     throw InputError("E = " + format_number(spec.E_Pa / 1e9) + " GPa is too low for a strength of " +
                      format_number(spec.strength_Pa / 1e6) + " MPa (EN 1992-1-1 Eq. 3.14 needs k > 1)");
 
-  SyntheticRng rng(spec.seed);
+  XoshiroRandom rng(spec.seed);
   const double area = spec.side_m * spec.side_m, height = spec.side_m, L = spec.gauge_length_m;
   const double m = spec.crosshead_multiplier;
   SyntheticCompressionTests out;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "mesowave/core/error.hpp"
-#include "mesowave/lab/synthetic_rng.hpp"
+#include "mesowave/core/random.hpp"
 
 namespace mesowave::lab {
 
@@ -16,13 +16,13 @@ struct Ball {
 };
 
 // Log-uniform radius: many small voids, few large ones.
-double log_uniform(SyntheticRng& rng, double lo, double hi) { return lo * std::pow(hi / lo, rng.uniform()); }
+double log_uniform(XoshiroRandom& rng, double lo, double hi) { return lo * std::pow(hi / lo, rng.uniform01()); }
 
 // One pore: a sphere, or an irregular cluster of 2-4 overlapping spheres.
-std::vector<Ball> pore_balls(SyntheticRng& rng, double x, double y, double z, double r, PoreShape shape, bool planar) {
+std::vector<Ball> pore_balls(XoshiroRandom& rng, double x, double y, double z, double r, PoreShape shape, bool planar) {
   std::vector<Ball> balls = {{x, y, z, r}};
   if (shape == PoreShape::irregular) {
-    const int extra = 1 + int(rng.uniform() * 3.0);
+    const int extra = 1 + int(rng.uniform01() * 3.0);
     for (int k = 0; k < extra; ++k) {
       double dx = rng.normal(), dy = rng.normal(), dz = planar ? 0.0 : rng.normal();
       const double n = std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -48,7 +48,7 @@ SyntheticCtStack synthetic_ct_stack(const SyntheticCtSpec& spec) {
     throw InputError("CT stack needs a specimen of at least 4 px and one slice");
   if (!(spec.pore_radius_min_px > 0 && spec.pore_radius_max_px >= spec.pore_radius_min_px))
     throw InputError("pore radii must satisfy 0 < min <= max");
-  SyntheticRng rng(spec.seed);
+  XoshiroRandom rng(spec.seed);
   const int n = spec.specimen_px, nz = spec.slices, m = spec.margin_px, side = n + 2 * m;
   const std::size_t voxels = std::size_t(n) * n * nz;
   constexpr int kSub = 3, kSubN = kSub * kSub * kSub;
@@ -135,7 +135,7 @@ SyntheticFace synthetic_face(const SyntheticFaceSpec& spec) {
   if (spec.width_px < 4 || spec.height_px < 4) throw InputError("face image must be at least 4 x 4 px");
   if (!(spec.pore_radius_min_px > 0 && spec.pore_radius_max_px >= spec.pore_radius_min_px))
     throw InputError("pore radii must satisfy 0 < min <= max");
-  SyntheticRng rng(spec.seed);
+  XoshiroRandom rng(spec.seed);
   const int w = spec.width_px, h = spec.height_px;
   const std::size_t pixels = std::size_t(w) * h;
   constexpr int kSub = 4, kSubN = kSub * kSub;

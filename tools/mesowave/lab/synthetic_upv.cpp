@@ -6,8 +6,8 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/core/random.hpp"
 #include "mesowave/io/csv.hpp"
-#include "mesowave/lab/synthetic_rng.hpp"
 
 namespace mesowave::lab {
 
@@ -41,7 +41,7 @@ SyntheticWaveform synthetic_upv_waveform(const SyntheticUpvSpec& spec) {
   if (!(spec.pretrigger_s >= 0 && spec.delay_s >= 0 && spec.ringing_cycles > 0 && spec.amplitude_V > 0))
     throw InputError("synthetic waveform needs pre-trigger >= 0, delay >= 0, ringing > 0, amplitude > 0");
   if (spec.tof_s + spec.delay_s >= spec.duration_s) throw InputError("the onset lies after the end of the record");
-  SyntheticRng rng(spec.seed);
+  XoshiroRandom rng(spec.seed);
   SyntheticWaveform w;
   const long n_pre = std::lround(spec.pretrigger_s / spec.sample_interval_s);
   const long n_post = std::lround(spec.duration_s / spec.sample_interval_s);

@@ -1,8 +1,8 @@
 #pragma once
 // Reproducible white Gaussian noise for synthetic records (test data with a
 // known ground truth): the same seed gives the same samples on every platform
-// (mt19937_64, whose output the C++ standard fixes, and Box-Muller, rather
-// than std::normal_distribution, whose algorithm it leaves open).
+// (core/random.hpp's Mt64Random and its Box-Muller pairs, rather than
+// std::normal_distribution, whose algorithm the standard leaves open).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
