@@ -147,3 +147,40 @@ TEST(TableGather, JoinMatchesKeysAsNumbersAndLeavesGapsEmpty) {
   EXPECT_THROW(join_columns(ours, twice, "f_kHz", {parse_column_source("p=pcc_mean")}), InputError);
   EXPECT_THROW(join_columns(ours, paper, "f_kHz", {parse_column_source("p=nothing")}), InputError);
 }
+
+TEST(TableGather, JoinsParseFileAndColumnsAtTheLastColon) {
+  const auto j = parse_table_join("C:/lab/paper/table3.csv:paper=pcc_mean, fem=pcc_fem");
+  EXPECT_EQ(j.file, "C:/lab/paper/table3.csv");
+  ASSERT_EQ(j.columns.size(), 2u);
+  EXPECT_EQ(j.columns[0].name, "paper");
+  EXPECT_EQ(j.columns[0].source, "pcc_mean");
+  EXPECT_EQ(j.columns[1].name, "fem");
+  EXPECT_EQ(j.columns[1].source, "pcc_fem");
+  EXPECT_THROW(parse_table_join("table3.csv"), InputError);
+  EXPECT_THROW(parse_table_join(":paper=pcc_mean"), InputError);
+  EXPECT_THROW(parse_table_join("table3.csv:"), InputError);
+}
+
+// The joined columns follow the gathered ones, matched by key as numbers
+// ("100" meets "100.0"); a key the joined table lacks is an empty field; the
+// spec's files are the rows', then the joins'.
+TEST(TableGather, JoinedColumnsFollowTheGatheredOnesByKey) {
+  TempDir dir;
+  write_file(dir / "pcc-100.csv", pcc_table(0.5, 0.7));
+  write_file(dir / "pcc-150.csv", pcc_table(0.25, 0.75));
+  write_file(dir / "paper.csv", "f_kHz,pcc_mean,note\n100.0,0.63,\n200,0.41,\n");
+  GatherSpec spec;
+  spec.key_name = "f_kHz";
+  spec.where = RowSelector{"sensor", "mean"};
+  for (const char* f : {"100", "150"})
+    spec.rows.push_back(parse_gather_row(std::string(f) + "=" + (dir / ("pcc-" + std::string(f) + ".csv")).string()));
+  spec.columns.push_back(parse_column_source("mesowave=pcc_signal"));
+  spec.joins.push_back(parse_table_join((dir / "paper.csv").string() + ":paper=pcc_mean"));
+  EXPECT_EQ(spec.files(), (std::vector<std::filesystem::path>{dir / "pcc-100.csv", dir / "pcc-150.csv", dir / "paper.csv"}));
+  const auto t = gather_rows(spec);
+  EXPECT_EQ(t.header, (std::vector<std::string>{"f_kHz", "mesowave", "paper"}));
+  EXPECT_EQ(t.rows[0], (std::vector<std::string>{"100", "0.600000", "0.63"}));
+  EXPECT_EQ(t.rows[1], (std::vector<std::string>{"150", "0.500000", ""}));
+  spec.joins = {parse_table_join((dir / "paper.csv").string() + ":paper=pcc_std")};
+  EXPECT_THROW(gather_rows(spec), InputError);
+}

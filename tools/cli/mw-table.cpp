@@ -7,37 +7,13 @@
 //   mw-table gather --key-name f_kHz --row 100=pcc-100kHz.csv --row 150=pcc-150kHz.csv
 //       --where sensor=mean --column pcc_mean=pcc_signal --csv table3.csv
 //   mw-table plot table3.csv --x f_kHz --y pcc_mean --out table3.png
-#include <cmath>
-#include <limits>
-
 #include "mesowave/app/tool.hpp"
-#include "mesowave/core/error.hpp"
-#include "mesowave/core/format.hpp"
-#include "mesowave/io/csv.hpp"
 #include "mesowave/io/table_gather.hpp"
 #include "mesowave/io/text_table.hpp"
-#include "mesowave/wave/plot.hpp"
+#include "mesowave/wave/table_plot.hpp"
 
 using namespace mesowave;
 namespace fs = std::filesystem;
-
-namespace {
-
-double cell_number(const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  // An empty or non-numeric cell ("-", "n/a") is a gap in the plot, never a zero.
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v)) return std::numeric_limits<double>::quiet_NaN();
-  return v;
-}
-
-// What is drawn for a cell: the value, or 1 - value; NaN (a gap) where a log axis cannot show it.
-double plotted(const std::string& text, bool one_minus, bool log_y) {
-  const double v = one_minus ? 1 - cell_number(text) : cell_number(text);
-  return (log_y && !(v > 0)) ? std::numeric_limits<double>::quiet_NaN() : v;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   app::Tool tool("mw-table",
@@ -79,26 +55,24 @@ int main(int argc, char** argv) {
 
   auto* plot = cli.add_subcommand("plot", "Columns of a CSV table against one of its columns (gnuplot)");
   fs::path table_path, plot_out;
-  std::string x_column, title, x_label, y_label, label_column, style = "linespoints", key = "outside right top";
-  std::vector<std::string> y_texts;
+  wave::TablePlotOptions o;
   std::vector<double> y_range;
-  bool log_x = false, log_y = false, one_minus = false;
   plot->add_option("table", table_path, "CSV table")->required();
-  plot->add_option("--x", x_column, "Column on the x axis")->required();
-  plot->add_option("--y", y_texts, "COLUMN[=LEGEND]: a column on the y axis; repeatable")->required();
-  plot->add_option("--label-column", label_column,
+  plot->add_option("--x", o.x_column, "Column on the x axis")->required();
+  plot->add_option("--y", o.y_columns, "COLUMN[=LEGEND]: a column on the y axis; repeatable")->required();
+  plot->add_option("--label-column", o.label_column,
                    "One point per row, named by this column (speed against error), instead of one line per --y");
-  plot->add_option("--style", style, "lines | points | linespoints")->capture_default_str();
-  plot->add_option("--title", title, "Title");
-  plot->add_option("--x-label", x_label, "x axis label (default: the column)");
-  plot->add_option("--y-label", y_label, "y axis label (default: the first --y column)");
+  plot->add_option("--style", o.style, "lines | points | linespoints")->capture_default_str();
+  plot->add_option("--title", o.title, "Title");
+  plot->add_option("--x-label", o.x_label, "x axis label (default: the column)");
+  plot->add_option("--y-label", o.y_label, "y axis label (default: the first --y column)");
   plot->add_option("--y-range", y_range, "from,to of the y axis")->delimiter(',')->expected(2);
-  plot->add_flag("--log-x", log_x, "Logarithmic x axis");
-  plot->add_flag("--log-y", log_y, "Logarithmic y axis");
-  plot->add_flag("--one-minus", one_minus,
+  plot->add_flag("--log-x", o.log_x, "Logarithmic x axis");
+  plot->add_flag("--log-y", o.log_y, "Logarithmic y axis");
+  plot->add_flag("--one-minus", o.one_minus,
                  "Plot 1 - y: e.g. the decorrelation 1 - PCC, which --log-y spreads out near PCC = 1 (a value of "
                  "exactly 1 has no place on a log axis and is left out)");
-  plot->add_option("--key", key, "Where the legend goes (gnuplot: 'outside right top', 'below', 'inside bottom left')")
+  plot->add_option("--key", o.key, "Where the legend goes (gnuplot: 'outside right top', 'below', 'inside bottom left')")
       ->capture_default_str();
   plot->add_option("--out", plot_out, "Figure to write (.png or .svg)")->type_name("FILE")->required();
 
@@ -110,72 +84,19 @@ int main(int argc, char** argv) {
       if (significant_digits > 0) spec.significant_digits = significant_digits;
       for (const auto& r : row_texts) spec.rows.push_back(io::parse_gather_row(r));
       for (const auto& c : column_texts) spec.columns.push_back(io::parse_column_source(c));
-      for (const auto& r : spec.rows)
-        for (const auto& f : r.files) run.input(f);
-      auto table = io::gather_rows(spec);
-      for (const auto& j : join_texts) {
-        const auto colon = j.rfind(':');
-        if (colon == std::string::npos || colon == 0 || colon + 1 == j.size())
-          throw InputError("--join '" + j + "' must read FILE:NAME=SOURCE[,NAME=SOURCE...]");
-        const fs::path file = j.substr(0, colon);
-        std::vector<io::ColumnSource> columns;
-        const std::string list = j.substr(colon + 1);
-        for (std::size_t at = 0; at <= list.size();) {
-          const auto comma = std::min(list.find(',', at), list.size());
-          if (comma > at) columns.push_back(io::parse_column_source(list.substr(at, comma - at)));
-          at = comma + 1;
-        }
-        run.input(file);
-        io::join_columns(table, io::read_csv(file), key_name, columns);
-      }
+      for (const auto& j : join_texts) spec.joins.push_back(io::parse_table_join(j));
+      for (const auto& f : spec.files()) run.input(f);
+      const auto table = io::gather_rows(spec);
       run.write_text(csv_out, io::to_csv(table.header, table.rows));
       run.out() << io::format_text_table(table.header, table.rows);
       return;
     }
-
-    // plot
     wave::require_plot_extension(plot_out);
-    if (style != "lines" && style != "points" && style != "linespoints")
-      throw InputError("--style " + style + " must be lines, points or linespoints");
-    if (!y_range.empty() && !(y_range[1] > y_range[0])) throw InputError("--y-range: the end must exceed the start");
+    if (!y_range.empty()) o.y_range = std::pair{y_range[0], y_range[1]};
+    wave::require_table_plot_options(o);
     run.input(table_path);
     const auto table = io::read_csv(table_path);
-    const auto xc = table.column(x_column);
-    std::vector<double> x;
-    for (std::size_t r = 0; r < table.rows.size(); ++r) x.push_back(table.number(r, xc));
-    wave::PlotSpec spec;
-    spec.title = title;
-    spec.x_label = x_label.empty() ? x_column : x_label;
-    spec.key = key;
-    std::vector<std::pair<std::size_t, std::string>> ys;
-    for (const auto& y : y_texts) {
-      const auto c = io::parse_column_source(y);  // COLUMN=LEGEND reads like NAME=SOURCE, swapped
-      ys.emplace_back(table.column(c.name), c.source);
-    }
-    spec.y_label = y_label.empty() ? (one_minus ? "1 - " : "") + table.header[ys.front().first] : y_label;
-    if (!y_range.empty()) spec.y_range = std::pair{y_range[0], y_range[1]};
-    const std::string point_style = style == "lines" ? "lines lw 2" : style == "points" ? "points pt 7 ps 1.5"
-                                                                                        : "linespoints lw 2 pt 7 ps 1.2";
-    if (!label_column.empty()) {
-      spec.margins = true;
-      const auto lc = table.column(label_column);
-      int k = 0;
-      for (const auto& [yc, legend] : ys)
-        for (std::size_t r = 0; r < table.rows.size(); ++r, ++k)
-          spec.series.push_back({table.text(r, lc) + (ys.size() > 1 ? " (" + legend + ")" : ""), {x[r]},
-                                 {plotted(table.text(r, yc), one_minus, log_y)},
-                                 "points pt " + std::to_string(4 + k % 11) + " ps 1.8"});
-    } else {
-      for (const auto& [yc, legend] : ys) {
-        wave::PlotSeries s{legend, x, {}, point_style};
-        for (std::size_t r = 0; r < table.rows.size(); ++r) s.y.push_back(plotted(table.text(r, yc), one_minus, log_y));
-        spec.series.push_back(std::move(s));
-      }
-    }
-    std::string logs;
-    if (log_x) logs += "x";
-    if (log_y) logs += "y";
-    spec.logscale = logs;
+    const auto spec = wave::table_plot(table, o);
     wave::render_plot(spec, plot_out, run.output(plot_out));
     run.out() << "wrote " << plot_out.string() << ": " << spec.series.size() << " series, " << table.rows.size()
               << " rows\n";

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -146,6 +147,27 @@ GatherRow parse_gather_row(const std::string& text) {
   return r;
 }
 
+TableJoin parse_table_join(const std::string& text) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size())
+    throw InputError("--join '" + text + "' must read FILE:NAME=SOURCE[,NAME=SOURCE...]");
+  TableJoin join{text.substr(0, colon), {}};
+  const std::string list = text.substr(colon + 1);
+  for (std::size_t at = 0; at <= list.size();) {
+    const auto comma = std::min(list.find(',', at), list.size());
+    if (comma > at) join.columns.push_back(parse_column_source(list.substr(at, comma - at)));
+    at = comma + 1;
+  }
+  return join;
+}
+
+std::vector<fs::path> GatherSpec::files() const {
+  std::vector<fs::path> all;
+  for (const auto& r : rows) all.insert(all.end(), r.files.begin(), r.files.end());
+  for (const auto& j : joins) all.push_back(j.file);
+  return all;
+}
+
 namespace {
 // "E_glob_GPa|test.E_glob_GPa": the names one quantity goes by in different
 // tools' summaries, tried in order in each file.
@@ -187,6 +209,7 @@ CsvTable gather_rows(const GatherSpec& spec) {
     }
     table.rows.push_back(std::move(fields));
   }
+  for (const auto& j : spec.joins) join_columns(table, read_csv(j.file), spec.key_name, j.columns);
   return table;
 }
 

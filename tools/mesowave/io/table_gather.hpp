@@ -43,19 +43,31 @@ struct GatherRow {
 /// "KEY=FILE[,FILE...]"; InputError otherwise.
 GatherRow parse_gather_row(const std::string& text);
 
+/// Columns of a keyed CSV table (e.g. the paper's values) added to a gathered one.
+struct TableJoin {
+  std::filesystem::path file;
+  std::vector<ColumnSource> columns;  ///< NAME=SOURCE: SOURCE a column of `file`
+};
+/// "FILE:NAME=SOURCE[,NAME=SOURCE...]" (the last ':' ends FILE); InputError otherwise.
+TableJoin parse_table_join(const std::string& text);
+
 struct GatherSpec {
   std::string key_name = "key";        ///< header of the first column
   std::vector<GatherRow> rows;
   std::vector<ColumnSource> columns;
   std::optional<RowSelector> where;    ///< default row selector for CSV files
   std::optional<int> significant_digits;  ///< JSON numbers rounded to these (CSV, TOML: as written)
+  std::vector<TableJoin> joins;        ///< applied in order after the rows (join_columns on key_name)
+
+  /// Every file the table is made of: the rows' in order, then the joins'.
+  std::vector<std::filesystem::path> files() const;
 };
 
 /// The gathered table: key_name, then the columns, one row per GatherRow in
-/// order. Numbers are copied as written (CSV) or in their shortest exact form
-/// (JSON). InputError naming the file when a CSV has no row or several rows
-/// matching the selector (or several rows and no selector), or when none of a
-/// row's files holds a column's source.
+/// order, then the joins' columns. Numbers are copied as written (CSV) or in
+/// their shortest exact form (JSON). InputError naming the file when a CSV has
+/// no row or several rows matching the selector (or several rows and no
+/// selector), or when none of a row's files holds a column's source.
 CsvTable gather_rows(const GatherSpec& spec);
 
 /// Adds `columns` of `other` to `table`, matching rows by `key` (a column of
