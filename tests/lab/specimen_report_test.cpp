@@ -7,21 +7,13 @@
 #include <cmath>
 #include <numbers>
 
-#include "mesowave/core/error.hpp"
+#include "support/input_error.hpp"
 
 using namespace mesowave;
 using namespace mesowave::lab;
+using mesowave::test::input_error_of;
 
 namespace {
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(SpecimenReport, OneCubeInGramsAndMillimetres) {
   SpecimenMeasurement m;
@@ -43,12 +35,12 @@ TEST(SpecimenReport, OneCylinderNeedsItsDiameterAndHeight) {
   m.shape = "cylinder";
   m.mass_g = 3500;
   m.diameter_mm = 100;
-  EXPECT_NE(error_of([&] { specimen_density_summary(m); }).find("a cylinder needs --height-mm"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { specimen_density_summary(m); }).find("a cylinder needs --height-mm"), std::string::npos);
   m.height_mm = 200;
   const auto j = specimen_density_summary(m);
   EXPECT_NEAR(j["density_kg_m3"].get<double>(), 3.5 / (std::numbers::pi / 4 * 0.1 * 0.1 * 0.2), 1e-9);
   m.mass_g.reset();
-  EXPECT_NE(error_of([&] { specimen_density_summary(m); }).find("--mass-g is required"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { specimen_density_summary(m); }).find("--mass-g is required"), std::string::npos);
 }
 
 TEST(SpecimenReport, BatchMeanAndSampleScatter) {
@@ -77,12 +69,12 @@ TEST(SpecimenReport, BatchMeanAndSampleScatter) {
 }
 
 TEST(SpecimenReport, BatchErrorsNameTheFileAndLine) {
-  EXPECT_NE(error_of([] { density_batch_report(io::parse_csv("specimen,mass_kg\nA,7\n", "b.csv"), {}); })
+  EXPECT_NE(input_error_of([] { density_batch_report(io::parse_csv("specimen,mass_kg\nA,7\n", "b.csv"), {}); })
                 .find("b.csv: unknown column 'mass_kg'"),
             std::string::npos);
-  EXPECT_NE(error_of([] { density_batch_report(io::parse_csv("mass_g,side_mm\n", "b.csv"), {}); }).find("no specimens"),
+  EXPECT_NE(input_error_of([] { density_batch_report(io::parse_csv("mass_g,side_mm\n", "b.csv"), {}); }).find("no specimens"),
             std::string::npos);
-  EXPECT_NE(error_of([] { density_batch_report(io::parse_csv("mass_g,side_mm\n7,150\n7,-1\n", "b.csv"), {}); })
+  EXPECT_NE(input_error_of([] { density_batch_report(io::parse_csv("mass_g,side_mm\n7,150\n7,-1\n", "b.csv"), {}); })
                 .find("b.csv:3: side_mm"),
             std::string::npos);
 }

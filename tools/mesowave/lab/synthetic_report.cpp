@@ -13,13 +13,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void ct(const SynthesisRequest& q, PoreShape shape, SynthesisProducts& p) {
-  if (q.stack.empty()) throw InputError("ct needs --stack FILE.tif");
-  SyntheticCtSpec spec;
-  spec.specimen_px = q.size_px ? q.size_px : spec.specimen_px;
-  spec.margin_px = q.margin_px;
-  spec.slices = q.slices;
-  if (q.pixel_um > 0) spec.voxel_um = q.pixel_um;
+// The pore options ct and faces share, onto either generator's spec.
+template <class PoreSpec>
+void set_pores(PoreSpec& spec, const SynthesisRequest& q, PoreShape shape) {
   spec.porosity = q.porosity_pct / 100.0;
   spec.shape = shape;
   if (!q.pore_radius_px.empty()) {
@@ -27,6 +23,16 @@ void ct(const SynthesisRequest& q, PoreShape shape, SynthesisProducts& p) {
     spec.pore_radius_max_px = q.pore_radius_px[1];
   }
   if (q.noise) spec.noise_sd = *q.noise;
+}
+
+void ct(const SynthesisRequest& q, PoreShape shape, SynthesisProducts& p) {
+  if (q.stack.empty()) throw InputError("ct needs --stack FILE.tif");
+  SyntheticCtSpec spec;
+  spec.specimen_px = q.size_px ? q.size_px : spec.specimen_px;
+  spec.margin_px = q.margin_px;
+  spec.slices = q.slices;
+  if (q.pixel_um > 0) spec.voxel_um = q.pixel_um;
+  set_pores(spec, q, shape);
   spec.seed = q.seed;
   auto stack = synthetic_ct_stack(spec);
   const auto& r = stack.specimen_roi;
@@ -63,13 +69,7 @@ void faces(const SynthesisRequest& q, PoreShape shape, SynthesisProducts& p) {
     SyntheticFaceSpec spec;
     if (q.size_px) spec.width_px = spec.height_px = q.size_px;
     if (q.pixel_um > 0) spec.pixel_um = q.pixel_um;
-    spec.porosity = q.porosity_pct / 100.0;
-    spec.shape = shape;
-    if (!q.pore_radius_px.empty()) {
-      spec.pore_radius_min_px = q.pore_radius_px[0];
-      spec.pore_radius_max_px = q.pore_radius_px[1];
-    }
-    if (q.noise) spec.noise_sd = *q.noise;
+    set_pores(spec, q, shape);
     spec.seed = q.seed * 1000 + std::uint64_t(i);
     auto face = synthetic_face(spec);
     const fs::path file = q.prefix.string() + "-" + std::to_string(i) + ".png";
