@@ -9,7 +9,7 @@
 // Two engines, and why not one: shipped data depend on each stream, so each
 // stays bit-exact.
 //   - std::mt19937_64, seeded with the seed itself (the standard's seeding):
-//     packings (dem::PackingGenerator, SizeDistribution) and signal noise
+//     packings (dem::generate_packing, SizeDistribution) and signal noise
 //     (signal::gaussian_noise). Its output sequence is fixed by the C++
 //     standard ([rand.predef]: the 10000th draw after default construction
 //     is 9981545732273789042).
