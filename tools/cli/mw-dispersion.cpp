@@ -335,7 +335,7 @@ int main(int argc, char** argv) {
                                          rows));
       run.emit_json(j, m_out);
     } else if (theory->parsed()) {
-      if (!plot.empty()) wave::require_plot_extension(plot);
+      if (!plot.empty()) io::require_plot_extension(plot);
       const wave::IsotropicMaterial material{require_positive("--E-GPa", E_GPa, "GPa") * units::GPa, nu, rho};
       wave::validate(material);
       const wave::PochhammerChree pc(material, require_positive("--radius-mm", radius_mm, "mm") * units::mm);
@@ -376,7 +376,7 @@ int main(int argc, char** argv) {
             throw InputError("--plot-key '" + plot_key + "' may hold only words and numbers");
         spec.key = plot_key;
         std::replace(spec.key.begin(), spec.key.end(), ',', ' ');  // "inside,bottom,left" reads as words
-        wave::render_plot(spec, plot, run.output(plot));
+        io::render_plot(spec, plot, run.output(plot));
       }
       auto summary = wave::theory_summary(pc, trace);
       summary["rows"] = points.size();

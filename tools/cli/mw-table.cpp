@@ -16,7 +16,7 @@
 #include "mesowave/io/csv.hpp"
 #include "mesowave/io/table_gather.hpp"
 #include "mesowave/io/text_table.hpp"
-#include "mesowave/wave/plot.hpp"
+#include "mesowave/io/plot.hpp"
 
 using namespace mesowave;
 namespace fs = std::filesystem;
@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
     }
 
     // plot
-    wave::require_plot_extension(plot_out);
+    io::require_plot_extension(plot_out);
     if (style != "lines" && style != "points" && style != "linespoints")
       throw InputError("--style " + style + " must be lines, points or linespoints");
     if (!y_range.empty() && !(y_range[1] > y_range[0])) throw InputError("--y-range: the end must exceed the start");
@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
     const auto xc = table.column(x_column);
     std::vector<double> x;
     for (std::size_t r = 0; r < table.rows.size(); ++r) x.push_back(table.number(r, xc));
-    wave::PlotSpec spec;
+    io::PlotSpec spec;
     spec.title = title;
     spec.x_label = x_label.empty() ? x_column : x_label;
     spec.key = key;
@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
                                  "points pt " + std::to_string(4 + k % 11) + " ps 1.8"});
     } else {
       for (const auto& [yc, legend] : ys) {
-        wave::PlotSeries s{legend, x, {}, point_style};
+        io::PlotSeries s{legend, x, {}, point_style};
         for (std::size_t r = 0; r < table.rows.size(); ++r) s.y.push_back(plotted(table.text(r, yc), one_minus, log_y));
         spec.series.push_back(std::move(s));
       }
@@ -176,7 +176,7 @@ int main(int argc, char** argv) {
     if (log_x) logs += "x";
     if (log_y) logs += "y";
     spec.logscale = logs;
-    wave::render_plot(spec, plot_out, run.output(plot_out));
+    io::render_plot(spec, plot_out, run.output(plot_out));
     run.out() << "wrote " << plot_out.string() << ": " << spec.series.size() << " series, " << table.rows.size()
               << " rows\n";
   });
