@@ -10,7 +10,7 @@
 #include "mesowave/app/tool.hpp"
 #include "mesowave/io/table_gather.hpp"
 #include "mesowave/io/text_table.hpp"
-#include "mesowave/wave/table_plot.hpp"
+#include "mesowave/io/table_plot.hpp"
 
 using namespace mesowave;
 namespace fs = std::filesystem;
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
 
   auto* plot = cli.add_subcommand("plot", "Columns of a CSV table against one of its columns (gnuplot)");
   fs::path table_path, plot_out;
-  wave::TablePlotOptions o;
+  io::TablePlotOptions o;
   std::vector<double> y_range;
   plot->add_option("table", table_path, "CSV table")->required();
   plot->add_option("--x", o.x_column, "Column on the x axis")->required();
@@ -91,13 +91,13 @@ int main(int argc, char** argv) {
       run.out() << io::format_text_table(table.header, table.rows);
       return;
     }
-    wave::require_plot_extension(plot_out);
+    io::require_plot_extension(plot_out);
     if (!y_range.empty()) o.y_range = std::pair{y_range[0], y_range[1]};
-    wave::require_table_plot_options(o);
+    io::require_table_plot_options(o);
     run.input(table_path);
     const auto table = io::read_csv(table_path);
-    const auto spec = wave::table_plot(table, o);
-    wave::render_plot(spec, plot_out, run.output(plot_out));
+    const auto spec = io::table_plot(table, o);
+    io::render_plot(spec, plot_out, run.output(plot_out));
     run.out() << "wrote " << plot_out.string() << ": " << spec.series.size() << " series, " << table.rows.size()
               << " rows\n";
   });

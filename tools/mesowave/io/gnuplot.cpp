@@ -42,6 +42,19 @@ std::string gnuplot_text(const std::string& text) {
   return out + "\"";
 }
 
+void require_plot_extension(const fs::path& path) {
+  const auto ext = path.extension().string();
+  if (ext != ".png" && ext != ".svg") throw InputError("plot file " + path.string() + " must end in .png or .svg");
+}
+
+std::string gnuplot_terminal(const fs::path& final_name, int width_px, int height_px, int font_pt) {
+  require_plot_extension(final_name);
+  const std::string size = " size " + std::to_string(width_px) + "," + std::to_string(height_px) + " font 'Sans," +
+                           std::to_string(font_pt) + "'";
+  if (final_name.extension() == ".png") return "set terminal pngcairo" + size + "\n";
+  return "set terminal svg" + size + " background '#ffffff'\n";
+}
+
 namespace {
 std::string shell_quote(const std::string& text) {
   std::string out = "'";

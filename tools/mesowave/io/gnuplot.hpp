@@ -18,6 +18,14 @@ std::string gnuplot_quote(const std::filesystem::path& path);
 /// apostrophe stays as it is, a double quote or backslash is escaped.
 std::string gnuplot_text(const std::string& text);
 
+/// InputError unless `path` ends in .png or .svg, the two terminals the plots use
+/// (checked before a long run as well as before drawing).
+void require_plot_extension(const std::filesystem::path& path);
+
+/// The `set terminal` line for `final_name`'s extension: pngcairo for .png, svg on
+/// a white background for .svg (InputError for another extension).
+std::string gnuplot_terminal(const std::filesystem::path& final_name, int width_px, int height_px, int font_pt);
+
 /// Runs gnuplot on `script` (written to a temporary file). InputError if
 /// gnuplot is not installed or fails (its message is passed on).
 void run_gnuplot(const std::string& script);

@@ -61,19 +61,14 @@ Curve decimate_min_max(const Curve& c, std::size_t bins, std::optional<std::pair
 
 std::string sensor_panels_script(const SensorPanelsFigure& figure, const fs::path& final_name,
                                  const fs::path& write_to) {
-  const auto ext = final_name.extension().string();
-  if (ext != ".png" && ext != ".svg") throw InputError("plot file " + final_name.string() + " must end in .png or .svg");
+  require_plot_extension(final_name);
   if (figure.panels.empty()) throw InputError("a figure of sensors needs at least one sensor");
   const std::size_t columns = std::max<std::size_t>(1, std::min(figure.columns, figure.panels.size()));
   const std::size_t rows = (figure.panels.size() + columns - 1) / columns;
   constexpr std::size_t kBins = 1500;  // per curve: about 3000 points, more than a panel has pixels
 
   std::ostringstream s;
-  if (ext == ".png")
-    s << "set terminal pngcairo size " << figure.width_px << "," << figure.height_px << " font 'Sans,10'\n";
-  else
-    s << "set terminal svg size " << figure.width_px << "," << figure.height_px
-      << " font 'Sans,10' background '#ffffff'\n";
+  s << gnuplot_terminal(final_name, figure.width_px, figure.height_px, 10);
   s << "set output " << gnuplot_quote(write_to) << "\n";
   for (std::size_t p = 0; p < figure.panels.size(); ++p) {
     const auto& panel = figure.panels[p];

@@ -273,4 +273,31 @@ BarEchoResult analyse_bar_echo(const signal::Signal& s, const BarEchoOptions& op
   return r;
 }
 
+BarEchoVelocity bar_echo_velocity(const BarEchoResult& result, double dt_s, double relative_path_uncertainty) {
+  double sum = 0, lo = 1e300, hi = 0, delay = 0;
+  int onsets = 0;
+  for (const auto& p : result.picks) {
+    if (p.method != "threshold" && p.method != "aic") continue;
+    sum += p.velocity_m_s;
+    delay += (p.t2_s - p.t1_s) / 2;  // the mean delay of the two pickers
+    lo = std::min(lo, p.velocity_m_s);
+    hi = std::max(hi, p.velocity_m_s);
+    ++onsets;
+  }
+  if (onsets == 0) throw InputError("the bar-echo analysis holds no threshold or AIC pick");
+  BarEchoVelocity v;
+  v.velocity_m_s = sum / onsets;
+  v.relative_uncertainty_method = 0.5 * (hi - lo) / v.velocity_m_s;
+  v.relative_uncertainty_sampling = std::sqrt(0.5) * dt_s / delay;
+  v.relative_uncertainty_path = relative_path_uncertainty;
+  const double u_method = v.relative_uncertainty_method, u_time = v.relative_uncertainty_sampling,
+               u_path = relative_path_uncertainty;
+  v.velocity_uncertainty_m_s = v.velocity_m_s * std::sqrt(u_method * u_method + u_time * u_time + u_path * u_path);
+  if (result.fitted_c0_m_s > 0) {
+    const double u_fit = result.fitted_c0_relative_spread;
+    v.fitted_c0_uncertainty_m_s = result.fitted_c0_m_s * std::sqrt(u_fit * u_fit + u_time * u_time + u_path * u_path);
+  }
+  return v;
+}
+
 }  // namespace mesowave::wave

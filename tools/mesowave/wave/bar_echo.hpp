@@ -74,4 +74,24 @@ signal::Signal read_record(const std::filesystem::path& path, const std::string&
 /// InputError when the record does not hold two pulses.
 BarEchoResult analyse_bar_echo(const signal::Signal& record, const BarEchoOptions& options);
 
+/// The bar velocity a pulse-echo analysis reports, with its uncertainty budget.
+/// The pulse front (the onset pickers) travels at the bar's low-frequency velocity;
+/// the edge crossings lag more the higher the level, as dispersion widens the front,
+/// so the velocity is the mean of the threshold and AIC picks only. Relative
+/// standard uncertainties, combined in quadrature (GUM):
+///   method    half the spread of the onset pickers' velocities over their mean,
+///   sampling  half a sample on each of the two times, sqrt(1/2) dt / mean delay,
+///   path      the round trip's own, u(path) / path.
+struct BarEchoVelocity {
+  double velocity_m_s = 0;
+  double relative_uncertainty_method = 0, relative_uncertainty_sampling = 0, relative_uncertainty_path = 0;
+  double velocity_uncertainty_m_s = 0;
+  /// With a theory (result.fitted_c0_m_s > 0): the fitted c0's standard uncertainty,
+  /// its edge-level spread combined with the sampling and path terms.
+  double fitted_c0_uncertainty_m_s = 0;
+};
+
+/// InputError when `result` holds no threshold or AIC pick.
+BarEchoVelocity bar_echo_velocity(const BarEchoResult& result, double dt_s, double relative_path_uncertainty);
+
 }  // namespace mesowave::wave

@@ -121,13 +121,13 @@ void write_dispersion_h5(const std::filesystem::path& path, const PochhammerChre
   }
 }
 
-PlotSpec group_velocity_plot(const std::string& title, const std::vector<DispersionPoint>& theory,
+io::PlotSpec group_velocity_plot(const std::string& title, const std::vector<DispersionPoint>& theory,
                              const std::vector<LatticeCurve>& lattices, const std::vector<VelocityCurve>& overlays) {
-  PlotSpec spec;
+  io::PlotSpec spec;
   spec.title = title;
   spec.x_label = "frequency [kHz]";
   spec.y_label = "group velocity [m/s]";
-  std::map<std::pair<int, int>, PlotSeries> branches;
+  std::map<std::pair<int, int>, io::PlotSeries> branches;
   static const char* colours[] = {"#000000", "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b"};
   for (const auto& p : theory) {
     auto& s = branches[{p.mode, p.branch}];
@@ -142,7 +142,7 @@ PlotSpec group_velocity_plot(const std::string& title, const std::vector<Dispers
   for (auto& [key, s] : branches) spec.series.push_back(std::move(s));
   static const char* lattice_colours[] = {"#ff7f0e", "#17becf", "#e377c2", "#7f7f7f", "#bcbd22", "#2ca02c"};
   for (std::size_t i = 0; i < lattices.size(); ++i) {
-    PlotSeries s;
+    io::PlotSeries s;
     s.label = "DEM chain " + lattices[i].label + " (lattice)";
     s.style = std::string("lines lw 2 dt 4 lc rgb '") + lattice_colours[i % 6] + "'";
     for (const auto& p : lattices[i].points) {
@@ -154,7 +154,7 @@ PlotSpec group_velocity_plot(const std::string& title, const std::vector<Dispers
   static const char* overlay_colours[] = {"#ff7f0e", "#bcbd22", "#17becf", "#e377c2", "#7f7f7f", "#2ca02c", "#8c564b"};
   for (std::size_t i = 0; i < overlays.size(); ++i) {
     const auto& o = overlays[i];
-    PlotSeries s;
+    io::PlotSeries s;
     s.label = o.label;
     // Dense tables (a lattice curve) as lines, sparse ones (measurements) as points.
     s.style = std::string(o.f_Hz.size() > 40 ? "lines lw 2.5 dt 2" : "linespoints lw 1.5 pt 7 ps 1") + " lc rgb '" +

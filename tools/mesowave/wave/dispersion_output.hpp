@@ -11,7 +11,7 @@
 
 #include "mesowave/wave/group_velocity.hpp"
 #include "mesowave/wave/lattice.hpp"
-#include "mesowave/wave/plot.hpp"
+#include "mesowave/io/plot.hpp"
 #include "mesowave/wave/pochhammer_chree.hpp"
 
 namespace mesowave::wave {
@@ -45,7 +45,7 @@ void write_dispersion_h5(const std::filesystem::path& path, const PochhammerChre
 
 /// Group velocity against frequency: one line per mode branch (backward branches
 /// dashed), then the lattice and overlay curves.
-PlotSpec group_velocity_plot(const std::string& title, const std::vector<DispersionPoint>& theory,
+io::PlotSpec group_velocity_plot(const std::string& title, const std::vector<DispersionPoint>& theory,
                              const std::vector<LatticeCurve>& lattices, const std::vector<VelocityCurve>& overlays);
 
 /// A string attribute of a signal file's root ("burst_frequency_Hz"), if present.

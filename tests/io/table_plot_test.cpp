@@ -1,6 +1,6 @@
-// mw-table plot's spec (wave/table_plot): what each cell becomes on the plot,
+// mw-table plot's spec (io/table_plot): what each cell becomes on the plot,
 // worked out by hand for a small table.
-#include "mesowave/wave/table_plot.hpp"
+#include "mesowave/io/table_plot.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "mesowave/core/error.hpp"
 
 using namespace mesowave;
-using namespace mesowave::wave;
+using namespace mesowave::io;
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "mesowave/wave/table_plot.hpp"
+#include "mesowave/io/table_plot.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -7,7 +7,7 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/io/table_gather.hpp"
 
-namespace mesowave::wave {
+namespace mesowave::io {
 
 namespace {
 
@@ -73,4 +73,4 @@ PlotSpec table_plot(const io::CsvTable& table, const TablePlotOptions& o) {
   return spec;
 }
 
-}  // namespace mesowave::wave
+}  // namespace mesowave::io

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "mesowave/io/csv.hpp"
-#include "mesowave/wave/plot.hpp"
+#include "mesowave/io/plot.hpp"
 
-namespace mesowave::wave {
+namespace mesowave::io {
 
 struct TablePlotOptions {
   std::string x_column;
@@ -31,6 +31,6 @@ void require_table_plot_options(const TablePlotOptions& options);
 /// The plot of `table`: x must be numeric; a y cell that is empty or not a
 /// number ("-", "n/a") is a gap, never a zero, and so is a value a log y axis
 /// cannot show. InputError for a missing column.
-PlotSpec table_plot(const io::CsvTable& table, const TablePlotOptions& options);
+PlotSpec table_plot(const CsvTable& table, const TablePlotOptions& options);
 
-}  // namespace mesowave::wave
+}  // namespace mesowave::io

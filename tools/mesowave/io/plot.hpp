@@ -1,13 +1,17 @@
 #pragma once
-// Line plots through gnuplot (gnuplot-nox): the data travel inside the script
-// as datablocks, the terminal (pngcairo or svg) follows the final file name.
+// Line plots of any table (mw-table plot, mw-dispersion theory's Figure 9): a
+// spec of series, turned into a gnuplot script whose data travel inside it as
+// datablocks and drawn by io::run_gnuplot; the terminal (pngcairo or svg)
+// follows the final file name.
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace mesowave::wave {
+#include "mesowave/io/gnuplot.hpp"
+
+namespace mesowave::io {
 
 struct PlotSeries {
   std::string label;              ///< legend entry ("" = no entry)
@@ -25,13 +29,13 @@ struct PlotSpec {
   bool margins = false;                   ///< keep points off the frame (5 % of the range on each side)
 };
 
-/// Renders `spec` to `write_to` (a staged temporary) in the format named by
-/// `final_name`'s extension (.png or .svg). InputError for another extension
-/// or when gnuplot is missing; std::runtime_error when gnuplot fails.
+/// The gnuplot script that draws `spec` into `write_to` (a staged temporary) in the
+/// format named by `final_name`'s extension (InputError unless .png or .svg).
+std::string plot_script(const PlotSpec& spec, const std::filesystem::path& final_name,
+                        const std::filesystem::path& write_to);
+
+/// Draws it (io::run_gnuplot: InputError when gnuplot is missing or fails).
 void render_plot(const PlotSpec& spec, const std::filesystem::path& final_name,
                  const std::filesystem::path& write_to);
 
-/// InputError unless `path` ends in .png or .svg (checked before a long run).
-void require_plot_extension(const std::filesystem::path& path);
-
-}  // namespace mesowave::wave
+}  // namespace mesowave::io
