@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "mesowave/core/threads.hpp"
 #include "mesowave/dem/cohesive_frictional_contact.hpp"
 #include "mesowave/dem/linear_bonded_network.hpp"
 #include "mesowave/dem/packing_file.hpp"
@@ -73,7 +74,7 @@ CohesiveFrictionalMaterial concrete() {
 
 template <class Law>
 void step_benchmark(benchmark::State& state) {
-  set_thread_count(int(state.range(0)));
+  mesowave::use_threads(int(state.range(0)));
   const auto m = concrete();
   SphereSet s = make_sphere_set(cube(), m.density_kg_m3);
   BondNetwork b = make_bond_network(s, m.bond_factor);

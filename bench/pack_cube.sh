@@ -20,8 +20,8 @@ echo "|---|---|---|---|---|---|---|---|---|---|---|"
 declare -A walls
 for threads in $threads_list; do
   for seed in $seeds; do
-    /usr/bin/time -f "%e %U %S %M" -o "$work/time" env OMP_NUM_THREADS="$threads" \
-      "$bin/mw-pack" box --cube-side-mm 50 --porosity-pct 7 --d-min-mm 1.6 --d-max-mm 2 \
+    /usr/bin/time -f "%e %U %S %M" -o "$work/time" \
+      "$bin/mw-pack" box --threads "$threads" --cube-side-mm 50 --porosity-pct 7 --d-min-mm 1.6 --d-max-mm 2 \
       --seed "$seed" --quiet --packing "$work/cube.h5" > "$work/summary.json"
     read -r wall user sys rss < "$work/time"
     python3 - "$work/summary.json" "$threads" "$seed" "$wall" "$user" "$sys" "$rss" "$(cut -d' ' -f1 /proc/loadavg)" <<'PY'

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/threads.hpp"
 #include "mesowave/dem/simulation.hpp"
 #include "test_packings.hpp"
 
@@ -110,9 +111,9 @@ TEST(Models, OneAndTwoThreadsGiveBitIdenticalSignals) {
   const Packing p = fcc_packing(13, kA, 0.8e-3, 1.0e-3, 0.03, 9, 2290);
   const Scene s = cube_scene(13, 1e-3, 300e3, 2e-6);
   for (const char* model : {"linear", "full"}) {
-    set_thread_count(1);
+    use_threads(1);
     const RunReport one = run(s, p, model);
-    set_thread_count(2);
+    use_threads(2);
     const RunReport two = run(s, p, model);
     EXPECT_EQ(one.threads, 1);
     EXPECT_EQ(two.threads, 2);

@@ -388,3 +388,73 @@ TEST(FemSolver, CubePulseArrivesAtTheLongitudinalSpeed) {
   EXPECT_GT(peak, 0.0);
   EXPECT_LT(worst, 1e-9 * peak);
 }
+
+TEST(FemCase, AssembledBarPulseFollowsTheImpedanceSolution) {
+  // The bar of BarPulseFollowsTheOneDimensionalImpedanceSolution described as a
+  // case (the patch covers the whole end face): v(z, t) = F(t - z / c0) / (rho c0 A).
+  FemCase c;
+  c.body = FemCase::Body::box;
+  c.material = {210e9, 0.0, 7800.0};
+  const double a = 2e-3, L = 300e-3, z = 100e-3, c0 = std::sqrt(c.material.E_Pa / c.material.rho_kg_m3);
+  c.size_m = {a, a, L};
+  c.source_m = {a / 2, a / 2, 0};
+  c.patch_radius_m = 1.0;
+  c.frequency_hz = 100e3;
+  c.cycles = 3;
+  c.force_N = 50;
+  c.duration_s = 90e-6;
+  c.quantity = Quantity::Velocity;
+  c.sensors = {{"V", {a / 2, a / 2, z}, "z"}};
+  c.threads = 2;
+  const FemSetup setup = assemble_fem_case(c);
+  const FemRun run = run_fem_case(setup);
+  ASSERT_EQ(run.result.signals.size(), 2u);  // V, then the excitation
+  const auto& v = run.result.signals[0];
+  const signal::HannBurst burst(100e3, 3, 50.0);
+  double peak = 0, err = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const double exact = burst(v.time(i) - z / c0) / (c.material.rho_kg_m3 * c0 * a * a);
+    peak = std::max(peak, std::abs(exact));
+    err = std::max(err, std::abs(v.samples[i] - exact));
+  }
+  EXPECT_LT(err / peak, 0.01);
+  const auto& f = run.result.signals[1];
+  EXPECT_EQ(f.name, "excitation");
+  ASSERT_EQ(f.size(), v.size());
+  for (std::size_t i = 0; i < f.size(); i += 37) EXPECT_NEAR(f.samples[i], burst(f.time(i)), 1e-9);
+  // 2 x 2 x 300 elements: fewer than two threads' worth (4000 each).
+  EXPECT_EQ(run.result.threads, 1);
+  EXPECT_EQ(run.threads.reason, "requested (--threads 2), 1 for 1200 elements (at least 4000 per thread)");
+  EXPECT_EQ(run.attributes.at("burst_cycles"), "3");
+
+  // The far face pushes the other way (into the body); a point inside is no face.
+  FemCase far = c;
+  far.source_m = {a / 2, a / 2, L};
+  far.patch_radius_m = 0;
+  const FemSetup far_setup = assemble_fem_case(far);
+  ASSERT_EQ(far_setup.load.dof_weights.size(), 1u);
+  EXPECT_EQ(far_setup.load.dof_weights[0].second, -1.0);
+  far.source_m = {a / 2, a / 2, L / 2};
+  EXPECT_THROW(assemble_fem_case(far), InputError);
+  FemCase blind = c;
+  blind.sensors.clear();
+  EXPECT_THROW(assemble_fem_case(blind), InputError);
+}
+
+TEST(FemCase, RodDefaultsToTheFarEndSensor) {
+  FemCase c;
+  c.material = steel;
+  c.radius_m = kR;
+  c.length_m = 50e-3;
+  c.duration_s = 1e-6;
+  c.spacetime_step_m = 0.0;  // every mesh size along the axis
+  const FemSetup setup = assemble_fem_case(c);
+  ASSERT_EQ(setup.probes.size(), 1u);
+  EXPECT_EQ(setup.probes[0].name, "S");
+  const auto x = setup.model.position(setup.probes[0].dof / std::size_t(setup.model.dim));
+  EXPECT_NEAR(x[2], 50e-3, 1e-12);
+  ASSERT_TRUE(setup.spacetime);
+  EXPECT_EQ(setup.spacetime->coordinate_m.size(), 51u);  // z = 0, 1, ..., 50 mm
+  c.rod_model = "2d";
+  EXPECT_THROW(assemble_fem_case(c), InputError);
+}

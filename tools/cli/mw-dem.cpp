@@ -15,6 +15,7 @@
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/core/threads.hpp"
 #include "mesowave/core/units.hpp"
 #include "mesowave/dem/packing_file.hpp"
 #include "mesowave/dem/run_report.hpp"
@@ -108,8 +109,7 @@ int main(int argc, char** argv) {
                       "broken_bonds); the signal file holds them too (test.stress, test.axial_strain, ...)");
 
   return tool.run(argc, argv, [&](app::Run& run) {
-    std::string threads_reason;
-    dem::set_thread_count(dem::choose_thread_count(threads, &threads_reason));
+    const std::string threads_reason = use_threads(threads).reason;
     dem::Scene scene = dem::read_scene_file(scene_path);
     run.input(scene_path);
     if (!packing_path.empty()) scene.packing_file = packing_path;

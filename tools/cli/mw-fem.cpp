@@ -6,8 +6,6 @@
 //       --length-mm 1000 --mesh-mm 1 --frequency-kHz 100 --alpha-damping 2000 --signals rod100.h5
 //   mw-fem box --E-GPa 36.67 --nu 0.162 --density-kg-m3 2129.56 --size-mm 50 --mesh-mm 1
 //       --source-mm 25,25,0 --sensor B=25,25,50 --frequency-kHz 100 --signals cube100.h5
-#include <omp.h>
-
 #include <optional>
 
 #include "mesowave/app/process_info.hpp"
@@ -15,7 +13,6 @@
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/units.hpp"
-#include "mesowave/dem/simulation.hpp"
 #include "mesowave/io/signal_file.hpp"
 #include "mesowave/wave/fem_case.hpp"
 
@@ -98,108 +95,42 @@ int main(int argc, char** argv) {
   box->add_option("--source-mm", source_text, "Where the force acts, a point on a face X,Y,Z [mm]")->required();
 
   return tool.run(argc, argv, [&](app::Run& run) {
-    const wave::IsotropicMaterial material{require_positive("--E-GPa", E_GPa, "GPa") * units::GPa, nu, rho};
-    wave::validate(material);
-    const double h = require_positive("--mesh-mm", mesh_mm, "mm") * units::mm;
-    const signal::HannBurst burst(require_positive("--frequency-kHz", f_kHz, "kHz") * units::kHz,
-                                  require_positive("--cycles", cycles), require_finite("--force-N", force_N, "N"));
-    const auto q = wave::parse_quantity(quantity);
-    if (patch_mm < 0 || !std::isfinite(patch_mm)) throw InputError("--patch-radius-mm must be >= 0");
-    std::vector<wave::SensorSpec> specs;
-    for (const auto& s : sensors) specs.push_back(wave::parse_sensor_spec(s));
-
-    wave::FemModel model;
-    wave::BurstLoad load{{}, burst};
-    std::vector<wave::Probe> probes;
-    std::map<std::string, std::string> attrs;
+    wave::FemCase c;
+    c.material = {require_positive("--E-GPa", E_GPa, "GPa") * units::GPa, nu, rho};
+    c.mesh_m = require_positive("--mesh-mm", mesh_mm, "mm") * units::mm;
+    c.frequency_hz = require_positive("--frequency-kHz", f_kHz, "kHz") * units::kHz;
+    c.cycles = require_positive("--cycles", cycles);
+    c.force_N = require_finite("--force-N", force_N, "N");
+    c.patch_radius_m = patch_mm * units::mm;
+    c.alpha_damping_per_s = alpha;
+    c.duration_s = require_positive("--duration-ms", duration_ms, "ms") * units::ms;
+    c.sample_dt_s = sample_dt_us * units::us;
+    if (dt_us) c.dt_s = *dt_us * units::us;
+    c.quantity = wave::parse_quantity(quantity);
+    for (const auto& s : sensors) c.sensors.push_back(wave::parse_sensor_spec(s));
+    c.threads = threads;
     if (rod->parsed()) {
-      const double R = require_positive("--radius-mm", radius_mm, "mm") * units::mm;
-      const double L = require_positive("--length-mm", length_mm, "mm") * units::mm;
-      if (model_kind == "axisymmetric") model = wave::rod_axisymmetric(material, R, L, h);
-      else if (model_kind == "3d") model = wave::rod_hexahedra(material, R, L, h);
-      else throw InputError("--model " + model_kind + " must be axisymmetric or 3d");
-      if (specs.empty()) specs.push_back({"S", {0, 0, L}, ""});
-      probes = wave::make_probes(model, specs, q, "z");
-      load = wave::make_load(model, 2, 0.0, {0, 0, 0}, patch_mm * units::mm, 2, +1.0, burst);
+      c.radius_m = require_positive("--radius-mm", radius_mm, "mm") * units::mm;
+      c.length_m = require_positive("--length-mm", length_mm, "mm") * units::mm;
+      c.rod_model = model_kind;
+      if (!spacetime_path.empty()) c.spacetime_step_m = st_step_mm * units::mm;
     } else {
-      std::array<double, 3> size;
-      if (size_text.find(',') == std::string::npos) {
-        const double a = std::stod(size_text) * units::mm;
-        size = {a, a, a};
-      } else {
-        size = wave::parse_point_mm(size_text, "--size-mm");
-      }
-      for (double a : size) require_positive("--size-mm", a / units::mm, "mm");
-      model = wave::box_hexahedra(material, size, h);
-      const auto src = wave::parse_point_mm(source_text, "--source-mm");
-      const auto face = wave::box_face_of(src, size, 1e-9);
-      if (!face) throw InputError("--source-mm " + source_text + " must lie on a face of the box");
-      const double value = face->second ? size[std::size_t(face->first)] : 0.0;
-      load = wave::make_load(model, face->first, value, src, patch_mm * units::mm, face->first,
-                             face->second ? -1.0 : +1.0, burst);  // pushing into the body
-      if (specs.empty()) throw InputError("box: give at least one --sensor NAME=X,Y,Z");
-      probes = wave::make_probes(model, specs, q, "normal", size);
+      c.body = wave::FemCase::Body::box;
+      if (size_text.find(',') == std::string::npos) c.size_m.fill(std::stod(size_text) * units::mm);
+      else c.size_m = wave::parse_point_mm(size_text, "--size-mm");
+      c.source_m = wave::parse_point_mm(source_text, "--source-mm");
     }
-    const auto stepping = wave::choose_stepping(model, require_positive("--duration-ms", duration_ms, "ms") * units::ms,
-                                                sample_dt_us * units::us,
-                                                dt_us ? std::optional<double>(*dt_us * units::us) : std::nullopt);
-    wave::SpaceTimeRequest st;
-    const bool want_st = rod->parsed() && !spacetime_path.empty();
-    if (want_st) st = wave::rod_axis_line(model, st_step_mm > 0 ? st_step_mm * units::mm : h, q);
-
-    // A step synchronises the threads once per element colour: on a busy machine a
-    // descheduled thread stalls the others, so the default leaves busy cores alone.
-    std::string threads_reason;
-    omp_set_num_threads(dem::choose_thread_count(threads, &threads_reason));
-
-    wave::ExplicitOptions opt;
-    opt.dt_s = stepping.dt_s;
-    opt.steps = stepping.steps;
-    opt.sample_stride = stepping.stride;
-    opt.alpha_damping_per_s = alpha;
-    app::Progress progress("mw-fem " + model.description, stepping.steps, "steps", !quiet);
-    opt.progress = [&](std::int64_t n) { progress.update(n); };
-    auto result = wave::run_explicit(model, load, probes, opt, want_st ? &st : nullptr);
+    const wave::FemSetup setup = wave::assemble_fem_case(c);
+    app::Progress progress("mw-fem " + setup.model.description, setup.stepping.steps, "steps", !quiet);
+    const wave::FemRun fem = wave::run_fem_case(setup, [&](std::int64_t n) { progress.update(n); });
     progress.finish();
 
-    // The excitation, sampled like the signals, travels with them.
-    signal::Signal excitation;
-    excitation.name = "excitation";
-    excitation.quantity = "force";
-    excitation.unit = "N";
-    excitation.dt_s = stepping.sample_dt_s;
-    excitation.samples = burst.sample(stepping.sample_dt_s, result.signals.empty() ? 0 : result.signals[0].size());
-    result.signals.push_back(excitation);
-    attrs["model"] = model.description;
-    attrs["solver"] = "mw-fem explicit central differences, lumped mass";
-    attrs["mesh_mm"] = format_number(h / units::mm);
-    attrs["dt_s"] = format_exact(stepping.dt_s);
-    attrs["alpha_damping_per_s"] = format_number(alpha);
-    attrs["burst_frequency_Hz"] = format_exact(burst.centre_frequency_hz());
-    attrs["burst_cycles"] = format_exact(burst.cycles());
-    io::write_signal_file(run.output(signals_path), result.signals, attrs);
-    if (want_st) wave::write_spacetime_file(run.output(spacetime_path), result.spacetime, st, stepping.sample_dt_s, "z", attrs);
-
-    const auto usage = app::resource_usage();
-    nlohmann::ordered_json j;
-    j["model"] = model.description;
-    j["nodes"] = model.node_count();
-    j["elements"] = model.element_count();
-    j["mesh_mm"] = h / units::mm;
-    j["stable_dt_us"] = model.stable_dt() / units::us;
-    j["stable_dt_method"] = model.stable_dt_method;
-    j["dt_us"] = stepping.dt_s / units::us;
-    j["sample_dt_us"] = stepping.sample_dt_s / units::us;
-    j["steps"] = stepping.steps;
-    j["threads"] = result.threads;
-    j["threads_reason"] = threads_reason;
-    j["wall_s"] = result.wall_s;
-    j["steps_per_s"] = double(stepping.steps) / result.wall_s;
-    j["element_updates_per_s"] = double(stepping.steps) * double(model.element_count()) / result.wall_s;
-    j["peak_rss_MiB"] = double(usage.peak_rss_kib) / 1024.0;
-    j["max_kinetic_energy_J"] = result.max_kinetic_energy_J;
-    j["signals"] = signals_path.string();
-    run.metric("wall", result.wall_s, "s");
+    io::write_signal_file(run.output(signals_path), fem.result.signals, fem.attributes);
+    if (setup.spacetime)
+      wave::write_spacetime_file(run.output(spacetime_path), fem.result.spacetime, *setup.spacetime,
+                                 setup.stepping.sample_dt_s, "z", fem.attributes);
+    const auto j = wave::fem_report(setup, fem, double(app::resource_usage().peak_rss_kib) / 1024.0, signals_path);
+    run.metric("wall", fem.result.wall_s, "s");
     run.metric("steps per second", j["steps_per_s"], "1/s");
     run.metric("stable dt", j["stable_dt_us"], "us");
     run.metric("peak RSS", j["peak_rss_MiB"], "MiB");

@@ -52,6 +52,16 @@ ProcessResult run_process(const std::vector<std::string>& argv) {
   return result;
 }
 
+void run_process_or_throw(const std::vector<std::string>& argv, const std::string& what) {
+  const ProcessResult r = run_process(argv);
+  if (r.exit_status == 0) return;
+  std::string why = r.stderr_text;
+  while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
+  if (const auto nl = why.rfind('\n'); nl != std::string::npos) why = why.substr(nl + 1);
+  throw InputError(what + " (" + std::filesystem::path(argv.at(0)).filename().string() + ", exit " +
+                   std::to_string(r.exit_status) + ") failed: " + why);
+}
+
 std::filesystem::path sibling_tool(const std::string& name) {
   std::error_code ec;
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);

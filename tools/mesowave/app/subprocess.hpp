@@ -17,6 +17,10 @@ struct ProcessResult {
 /// waits for it. InputError if it cannot be started.
 ProcessResult run_process(const std::vector<std::string>& argv);
 
+/// run_process for a child that must succeed: InputError "WHAT (NAME, exit N)
+/// failed: LAST LINE OF ITS STDERR" (its one-line error) otherwise.
+void run_process_or_throw(const std::vector<std::string>& argv, const std::string& what);
+
 /// Another tool's executable: `name` beside this one (/proc/self/exe's folder).
 std::filesystem::path sibling_tool(const std::string& name);
 

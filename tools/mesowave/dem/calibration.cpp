@@ -207,4 +207,49 @@ CalibrationTrial CompressionCalibration::next_failure() {
   return make(CalibrationTrial::Kind::failure, p);
 }
 
+RodCalibration::RodCalibration(double E_target_GPa, double tolerance_relative, double start_E_c_GPa, int max_trials)
+    : target_GPa_(require_positive("target E", E_target_GPa, "GPa")),
+      tolerance_(require_positive("tolerance on E_DEM", tolerance_relative)),
+      start_GPa_(require_positive("start E_c", start_E_c_GPa, "GPa")),
+      max_trials_(max_trials) {
+  if (max_trials < 1) throw InputError("max trials (" + std::to_string(max_trials) + ") must be at least 1");
+}
+
+std::optional<RodTrial> RodCalibration::next() {
+  if (pending_) throw std::logic_error("RodCalibration::next before the last trial was recorded");
+  if (converged_) return std::nullopt;
+  RodTrial t;
+  t.number = int(trials_.size()) + 1;
+  if (trials_.empty()) {
+    t.E_c_GPa = start_GPa_;
+  } else {
+    const RodTrial& last = trials_.back();
+    if (std::abs(last.E_DEM_GPa / target_GPa_ - 1) <= tolerance_) {
+      converged_ = true;
+      return std::nullopt;
+    }
+    if (int(trials_.size()) >= max_trials_)
+      throw InputError("the rod calibration did not reach " + format_number(target_GPa_) + " GPa within " +
+                       std::to_string(max_trials_) + " trials");
+    t.E_c_GPa = last.E_c_GPa * (target_GPa_ / last.E_DEM_GPa);  // E_DEM proportional to E_c
+  }
+  pending_ = true;
+  return t;
+}
+
+void RodCalibration::record(const RodTrial& done) {
+  if (!pending_ || done.number != int(trials_.size()) + 1)
+    throw std::logic_error("RodCalibration::record of a trial that was not handed out");
+  if (!(done.E_DEM_GPa > 0) || !std::isfinite(done.E_DEM_GPa))
+    throw InputError("trial " + std::to_string(done.number) + " gave no tension modulus (E_DEM " +
+                     format_number(done.E_DEM_GPa) + " GPa): see its summary " + done.summary_file);
+  trials_.push_back(done);
+  pending_ = false;
+}
+
+const RodTrial& RodCalibration::result() const {
+  if (!converged_) throw std::logic_error("RodCalibration::result before convergence");
+  return trials_.back();
+}
+
 }  // namespace mesowave::dem

@@ -1,12 +1,163 @@
 #include "mesowave/dem/calibration_report.hpp"
 
 #include <cmath>
+#include <fstream>
 
+#include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/dem/vec3.hpp"
 #include "mesowave/io/csv.hpp"
 #include "mesowave/io/gnuplot.hpp"
 
 namespace mesowave::dem {
+
+std::filesystem::path TrialCommand::file(int k, const std::string& extension) const {
+  return work_dir / ("trial-" + std::string(k < 10 ? "0" : "") + std::to_string(k) + extension);
+}
+
+std::vector<std::string> TrialCommand::argv(int k, const std::vector<std::string>& options) const {
+  std::vector<std::string> a = {mw_dem.string(), "run", scene.string(), "--quiet", "--signals", file(k, ".h5"),
+                                "--curves", file(k, ".csv"), "--summary", file(k, ".json")};
+  if (!packing.empty()) a.insert(a.end(), {"--packing", packing.string()});
+  if (!db.empty()) a.insert(a.end(), {"--db", db});
+  if (threads > 0) a.insert(a.end(), {"--threads", std::to_string(threads)});
+  a.insert(a.end(), options.begin(), options.end());
+  return a;
+}
+
+std::vector<std::string> compression_trial_options(const CalibrationTrial& t, const CalibrationTargets& targets,
+                                                   double friction_deg) {
+  const auto& p = t.parameters;
+  std::vector<std::string> options = {"--E-dem-GPa", format_exact(p.E_dem_Pa / 1e9), "--nu-dem", format_exact(p.nu_dem),
+                                      "--friction-angle-deg", format_exact(friction_deg)};
+  if (t.kind == CalibrationTrial::Kind::elastic) {
+    // The linearised network is valid there (the scene's linear_validity_bound says how far).
+    const double b = 0.1 * targets.sigma_Pa / 1e6, a = targets.sigma_Pa / 3 / 1e6;
+    options.insert(options.end(), {"--unbreakable-bonds", "--model", "linear", "--modulus-levels-MPa",
+                                   format_exact(b) + "," + format_exact(a), "--stop-at-MPa", format_exact(1.02 * a)});
+  } else {
+    options.insert(options.end(), {"--T-MPa", format_exact(p.T_Pa / 1e6), "--C-MPa", format_exact(p.c_over_t * p.T_Pa / 1e6)});
+  }
+  return options;
+}
+
+namespace {
+nlohmann::ordered_json read_json(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError("cannot read " + file.string());
+  return nlohmann::ordered_json::parse(in);
+}
+}  // namespace
+
+CalibrationTrial with_results(CalibrationTrial t, const std::filesystem::path& summary_file) {
+  const nlohmann::ordered_json s = read_json(summary_file);
+  const auto& test = s.at("test");
+  t.E_glob_Pa = test.at("E_glob_GPa").get<double>() * 1e9;
+  t.nu_glob = test.at("nu_glob").is_number() ? test.at("nu_glob").get<double>() : NAN;
+  t.peak_Pa = test.at("peak_stress_MPa").get<double>() * 1e6;
+  t.peak_reached = test.at("peak_reached").get<bool>();
+  t.wall_s = s.at("wall_s").get<double>();
+  t.model = s.at("model").get<std::string>();
+  t.summary_file = summary_file.string();
+  return t;
+}
+
+RodTrial with_results(RodTrial t, const std::filesystem::path& summary_file) {
+  const nlohmann::ordered_json s = read_json(summary_file);
+  t.E_DEM_GPa = s.at("test").at("E_fit_GPa").get<double>();
+  t.wall_s = s.at("wall_s").get<double>();
+  t.summary_file = summary_file.string();
+  return t;
+}
+
+std::string describe(const CalibrationTrial& t) {
+  const auto& p = t.parameters;
+  const bool failure = t.kind == CalibrationTrial::Kind::failure;
+  std::string line = "trial " + std::to_string(t.number) + " (" + t.kind_name() + "): E_dem " +
+                     format_number(std::round(p.E_dem_Pa / 1e7) / 100) + " GPa, nu_dem " +
+                     format_number(std::round(p.nu_dem * 1e4) / 1e4);
+  if (failure) line += ", T " + format_number(std::round(p.T_Pa / 1e4) / 100) + " MPa";
+  line += " -> E_glob " + format_number(std::round(t.E_glob_Pa / 1e7) / 100) + " GPa, nu_glob " +
+          format_number(std::round(t.nu_glob * 1e4) / 1e4);
+  if (failure) line += ", peak " + format_number(std::round(t.peak_Pa / 1e4) / 100) + " MPa";
+  return line + " (" + t.model + " model, " + format_number(std::round(t.wall_s * 10) / 10) + " s)";
+}
+
+nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_deg) {
+  const CalibrationTrial& best = c.result();
+  const auto& p = best.parameters;
+  const auto& targets = c.targets();
+  double total_wall = 0;
+  for (const auto& t : c.trials()) total_wall += t.wall_s;
+  nlohmann::ordered_json j;
+  j["E_dem_GPa"] = p.E_dem_Pa / 1e9;
+  j["nu_dem"] = p.nu_dem;
+  j["T_MPa"] = p.T_Pa / 1e6;
+  j["C_MPa"] = p.c_over_t * p.T_Pa / 1e6;
+  j["friction_angle_deg"] = friction_deg;
+  j["E_glob_GPa"] = best.E_glob_Pa / 1e9;
+  j["nu_glob"] = best.nu_glob;
+  j["sigma_dem_MPa"] = best.peak_Pa / 1e6;
+  j["E_st_target_GPa"] = targets.E_Pa / 1e9;
+  j["nu_st_target"] = targets.nu;
+  j["sigma_max_target_MPa"] = targets.sigma_Pa / 1e6;
+  j["E_error_pct"] = 100 * (best.E_glob_Pa / targets.E_Pa - 1);
+  j["nu_error"] = best.nu_glob - targets.nu;
+  j["sigma_error_pct"] = 100 * (best.peak_Pa / targets.sigma_Pa - 1);
+  j["trial_count"] = c.trials().size();
+  j["calibrated_by_trial"] = best.summary_file;
+  j["trials_wall_s"] = total_wall;
+  return j;
+}
+
+nlohmann::ordered_json rod_calibration_summary(const RodCalibration& c, const Packing& chain,
+                                               const CohesiveFrictionalMaterial& material) {
+  const RodTrial& best = c.result();
+  const double R = chain.radii_m.front();
+  auto centre = [&](std::size_t i) {
+    const auto& x = chain.centres_m[i];
+    return Vec3{x[0], x[1], x[2]};
+  };
+  const double d = norm(centre(1) - centre(0));
+  CohesiveFrictionalMaterial calibrated = material;
+  calibrated.young_Pa = best.E_c_GPa * 1e9;
+  nlohmann::ordered_json trials = nlohmann::ordered_json::array();
+  for (const auto& t : c.trials())
+    trials.push_back({{"trial", t.number}, {"E_dem_GPa", t.E_c_GPa}, {"E_DEM_GPa", t.E_DEM_GPa}, {"wall_s", t.wall_s}});
+  nlohmann::ordered_json j;
+  j["spheres"] = chain.size();
+  j["sphere_radius_mm"] = R * 1e3;
+  j["spacing_mm"] = d * 1e3;
+  j["spacing_R"] = d / R;
+  j["rho_p_kg_m3"] = chain.particle_density_kg_m3;
+  j["E_dem_GPa"] = best.E_c_GPa;
+  j["Kn_N_m"] = normal_stiffness(calibrated, R, R);  // Eq. (3): E_c R for equal spheres
+  j["E_DEM_GPa"] = best.E_DEM_GPa;
+  j["E_target_GPa"] = c.target_GPa();
+  j["E_dem_start_GPa"] = c.trials().front().E_c_GPa;
+  j["E_DEM_at_start_GPa"] = c.trials().front().E_DEM_GPa;
+  j["trials"] = trials;
+  return j;
+}
+
+StressStrainCurve read_trial_curve(const std::filesystem::path& summary_file) {
+  const nlohmann::ordered_json test = read_json(summary_file).at("test");
+  const io::CsvTable t = io::read_csv(std::filesystem::path(summary_file).replace_extension(".csv"));
+  StressStrainCurve c;
+  const std::size_t s = t.column("stress_MPa"), a = t.column("axial_strain"), l = t.column("lateral_strain");
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    c.stress_Pa.push_back(t.number(i, s) * 1e6);
+    c.axial.push_back(t.number(i, a));
+    if (!t.text(i, l).empty()) c.lateral.push_back(t.number(i, l));
+  }
+  c.E_glob_Pa = test.at("E_glob_GPa").get<double>() * 1e9;
+  c.nu_glob = test.at("nu_glob").is_number() ? test.at("nu_glob").get<double>() : 0;
+  c.sigma_b_Pa = test.at("modulus_levels_MPa")[0].get<double>() * 1e6;
+  c.sigma_a_Pa = test.at("modulus_levels_MPa")[1].get<double>() * 1e6;
+  c.eps_b = test.at("strains_at_levels")[0].get<double>();
+  c.eps_a = test.at("strains_at_levels")[1].get<double>();
+  return c;
+}
 
 std::string calibration_trials_csv(const std::vector<CalibrationTrial>& trials) {
   // Six significant digits: a log for people (the tolerances are 1 %, 0.01 and 2 %); each

@@ -344,29 +344,3 @@ RunReport Simulation::run() {
 }
 
 }  // namespace mesowave::dem
-
-#include <omp.h>
-
-#include <fstream>
-
-namespace mesowave::dem {
-void set_thread_count(int threads) {
-  if (threads > 0) omp_set_num_threads(threads);
-}
-
-int choose_thread_count(int requested, std::string* reason) {
-  const int cores = omp_get_num_procs();
-  if (requested > 0) {
-    if (reason) *reason = "requested (--threads " + std::to_string(requested) + ")";
-    return requested;
-  }
-  double load = 0;
-  std::ifstream in("/proc/loadavg");
-  if (!(in >> load)) load = 0;
-  const int free_cores = std::max(1, std::min(cores, int(std::lround(double(cores) - load))));
-  if (reason)
-    *reason = std::to_string(free_cores) + " of " + std::to_string(cores) + " cores (1-minute load average " +
-              format_number(std::round(load * 100) / 100) + " before the run)";
-  return free_cores;
-}
-}  // namespace mesowave::dem

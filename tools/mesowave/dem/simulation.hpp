@@ -107,16 +107,3 @@ private:
 };
 
 }  // namespace mesowave::dem
-
-namespace mesowave::dem {
-/// Threads for the models' parallel loops (OpenMP); 0 keeps the default.
-void set_thread_count(int threads);
-
-/// The thread count to use: `requested` if > 0, else every core the machine
-/// is not already busy with (cores minus the 1-minute load average, at least
-/// 1). A step synchronises its threads twice; on an oversubscribed machine a
-/// descheduled thread stalls the other at every barrier, so a busy machine
-/// runs faster on one thread. The results are the same bits either way.
-/// `reason` (if given) says why, for the run summary.
-int choose_thread_count(int requested, std::string* reason = nullptr);
-}  // namespace mesowave::dem

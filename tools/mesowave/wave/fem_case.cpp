@@ -5,6 +5,7 @@
 
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/units.hpp"
+#include "mesowave/core/threads.hpp"
 #include "mesowave/io/hdf5.hpp"
 
 namespace mesowave::wave {
@@ -178,6 +179,104 @@ void write_spacetime_file(const std::filesystem::path& path, const std::vector<d
   h5::set_attribute(g.id(), "quantity", quantity_name(req.quantity));
   h5::set_attribute(g.id(), "unit", quantity_unit(req.quantity));
   h5::set_attribute(g.id(), "component", component);
+}
+
+FemSetup assemble_fem_case(const FemCase& spec) {
+  validate(spec.material);
+  const double h = require_positive("mesh size", spec.mesh_m / units::mm, "mm") * units::mm;
+  const signal::HannBurst burst(spec.frequency_hz, spec.cycles, require_finite("force", spec.force_N, "N"));
+  if (spec.patch_radius_m < 0 || !std::isfinite(spec.patch_radius_m))
+    throw InputError("the load patch radius (" + format_quantity(spec.patch_radius_m / units::mm, "mm") + ") must be >= 0");
+  FemModel model;
+  std::vector<Probe> probes;
+  std::optional<BurstLoad> load;
+  std::optional<SpaceTimeRequest> spacetime;
+  if (spec.body == FemCase::Body::rod) {
+    const double R = require_positive("rod radius", spec.radius_m / units::mm, "mm") * units::mm;
+    const double L = require_positive("rod length", spec.length_m / units::mm, "mm") * units::mm;
+    if (spec.rod_model == "axisymmetric") model = rod_axisymmetric(spec.material, R, L, h);
+    else if (spec.rod_model == "3d") model = rod_hexahedra(spec.material, R, L, h);
+    else throw InputError("rod model " + spec.rod_model + " must be axisymmetric or 3d");
+    const std::vector<SensorSpec> sensors = spec.sensors.empty() ? std::vector<SensorSpec>{{"S", {0, 0, L}, ""}} : spec.sensors;
+    probes = make_probes(model, sensors, spec.quantity, "z");
+    load = make_load(model, 2, 0.0, {0, 0, 0}, spec.patch_radius_m, 2, +1.0, burst);
+    if (spec.spacetime_step_m)
+      spacetime = rod_axis_line(model, *spec.spacetime_step_m > 0 ? *spec.spacetime_step_m : h, spec.quantity);
+  } else {
+    for (double a : spec.size_m) require_positive("box size", a / units::mm, "mm");
+    model = box_hexahedra(spec.material, spec.size_m, h);
+    const auto face = box_face_of(spec.source_m, spec.size_m, 1e-9);
+    if (!face)
+      throw InputError("the source point (" + format_number(spec.source_m[0] / units::mm) + ", " +
+                       format_number(spec.source_m[1] / units::mm) + ", " + format_number(spec.source_m[2] / units::mm) +
+                       " mm) must lie on a face of the box");
+    const double value = face->second ? spec.size_m[std::size_t(face->first)] : 0.0;
+    load = make_load(model, face->first, value, spec.source_m, spec.patch_radius_m, face->first,
+                     face->second ? -1.0 : +1.0, burst);  // pushing into the body
+    if (spec.sensors.empty()) throw InputError("box: give at least one sensor (--sensor NAME=X,Y,Z)");
+    probes = make_probes(model, spec.sensors, spec.quantity, "normal", spec.size_m);
+  }
+  const Stepping stepping = choose_stepping(model, spec.duration_s, spec.sample_dt_s, spec.dt_s);
+  return FemSetup{spec, std::move(model), std::move(*load), std::move(probes), stepping, std::move(spacetime)};
+}
+
+FemRun run_fem_case(const FemSetup& setup, const std::function<void(std::int64_t)>& progress) {
+  const FemModel& model = setup.model;
+  const Stepping& stepping = setup.stepping;
+  ExplicitOptions opt;
+  opt.dt_s = stepping.dt_s;
+  opt.steps = stepping.steps;
+  opt.sample_stride = stepping.stride;
+  opt.alpha_damping_per_s = setup.spec.alpha_damping_per_s;
+  opt.progress = progress;
+  // A step synchronises the threads once per element colour: on a busy machine a
+  // descheduled thread stalls the others, so the default leaves busy cores alone.
+  FemRun run{{}, use_threads(setup.spec.threads, {model.element_count(), opt.min_elements_per_thread, "elements"}), {}};
+  run.result = run_explicit(model, setup.load, setup.probes, opt, setup.spacetime ? &*setup.spacetime : nullptr);
+
+  // The excitation, sampled like the signals, travels with them.
+  const signal::HannBurst& burst = setup.load.burst;
+  signal::Signal excitation;
+  excitation.name = "excitation";
+  excitation.quantity = "force";
+  excitation.unit = "N";
+  excitation.dt_s = stepping.sample_dt_s;
+  excitation.samples = burst.sample(stepping.sample_dt_s, run.result.signals.empty() ? 0 : run.result.signals[0].size());
+  run.result.signals.push_back(excitation);
+  run.attributes = {{"model", model.description},
+                    {"solver", "mw-fem explicit central differences, lumped mass"},
+                    {"mesh_mm", format_number(setup.spec.mesh_m / units::mm)},
+                    {"dt_s", format_exact(stepping.dt_s)},
+                    {"alpha_damping_per_s", format_number(setup.spec.alpha_damping_per_s)},
+                    {"burst_frequency_Hz", format_exact(burst.centre_frequency_hz())},
+                    {"burst_cycles", format_exact(burst.cycles())}};
+  return run;
+}
+
+nlohmann::ordered_json fem_report(const FemSetup& setup, const FemRun& run, double peak_rss_MiB,
+                                  const std::filesystem::path& signals) {
+  const FemModel& model = setup.model;
+  const Stepping& stepping = setup.stepping;
+  const ExplicitResult& result = run.result;
+  nlohmann::ordered_json j;
+  j["model"] = model.description;
+  j["nodes"] = model.node_count();
+  j["elements"] = model.element_count();
+  j["mesh_mm"] = setup.spec.mesh_m / units::mm;
+  j["stable_dt_us"] = model.stable_dt() / units::us;
+  j["stable_dt_method"] = model.stable_dt_method;
+  j["dt_us"] = stepping.dt_s / units::us;
+  j["sample_dt_us"] = stepping.sample_dt_s / units::us;
+  j["steps"] = stepping.steps;
+  j["threads"] = result.threads;
+  j["threads_reason"] = run.threads.reason;
+  j["wall_s"] = result.wall_s;
+  j["steps_per_s"] = double(stepping.steps) / result.wall_s;
+  j["element_updates_per_s"] = double(stepping.steps) * double(model.element_count()) / result.wall_s;
+  j["peak_rss_MiB"] = peak_rss_MiB;
+  j["max_kinetic_energy_J"] = result.max_kinetic_energy_J;
+  j["signals"] = signals.string();
+  return j;
 }
 
 }  // namespace mesowave::wave

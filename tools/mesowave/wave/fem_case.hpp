@@ -1,7 +1,8 @@
 #pragma once
-// The pieces of an mw-fem run that are not the solver: where the burst is
-// applied, where signals are recorded, the time step and sampling, the
-// space-time record file and the cost report.
+// An mw-fem run assembled from its description (FemCase: the body, the
+// burst, the sensors, the record) and the pieces that are not the solver:
+// where the burst is applied, where signals are recorded, the time step and
+// sampling, the threads, the space-time record file and the cost report.
 #include <array>
 #include <filesystem>
 #include <map>
@@ -9,6 +10,9 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "mesowave/core/threads.hpp"
 #include "mesowave/wave/fem_solver.hpp"
 
 namespace mesowave::wave {
@@ -51,6 +55,53 @@ struct Stepping {
 };
 Stepping choose_stepping(const FemModel& model, double duration_s, double sample_dt_s,
                          std::optional<double> dt_s = std::nullopt);
+
+/// One wave run on a continuum (the rod paper's Abaqus/Explicit reference,
+/// Section 4.3.1): a Hann-burst force on a rod or a box, in SI units.
+struct FemCase {
+  enum class Body { rod, box } body = Body::rod;
+  IsotropicMaterial material;
+  double mesh_m = 1e-3;
+  // Rod along z, ends z = 0 and z = L: the force at the centre of z = 0, default sensor S at the far end's centre.
+  double radius_m = 0, length_m = 0;
+  std::string rod_model = "axisymmetric";  ///< axisymmetric | 3d
+  std::optional<double> spacetime_step_m;  ///< rod: record the axial quantity along the axis every this far
+  // Box [0,X] x [0,Y] x [0,Z]: the force normal to the face the source lies on, pushing into the body.
+  std::array<double, 3> size_m{}, source_m{};
+  double frequency_hz = 100e3, cycles = 5, force_N = 1;
+  double patch_radius_m = 0;  ///< 0: a point force; else a uniform traction over the face within it
+  double alpha_damping_per_s = 0;
+  double duration_s = 1.5e-3, sample_dt_s = 0.1e-6;
+  std::optional<double> dt_s;  ///< default: choose_stepping's
+  Quantity quantity = Quantity::Acceleration;
+  std::vector<SensorSpec> sensors;
+  int threads = 0;  ///< requested (core/threads.hpp; 0: the machine's free cores)
+};
+
+/// The case as a model ready to run: mesh, load, probes, stepping.
+struct FemSetup {
+  FemCase spec;
+  FemModel model;
+  BurstLoad load;
+  std::vector<Probe> probes;
+  Stepping stepping;
+  std::optional<SpaceTimeRequest> spacetime;
+};
+/// InputError for a bad material, a source off the box's faces, a box without
+/// sensors, a sensor outside the body, an unknown rod model.
+FemSetup assemble_fem_case(const FemCase& spec);
+
+struct FemRun {
+  ExplicitResult result;  ///< the probes' signals, then the excitation (force, sampled like them)
+  ThreadChoice threads;
+  std::map<std::string, std::string> attributes;  ///< for the signal file: model, solver, mesh, dt, burst
+};
+/// Runs it on the threads of core/threads.hpp's rule (at least 4000 elements a thread).
+FemRun run_fem_case(const FemSetup& setup, const std::function<void(std::int64_t)>& progress = {});
+
+/// The run's JSON report: model, mesh, stable step, stepping, threads and why, cost.
+nlohmann::ordered_json fem_report(const FemSetup& setup, const FemRun& run, double peak_rss_MiB,
+                                  const std::filesystem::path& signals);
 
 /// Space-time record along a line of nodes: HDF5 with /spacetime/samples
 /// [time, position], attributes t0_s, dt_s, quantity, unit, component and the

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "mesowave/core/check.hpp"
+#include "mesowave/core/threads.hpp"
 
 namespace mesowave::wave {
 
@@ -107,15 +108,10 @@ std::pair<std::size_t, std::size_t> my_range(std::size_t n) {
 
 }  // namespace
 
-int useful_threads(std::size_t elements, std::size_t min_per_thread) {
-  const std::size_t by_work = min_per_thread == 0 ? std::size_t(omp_get_max_threads()) : elements / min_per_thread;
-  return int(std::clamp<std::size_t>(by_work, 1, std::size_t(omp_get_max_threads())));
-}
-
 void apply_stiffness(const FemModel& model, const std::vector<double>& u, std::vector<double>& f) {
   f.assign(model.dof_count(), 0.0);
   const Assembler A(model);
-#pragma omp parallel num_threads(useful_threads(model.element_count(), 4000))
+#pragma omp parallel num_threads(region_threads(model.element_count(), 4000))
   A.add(u.data(), f.data());
 }
 
@@ -220,7 +216,7 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
   // elements (colour by colour), then
   //   v^{n+1/2} = keep v^{n-1/2} + gain (F^n w - f) / m,  u^{n+1} = u^n + dt v^{n+1/2},  f = 0,
   // and the recorded dofs sampled from v^{n-1/2}, v^{n+1/2} and u^n.
-#pragma omp parallel num_threads(useful_threads(model.element_count(), opt.min_elements_per_thread))
+#pragma omp parallel num_threads(region_threads(model.element_count(), opt.min_elements_per_thread))
   {
 #pragma omp single
     {

@@ -55,8 +55,8 @@ struct ExplicitOptions {
   double alpha_damping_per_s = 0;    ///< Rayleigh mass-proportional coefficient alpha [1/s]
   std::function<void(std::int64_t)> progress;  ///< called with the step count now and then (from one thread)
   bool allow_unstable = false;       ///< tests only: run above the stable step to watch it diverge
-  /// Threads used: at most one per this many elements (and at most OpenMP's maximum),
-  /// so that small meshes do not pay for barriers they cannot amortise.
+  /// Threads used: at most one per this many elements (and at most OpenMP's maximum;
+  /// core/threads.hpp), so that small meshes do not pay for barriers they cannot amortise.
   std::size_t min_elements_per_thread = 4000;
 };
 
@@ -69,9 +69,6 @@ struct ExplicitResult {
   double final_kinetic_energy_J = 0;
   int threads = 1;
 };
-
-/// Threads worth using for `elements` elements at `min_per_thread` each.
-int useful_threads(std::size_t elements, std::size_t min_per_thread);
 
 /// f = K u (f overwritten), using the element colouring: for tests and the power iteration.
 void apply_stiffness(const FemModel& model, const std::vector<double>& u, std::vector<double>& f);

@@ -1,0 +1,49 @@
+#pragma once
+// The one thread policy of every solver (DEM, FEM, packing). A time step (or
+// a relaxation iteration) ends at a barrier: on a machine already busy with
+// other work a descheduled thread stalls the others at every barrier, and a
+// parallel region costs a few microseconds that a small model does not repay.
+// So the rule is:
+//   1. `requested` threads if > 0 (--threads N);
+//   2. else the cores the machine is not busy with: cores minus the 1-minute
+//      load average, rounded, at least 1 (measured on 2 cores at load 8: two
+//      threads ran 2-3x slower than one);
+//   3. at most one thread per `min_per_thread` units of work (elements,
+//      spheres), so below 2 x min_per_thread one thread is used.
+// Every solver gives the same bits for any thread count, so the rule moves
+// only the wall time. Each run reports the count and `reason`.
+#include <cstddef>
+#include <string>
+
+namespace mesowave {
+
+/// What the rule decided, and why (for the run summary).
+struct ThreadChoice {
+  int count = 1;
+  std::string reason;
+};
+
+/// The work a run parallelises: `items` units (named `unit`, e.g. "elements"),
+/// each thread worth it from `min_per_thread` units on. min_per_thread = 0:
+/// no minimum.
+struct ThreadWork {
+  std::size_t items = 0;
+  std::size_t min_per_thread = 0;
+  std::string unit = "items";
+};
+
+/// The rule itself, for a machine with `cores` cores at 1-minute load `load`.
+ThreadChoice thread_rule(int requested, int cores, double load, const ThreadWork& work = {});
+
+/// At most `count` threads, and at most one per work.min_per_thread items (at least 1).
+int threads_for_work(int count, const ThreadWork& work);
+
+/// The rule on this machine (OpenMP's core count, /proc/loadavg), applied:
+/// OpenMP's next parallel regions use the chosen count.
+ThreadChoice use_threads(int requested, const ThreadWork& work = {});
+
+/// Threads for one parallel region over `items` units: OpenMP's current
+/// maximum (what use_threads set), capped by the work.
+int region_threads(std::size_t items, std::size_t min_per_thread);
+
+}  // namespace mesowave
