@@ -1,7 +1,8 @@
 # mesowave - the one entry point.
 #
-#   make reproduce        install what is missing, build, run both studies on lab-data/ (results/, report/)
+#   make reproduce        install what is missing, build, run every study on lab-data/ (results/, report/)
 #   make reproduce-quick  the same rules on small models and short records (results-quick/, report-quick/)
+#   make new-study NAME=my-cube FROM=concrete-cube   a lab's own specimen: lab-data/ and pipeline/ folders
 #   make test             install what is missing, build, run every test (CTest summary at the end)
 #   make bench            benchmarks (bench/), results in docs/benchmarks.md
 #   make clean            remove build/, both result trees, reports and provenance databases
@@ -36,7 +37,7 @@ export MESOWAVE_DB ?= $(if $(filter 1,$(QUICK)),$(QUICK_DB),$(CURDIR)/db/provena
 all: build
 
 help:
-	@sed -n '2,11p' Makefile | sed 's/^# \{0,1\}//'
+	@sed -n '2,12p' Makefile | sed 's/^# \{0,1\}//'
 
 deps:
 	@scripts/install-deps
@@ -64,14 +65,23 @@ reproduce-quick: build
 	@start=$$(date +%s.%N); $(MAKE) --no-print-directory pipeline QUICK=1 MESOWAVE_DB=$(QUICK_DB) && \
 	  $(PRINT_WALL_TIME)
 
-include pipeline/concrete-cube/study.mk
-include pipeline/steel-rod/study.mk
+# A study is a folder pipeline/<study>/: its study.mk (the rules; it adds the goals that print
+# its tables to PIPELINE_GOALS) and its report.toml (its sections of the report), with its
+# inputs in lab-data/<study>/. Studies are found here, in folder order, so a new one
+# (`make new-study`) runs in make reproduce and shows in the report without an edit here.
+STUDIES := $(patsubst pipeline/%/study.mk,%,$(sort $(wildcard pipeline/*/study.mk)))
+PIPELINE_GOALS :=
+include $(foreach study,$(STUDIES),pipeline/$(study)/study.mk)
 include pipeline/report.mk
 
-pipeline: concrete-cube-summary concrete-cube-raw-summary concrete-cube-calibration-summary concrete-cube-waves-summary \
-    steel-rod-summary steel-rod-calibration \
-    $(REPORT_DIR)/index.html
+pipeline: $(PIPELINE_GOALS) $(REPORT_DIR)/index.html
 	@echo; echo "report: $(CURDIR)/$(REPORT_DIR)/index.html"
+
+# A lab's own specimen as a new study, copied from an existing one with every lab-data value
+# marked to be replaced (scripts/new-study --help):  make new-study NAME=my-cube FROM=concrete-cube
+.PHONY: new-study
+new-study:
+	@scripts/new-study "$(NAME)" "$(FROM)"
 
 bench: build
 	bench/run

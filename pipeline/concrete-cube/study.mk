@@ -9,6 +9,10 @@
 # 100-500 kHz with its continuum reference, PCC (Table 3), figures and speed
 # against error.
 
+# Study prefix: CC (make variables CC_*, functions cc_*; scripts/new-study renames them).
+PIPELINE_GOALS += concrete-cube-summary concrete-cube-raw-summary concrete-cube-calibration-summary \
+                  concrete-cube-waves-summary
+
 CC_LAB := lab-data/concrete-cube
 CC_OUT := $(RESULTS)/concrete-cube
 CC_NOTES := pipeline/concrete-cube

@@ -12,6 +12,9 @@
 # The DEM chains keep 1.5 ms (they cost milliseconds): 0.95R spreads its echo over
 # longer than that.
 
+# Study prefix: SR (make variables SR_*, functions sr_*; scripts/new-study renames them).
+PIPELINE_GOALS += steel-rod-summary steel-rod-calibration
+
 SR_OUT := $(RESULTS)/steel-rod
 SR_SCENES := pipeline/steel-rod/scenes
 SR_PAPER := lab-data/steel-rod/paper

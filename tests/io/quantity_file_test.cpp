@@ -34,3 +34,14 @@ TEST(QuantityFile, EveryLabValueMustSayWhereItComesFrom) {
   EXPECT_THROW(io::parse_quantity_text("[x\n", "a.toml"), InputError);
   EXPECT_THROW(io::parse_quantity_text("{broken", "a.json"), InputError);
 }
+
+// scripts/new-study marks every copied value a placeholder; it still says where it came from.
+TEST(QuantityFile, APlaceholderCopiedByNewStudyReadsButMustCiteItsOrigin) {
+  const auto q = io::parse_quantity_text(
+      "[t_p]\nvalue = 35.0\nunit = \"us\"\nsource = \"placeholder\"\ncite = \"copied from concrete-cube (paper)\"\n",
+      "upv.toml");
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_EQ(q[0].source, "placeholder");
+  EXPECT_THROW(io::parse_quantity_text("[t_p]\nvalue = 35.0\nunit = \"us\"\nsource = \"placeholder\"\n", "upv.toml"),
+               InputError);
+}

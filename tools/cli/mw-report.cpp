@@ -1,6 +1,6 @@
 // mw-report - the studies' results as one static HTML page a researcher reads.
 //
-//   mw-report --spec pipeline/report.toml --out-dir report
+//   mw-report --spec pipeline/report.toml --spec pipeline/concrete-cube/report.toml ... --out-dir report
 //
 // Tables (CSV) and figures (PNG/SVG) named by the spec, each with the
 // provenance of its file from the database (--db / MESOWAVE_DB), and the
@@ -21,19 +21,23 @@ int main(int argc, char** argv) {
                  "Write the report: a static HTML page (report/index.html) with every table and figure named in the "
                  "spec, each with a provenance panel (the run that made its file: tool, version, parameters, input "
                  "hashes, lineage back to lab-data), and the machine and compute time behind the results.\n\n"
-                 "  mw-report --spec pipeline/report.toml --out-dir report\n"
+                 "  mw-report --spec pipeline/report.toml --spec pipeline/concrete-cube/report.toml --out-dir report\n"
                  "  chromium --headless --screenshot report/index.html   # or open it in any browser");
-  fs::path spec_path, out_dir = "report", base = fs::current_path();
+  std::vector<fs::path> spec_paths;
+  fs::path out_dir = "report", base = fs::current_path();
   bool no_provenance = false;
   auto& cli = tool.cli();
-  cli.add_option("--spec", spec_path, "The report spec (TOML: sections with tables, figures, notes)")->required();
+  cli.add_option("--spec", spec_paths,
+                 "The report spec (TOML: sections with tables, figures, notes); repeat it: the first gives the title "
+                 "and opening text, each further one (a study's report.toml) adds its sections in order")
+      ->required();
   cli.add_option("--out-dir", out_dir, "Where index.html and figures/ go")->capture_default_str();
   cli.add_option("--base", base, "Directory the spec's file names are relative to (default: here)");
   cli.add_flag("--no-provenance", no_provenance, "Leave out the provenance panels (no database needed)");
 
   return tool.run(argc, argv, [&](app::Run& run) {
-    run.input(spec_path);
-    const auto spec = report::read_report_spec(spec_path);
+    for (const auto& path : spec_paths) run.input(path);
+    const auto spec = report::read_report_spec(spec_paths);
     std::optional<prov::Database> db;
     if (!no_provenance) {
       if (tool.db_path().empty()) throw InputError("provenance panels need the database: give --db or MESOWAVE_DB (or --no-provenance)");

@@ -13,7 +13,9 @@
 namespace mesowave::io {
 namespace {
 
-const std::set<std::string> kSourceKinds = {"paper", "derived", "synthetic", "assumed"};
+// placeholder: a value copied from another study by scripts/new-study, still to be replaced by
+// this specimen's own (its cite says where it was copied from).
+const std::set<std::string> kSourceKinds = {"paper", "derived", "synthetic", "assumed", "placeholder"};
 
 std::string scalar_text(const toml::node& node, const std::string& where) {
   if (auto v = node.value<double>()) return format_exact(*v);
@@ -52,7 +54,7 @@ std::vector<Quantity> parse_toml(const std::string& text, const std::string& ori
     q.source = entry->get("source") ? entry->get("source")->value_or(std::string()) : "";
     q.cite = entry->get("cite") ? entry->get("cite")->value_or(std::string()) : "";
     if (!kSourceKinds.count(q.source))
-      throw InputError(where + " has source '" + q.source + "'; it must be paper, derived, synthetic or assumed");
+      throw InputError(where + " has source '" + q.source + "'; it must be paper, derived, synthetic, assumed or placeholder");
     if (q.source != "synthetic" && q.cite.empty())
       throw InputError(where + " is '" + q.source + "' but has no cite saying where it comes from");
     quantities.push_back(std::move(q));

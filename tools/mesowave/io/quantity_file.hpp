@@ -7,7 +7,7 @@
 //   [t_p]
 //   value  = 35.0
 //   unit   = "us"
-//   source = "paper"      # paper | derived | synthetic | assumed
+//   source = "paper"      # paper | derived | synthetic | assumed | placeholder (scripts/new-study)
 //   cite   = "concrete paper, Section 3.2"
 // JSON layout (tool outputs): a flat object whose keys already end in their
 // unit, {"E_d_GPa": 36.67, "nu_d": 0.1618}.
@@ -21,7 +21,7 @@ struct Quantity {
   std::string name;    ///< as in the file ("t_p")
   std::string value;   ///< textual value as an option would receive it
   std::string unit;    ///< "" for dimensionless quantities
-  std::string source;  ///< paper | derived | synthetic | assumed | output
+  std::string source;  ///< paper | derived | synthetic | assumed | placeholder | output
   std::string cite;    ///< where a paper value is printed, or why it was assumed
 
   /// The command-line option this quantity fills: "t_p" in "us" -> "t-p-us".

@@ -14,6 +14,10 @@
 //   caption = "Stress-strain curves (cf. paper Fig. 5)"
 //   [[section.item]]
 //   note = "pipeline/concrete-cube/table1-note.txt"      # a text file, shown as a paragraph
+//
+// A report may be read from several files: the first gives the title and the opening text,
+// each further one (a study's pipeline/<study>/report.toml) adds its sections in order, so a
+// new study adds its part of the report without editing a shared file.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -41,5 +45,9 @@ struct ReportSpec {
 
 /// InputError naming the file and entry for a malformed spec.
 ReportSpec read_report_spec(const std::filesystem::path& path);
+
+/// The first file's title and text, then every file's sections in order. InputError for a
+/// later file with a title or text of its own (the report has one), or no section in any file.
+ReportSpec read_report_spec(const std::vector<std::filesystem::path>& paths);
 
 }  // namespace mesowave::report
