@@ -112,12 +112,17 @@ int useful_threads(std::size_t elements, std::size_t min_per_thread) {
   return int(std::clamp<std::size_t>(by_work, 1, std::size_t(omp_get_max_threads())));
 }
 
+namespace {
+
+// f = K u (f overwritten), using the element colouring: the power iteration's product.
 void apply_stiffness(const FemModel& model, const std::vector<double>& u, std::vector<double>& f) {
   f.assign(model.dof_count(), 0.0);
   const Assembler A(model);
 #pragma omp parallel num_threads(useful_threads(model.element_count(), 4000))
   A.add(u.data(), f.data());
 }
+
+}  // namespace
 
 double global_max_omega(const FemModel& model, int iterations) {
   const std::size_t n = model.dof_count();

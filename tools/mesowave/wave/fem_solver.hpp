@@ -73,9 +73,6 @@ struct ExplicitResult {
 /// Threads worth using for `elements` elements at `min_per_thread` each.
 int useful_threads(std::size_t elements, std::size_t min_per_thread);
 
-/// f = K u (f overwritten), using the element colouring: for tests and the power iteration.
-void apply_stiffness(const FemModel& model, const std::vector<double>& u, std::vector<double>& f);
-
 /// Largest frequency of the assembled mesh (power iteration on M^-1 K; free dofs).
 /// Below the element bound behind FemModel::stable_dt(); for reporting.
 double global_max_omega(const FemModel& model, int iterations = 300);
