@@ -17,6 +17,17 @@ CC_LAB := lab-data/concrete-cube
 CC_OUT := $(RESULTS)/concrete-cube
 CC_NOTES := pipeline/concrete-cube
 
+# The --from contract (app/tool.hpp): every entry of a --from file fills an option,
+# or the file declares it foreign, or the reader names it in --from-ignore. A tool's
+# JSON carries its inputs and side results for the reader beside the value the next
+# step takes; these lists are those entries, per reader (a renamed entry is then an
+# error, not a value left silently at its default).
+CC_DENSITY_UNTAKEN := --from-ignore shape,mass_g,side_mm,mass_resolution_g,length_resolution_mm,volume_m3,u_density_kg_m3
+CC_UPV_UNTAKEN_BY_FEM := --from-ignore G_d_GPa,method,nu_d_source,path_mm,t_p_us,t_s_us,v_p_m_s,v_s_m_s
+CC_UPV_UNTAKEN_BY_ESTATIC := $(CC_UPV_UNTAKEN_BY_FEM),nu_d
+CC_CALIBRATION_UNTAKEN := --from-ignore E_glob_GPa,nu_glob,sigma_dem_MPa,E_st_target_GPa,nu_st_target,sigma_max_target_MPa \
+  --from-ignore E_error_pct,nu_error,sigma_error_pct,calibrated_by_trial,trial_count,trials_wall_s
+
 # Step 1: density of the 150 mm cube.
 $(CC_OUT)/density.json: $(CC_LAB)/specimen.toml $(BIN)/mw-specimen
 	@mkdir -p $(@D)
@@ -24,17 +35,17 @@ $(CC_OUT)/density.json: $(CC_LAB)/specimen.toml $(BIN)/mw-specimen
 
 # Step 3, dynamic route: v_p, v_s, nu_d (Eq. 10), E_d (Eq. 9).
 $(CC_OUT)/upv.json: $(CC_LAB)/upv.toml $(CC_OUT)/density.json $(BIN)/mw-upv
-	$(BIN)/mw-upv --from $(CC_OUT)/density.json --from $(CC_LAB)/upv.toml --out $@ > /dev/null
+	$(BIN)/mw-upv --from $(CC_OUT)/density.json $(CC_DENSITY_UNTAKEN) --from $(CC_LAB)/upv.toml --out $@ > /dev/null
 
 # Step 3: Table 1 from the E_d computed exactly from the paper's inputs...
 $(CC_OUT)/table1.csv $(CC_OUT)/table1.json &: $(CC_OUT)/upv.json $(CC_LAB)/static-test.toml $(BIN)/mw-estatic
-	$(BIN)/mw-estatic --from $(CC_OUT)/upv.json --from $(CC_LAB)/static-test.toml \
+	$(BIN)/mw-estatic --from $(CC_OUT)/upv.json $(CC_UPV_UNTAKEN_BY_ESTATIC) --from $(CC_LAB)/static-test.toml \
 	  --table $(CC_OUT)/table1.csv --out $(CC_OUT)/table1.json > /dev/null
 
 # ...and from the rounded E_d = 36.68 GPa the paper printed and used.
 $(CC_OUT)/table1-printed-Ed.csv $(CC_OUT)/table1-printed-Ed.json &: $(CC_OUT)/density.json \
     $(CC_LAB)/paper/printed-results.toml $(CC_LAB)/static-test.toml $(BIN)/mw-estatic
-	$(BIN)/mw-estatic --from $(CC_OUT)/density.json --from $(CC_LAB)/paper/printed-results.toml \
+	$(BIN)/mw-estatic --from $(CC_OUT)/density.json $(CC_DENSITY_UNTAKEN) --from $(CC_LAB)/paper/printed-results.toml \
 	  --from $(CC_LAB)/static-test.toml \
 	  --table $(CC_OUT)/table1-printed-Ed.csv --out $(CC_OUT)/table1-printed-Ed.json > /dev/null
 
@@ -112,7 +123,7 @@ $(CC_OUT)/raw-porosity-faces.json $(CC_OUT)/raw-porosity-faces.csv $(CC_OUT)/raw
 # transducer frequencies, the 2 us transducer delay of upv-truth.toml subtracted).
 $(CC_OUT)/raw-upv.json $(CC_OUT)/raw-upv-fig7.png &: $(CC_RAW)/upv-p.csv $(CC_RAW)/upv-s.csv \
     $(CC_RAW)/upv-truth.toml $(CC_OUT)/density.json $(BIN)/mw-upv
-	$(BIN)/mw-upv --from $(CC_OUT)/density.json --from $(CC_RAW)/upv-truth.toml \
+	$(BIN)/mw-upv --from $(CC_OUT)/density.json $(CC_DENSITY_UNTAKEN) --from $(CC_RAW)/upv-truth.toml \
 	  --p-wave $(CC_RAW)/upv-p.csv --s-wave $(CC_RAW)/upv-s.csv --lowpass-kHz 216 --s-lowpass-kHz 160 \
 	  --plot $(CC_OUT)/raw-upv-fig7.png --title 'Synthetic UPV records (lab-data/concrete-cube/raw)' \
 	  --out $(CC_OUT)/raw-upv.json > /dev/null
@@ -183,7 +194,7 @@ endif
 $(CC_OUT)/packing.h5 $(CC_OUT)/packing.json &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
     $(CC_OUT)/density.json $(BIN)/mw-pack
 	$(BIN)/mw-pack box --from $(CC_LAB)/porosity.toml --from $(CC_LAB)/dem-packing.toml --from $(CC_OUT)/density.json \
-	  $(CC_PACK_SIZE) --quiet --packing $(CC_OUT)/packing.h5 --out $(CC_OUT)/packing.json > /dev/null
+	  $(CC_DENSITY_UNTAKEN) $(CC_PACK_SIZE) --quiet --packing $(CC_OUT)/packing.h5 --out $(CC_OUT)/packing.json > /dev/null
 
 $(CC_OUT)/packing-vs-paper.txt $(CC_OUT)/packing-vs-paper.csv &: $(CC_OUT)/packing.json \
     $(CC_LAB)/paper/dem-model.toml $(BIN)/mw-compare
@@ -301,16 +312,16 @@ CC_FEM_INPUTS := $(CC_OUT)/upv.json $(CC_LAB)/sensors.toml $(CC_LAB)/porosity.to
   $(BIN)/mw-fem
 
 $(CC_OUT)/dem-%kHz.h5 $(CC_OUT)/dem-%kHz.json: $(CC_SCENE) $(CC_OUT)/packing.h5 $(CC_MATERIAL) $(BIN)/mw-dem
-	$(BIN)/mw-dem --from $(CC_MATERIAL) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $* $(CC_RECORD) \
+	$(BIN)/mw-dem --from $(CC_MATERIAL) $(CC_CALIBRATION_UNTAKEN) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $* $(CC_RECORD) \
 	  --quiet --signals $(CC_OUT)/dem-$*kHz.h5 --summary $(CC_OUT)/dem-$*kHz.json > /dev/null
 
 $(CC_OUT)/fem-%kHz.h5 $(CC_OUT)/fem-%kHz.json: $(CC_FEM_INPUTS)
-	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_mesh,$*) \
+	$(BIN)/mw-fem --from $(CC_OUT)/upv.json $(CC_UPV_UNTAKEN_BY_FEM) box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_mesh,$*) \
 	  --force-N $(CC_FORCE_N) --frequency-kHz $* $(CC_RECORD) \
 	  --quiet --signals $(CC_OUT)/fem-$*kHz.h5 --out $(CC_OUT)/fem-$*kHz.json > /dev/null
 
 $(CC_OUT)/fem-early-%kHz.h5 $(CC_OUT)/fem-early-%kHz.json: $(CC_FEM_INPUTS)
-	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_early_mesh,$*) \
+	$(BIN)/mw-fem --from $(CC_OUT)/upv.json $(CC_UPV_UNTAKEN_BY_FEM) box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_early_mesh,$*) \
 	  --force-N $(CC_FORCE_N) --frequency-kHz $* $(CC_EARLY_RECORD) \
 	  --quiet --signals $(CC_OUT)/fem-early-$*kHz.h5 --out $(CC_OUT)/fem-early-$*kHz.json > /dev/null
 
@@ -411,7 +422,7 @@ CC_SPEED_RUNS := linear-50ns-1t linear-50ns-2t linear-25ns-1t full-50ns-1t $(CC_
 cc_speed_word = $(word $2,$(subst -, ,$1))
 
 $(CC_OUT)/speed-%.h5 $(CC_OUT)/speed-%.json: $(CC_SCENE) $(CC_OUT)/packing.h5 $(CC_MATERIAL) $(BIN)/mw-dem
-	$(BIN)/mw-dem --from $(CC_MATERIAL) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $(CC_SPEED_F) \
+	$(BIN)/mw-dem --from $(CC_MATERIAL) $(CC_CALIBRATION_UNTAKEN) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $(CC_SPEED_F) \
 	  $(CC_SPEED_RECORD) --model $(call cc_speed_word,$*,1) --dt-ns $(patsubst %ns,%,$(call cc_speed_word,$*,2)) \
 	  --threads $(patsubst %t,%,$(call cc_speed_word,$*,3)) --quiet \
 	  --signals $(CC_OUT)/speed-$*.h5 --summary $(CC_OUT)/speed-$*.json > /dev/null

@@ -19,11 +19,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The packages CMakeLists.txt finds (DESIGN.md section 2) and the tools to build with.
+// The packages CMakeLists.txt finds (its find_package lines) and the tools to build with.
 const std::vector<std::string> kBuildPackages = {
     "build-essential", "cmake",        "pkg-config",   "libeigen3-dev", "libsqlite3-dev",      "libhdf5-dev",
     "libfftw3-dev",    "libcli11-dev", "libgtest-dev", "libpng-dev",    "libtomlplusplus-dev", "nlohmann-json3-dev",
-    "libtiff-dev"};
+    "libtiff-dev",     "libssl-dev"};
 
 class Shims {
 public:

@@ -166,7 +166,8 @@ TEST(FromFiles, LabDataTomlAndToolJsonFillOptions) {
              "[path]\nvalue = 150.0\nunit = \"mm\"\nsource = \"paper\"\ncite = \"s\"\n"
              "[t_p]\nvalue = 35.0\nunit = \"us\"\nsource = \"paper\"\ncite = \"s\"\n"
              "[t_s]\nvalue = 55.1\nunit = \"us\"\nsource = \"paper\"\ncite = \"s\"\n");
-  write_file(dir / "density.json", "{\"density_kg_m3\": 2129.56, \"unrelated_key\": 1}");
+  write_file(dir / "density.json",
+             "{\"density_kg_m3\": 2129.56, \"unrelated_key\": 1, \"foreign_keys\": [\"unrelated_key\"]}");
   const auto r = run_tool("mw-upv", {"--from", (dir / "density.json").string(), "--from", (dir / "upv.toml").string()});
   ASSERT_EQ(r.exit_status, 0) << r.err;
   EXPECT_NEAR(json::parse(r.out)["E_d_GPa"].get<double>(), 36.6714, 1e-4);
@@ -174,6 +175,56 @@ TEST(FromFiles, LabDataTomlAndToolJsonFillOptions) {
   const auto o = run_tool("mw-upv", {"--from", (dir / "density.json").string(), "--from", (dir / "upv.toml").string(),
                                      "--path-mm", "300"});
   EXPECT_NEAR(json::parse(o.out)["v_p_m_s"].get<double>(), 300e-3 / 35e-6, 1e-6);
+}
+
+// The --from contract (app/tool.hpp): an entry no option takes is an error, so
+// that a renamed key cannot leave an option silently at its default.
+const std::string kUpvToml = "[path]\nvalue = 150.0\nunit = \"mm\"\nsource = \"paper\"\ncite = \"s\"\n"
+                             "[t_p]\nvalue = 35.0\nunit = \"us\"\nsource = \"paper\"\ncite = \"s\"\n"
+                             "[t_s]\nvalue = 55.1\nunit = \"us\"\nsource = \"paper\"\ncite = \"s\"\n";
+
+TEST(FromFiles, ARenamedEntryIsAnErrorNamingEntryAndFile) {
+  TempDir dir;
+  write_file(dir / "upv.toml", kUpvToml);
+  write_file(dir / "density.json", "{\"density_kgm3\": 2129.56}");
+  TempDir out;
+  const auto r = run_tool("mw-upv", {"--from", (dir / "density.json").string(), "--from", (dir / "upv.toml").string(),
+                                     "--density-kg-m3", "2129.56", "--out", (out / "o.json").string()});
+  expect_rejected(r, (dir / "density.json").string() + ": entry 'density_kgm3' (--density-kgm3) fills no option of mw-upv",
+                  out);
+  // In a lab-data file too, and every stray entry is named at once.
+  write_file(dir / "extra.toml", kUpvToml + "[t_pp]\nvalue = 1.0\nunit = \"us\"\nsource = \"assumed\"\ncite = \"s\"\n"
+                                            "[t_ss]\nvalue = 1.0\nunit = \"us\"\nsource = \"assumed\"\ncite = \"s\"\n");
+  expect_rejected(run_tool("mw-upv", {"--from", (dir / "extra.toml").string(), "--density-kg-m3", "2129.56", "--out",
+                                      (out / "o.json").string()}),
+                  "extra.toml: entries 't_pp' (--t-pp-us), 't_ss' (--t-ss-us) fill no option of mw-upv", out);
+}
+
+TEST(FromFiles, ForeignEntriesAreLeftAndRecordedAsIgnored) {
+  TempDir dir;
+  const std::string db = (dir / "p.sqlite").string();
+  // The producer's word (foreign_keys in the file) and the reader's (--from-ignore).
+  write_file(dir / "upv.toml", "foreign_keys = [\"frequency\"]\n" + kUpvToml +
+                                   "[frequency]\nvalue = 54.0\nunit = \"kHz\"\nsource = \"paper\"\ncite = \"s\"\n");
+  write_file(dir / "density.json", "{\"density_kg_m3\": 2129.56, \"mass_g\": 7187.265}");
+  const auto r = run_tool("mw-upv", {"--from", (dir / "density.json").string(), "--from", (dir / "upv.toml").string(),
+                                     "--from-ignore", "mass_g", "--db", db});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NEAR(json::parse(r.out)["E_d_GPa"].get<double>(), 36.6714, 1e-4);  // what the files fill still arrives
+  const auto shown = run_tool("mw-prov", {"--db", db, "show", "1", "--json"});
+  ASSERT_EQ(shown.exit_status, 0) << shown.err;
+  const auto ignored = json::parse(shown.out)["params"]["from_ignored"];
+  EXPECT_EQ(ignored[(dir / "upv.toml").string()], json::array({"frequency"})) << ignored;
+  EXPECT_EQ(ignored[(dir / "density.json").string()], json::array({"mass_g"})) << ignored;
+  // A declaration that names no entry is stale (the entry was renamed): an error as well.
+  TempDir out;
+  expect_rejected(run_tool("mw-upv", {"--from", (dir / "density.json").string(), "--from", (dir / "upv.toml").string(),
+                                      "--from-ignore", "mass_kg", "--out", (out / "o.json").string()}),
+                  "--from-ignore names 'mass_kg', which is an entry of no --from file", out);
+  write_file(dir / "stale.json", "{\"density_kg_m3\": 2129.56, \"foreign_keys\": [\"mass_g\"]}");
+  expect_rejected(run_tool("mw-upv", {"--from", (dir / "stale.json").string(), "--from", (dir / "upv.toml").string(),
+                                      "--out", (out / "o.json").string()}),
+                  "stale.json: foreign_keys names 'mass_g', which is not an entry of the file", out);
 }
 
 TEST(FromFiles, ABadLabFileIsNamed) {

@@ -31,6 +31,33 @@ fs::path small_cube(const test::TempDir& dir) {
   return p;
 }
 
+// `mw-dem --from calibration.json` applies all five calibrated values. The file
+// is mw-calibrate's own, the five set apart from the scene's material (23.31 GPa,
+// 0.32, 24.4 MPa, 24.4 MPa, 18 deg) so that each can be seen to reach the model;
+// its other entries - results for the reader - are left by name, as the
+// pipeline leaves them (pipeline/concrete-cube/study.mk, CC_CALIBRATION_UNTAKEN).
+void expect_mw_dem_takes_the_five(const test::TempDir& dir, const fs::path& cube) {
+  auto c = nlohmann::ordered_json::parse(test::read_file(dir / "calibration.json"));
+  const std::vector<std::pair<std::string, double>> five = {
+      {"E_dem_GPa", 31.5}, {"nu_dem", 0.21}, {"T_MPa", 12.5}, {"C_MPa", 14.5}, {"friction_angle_deg", 27.0}};
+  for (const auto& [key, value] : five) {
+    ASSERT_TRUE(c.contains(key)) << key << " is not in mw-calibrate's JSON";
+    c[key] = value;
+  }
+  test::write_file(dir / "material.json", c.dump(2));
+  const auto r = run_tool("mw-dem", {"--from", (dir / "material.json").string(), "--from-ignore",
+                                     "E_glob_GPa,nu_glob,sigma_dem_MPa,E_st_target_GPa,nu_st_target,sigma_max_target_MPa,"
+                                     "E_error_pct,nu_error,sigma_error_pct,calibrated_by_trial,trial_count,trials_wall_s",
+                                     "info", kCompression, "--packing", cube.string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const auto m = json_of(r)["material"];
+  EXPECT_NEAR(m["E_dem_Pa"].get<double>() / 31.5e9, 1.0, 1e-12);
+  EXPECT_NEAR(m["nu_dem"].get<double>(), 0.21, 1e-12);
+  EXPECT_NEAR(m["T_Pa"].get<double>() / 12.5e6, 1.0, 1e-12);
+  EXPECT_NEAR(m["C_Pa"].get<double>() / 14.5e6, 1.0, 1e-12);
+  EXPECT_NEAR(m["friction_angle_rad"].get<double>(), 27.0 * std::numbers::pi / 180, 1e-12);
+}
+
 }  // namespace
 
 TEST(MwCalibrate, CubeRecoversTheParametersThatMadeItsTargets) {
@@ -81,6 +108,7 @@ TEST(MwCalibrate, CubeRecoversTheParametersThatMadeItsTargets) {
   EXPECT_EQ(dem_runs, trials);
   EXPECT_EQ(calibrate_runs, 1);
   EXPECT_EQ(io::read_csv(dir / "trials.csv").rows.size(), std::size_t(trials));
+  expect_mw_dem_takes_the_five(dir, cube);
 }
 
 TEST(MwCalibrate, RodGetsTheContactModulusOfItsYoungModulus) {

@@ -1,5 +1,5 @@
 // The rod paper's line of spheres: sphere counts and particle densities of
-// its Table 1 (rod paper, Section 3; /work/shared/reference/paper-values.md).
+// its Table 1 (rod paper, Section 3; lab-data/steel-rod/paper/table1.csv).
 #include <gtest/gtest.h>
 
 #include <cmath>

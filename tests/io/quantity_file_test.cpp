@@ -45,3 +45,26 @@ TEST(QuantityFile, APlaceholderCopiedByNewStudyReadsButMustCiteItsOrigin) {
   EXPECT_THROW(io::parse_quantity_text("[t_p]\nvalue = 35.0\nunit = \"us\"\nsource = \"placeholder\"\n", "upv.toml"),
                InputError);
 }
+
+TEST(QuantityFile, ForeignKeysAreADeclarationNotAnEntry) {
+  const auto toml = io::parse_quantity_document(
+      "foreign_keys = [\"hold\"]\n[hold]\nvalue = 20.0\nunit = \"s\"\nsource = \"paper\"\ncite = \"s\"\n"
+      "[gauge_length]\nvalue = 75.0\nunit = \"mm\"\nsource = \"paper\"\ncite = \"s\"\n",
+      "lab.toml");
+  ASSERT_EQ(toml.quantities.size(), 2u);
+  EXPECT_EQ(toml.foreign_keys, std::vector<std::string>{"hold"});
+  const auto json = io::parse_quantity_document(R"({"E_dem_GPa": 30, "E_glob_GPa": 31, "foreign_keys": ["E_glob_GPa"]})", "c.json");
+  ASSERT_EQ(json.quantities.size(), 2u);
+  EXPECT_EQ(json.foreign_keys, std::vector<std::string>{"E_glob_GPa"});
+  EXPECT_TRUE(io::parse_quantity_document(R"({"E_d_GPa": 36})", "o.json").foreign_keys.empty());
+  // The readers that take every entry (mw-compare, mw-table) do not see the declaration.
+  EXPECT_EQ(io::parse_quantity_text(R"({"a": 1, "foreign_keys": ["a"]})", "o.json").size(), 1u);
+}
+
+TEST(QuantityFile, AForeignKeysDeclarationMustNameEntries) {
+  EXPECT_THROW(io::parse_quantity_document("foreign_keys = \"hold\"\n", "a.toml"), InputError);
+  EXPECT_THROW(io::parse_quantity_document("foreign_keys = [1]\n", "a.toml"), InputError);
+  EXPECT_THROW(io::parse_quantity_document("foreign_keys = [\"hold\"]\n", "a.toml"), InputError);
+  EXPECT_THROW(io::parse_quantity_document(R"({"a": 1, "foreign_keys": "a"})", "a.json"), InputError);
+  EXPECT_THROW(io::parse_quantity_document(R"({"a": 1, "foreign_keys": ["b"]})", "a.json"), InputError);
+}

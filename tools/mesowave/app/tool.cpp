@@ -20,9 +20,10 @@ namespace {
 
 // CLI11 reads `--from` files through this: every quantity becomes the value of
 // the option it names, on the tool and on the subcommand the command line chose
-// (`mw-dem run --from calibration.json` fills run's --E-dem-GPa); entries no
-// option takes are ignored (a lab-data file serves several tools). CLI11 reads
-// the files after the command line, so the chosen subcommand is known.
+// (`mw-dem run --from calibration.json` fills run's --E-dem-GPa). CLI11 ignores
+// entries no option takes; check_from_contract() then makes them errors unless
+// the file declared them foreign. CLI11 reads the files after the command line,
+// so the chosen subcommand is known.
 class QuantityConfig : public CLI::Config {
 public:
   explicit QuantityConfig(const CLI::App* root) : root_(root) {}
@@ -53,6 +54,63 @@ public:
 private:
   const CLI::App* root_;
 };
+
+// The tool and the subcommands the command line chose, outermost first: the
+// options a --from entry may fill.
+std::vector<const CLI::App*> chosen_apps(const CLI::App& root) {
+  std::vector<const CLI::App*> apps = {&root};
+  while (!apps.back()->get_subcommands().empty()) apps.push_back(apps.back()->get_subcommands().front());
+  return apps;
+}
+
+// Whether an entry named `option` fills an option, by CLI11's own lookup for
+// config items (App::_parse_single_config: "--name", "-n", then "name").
+bool takes(const std::vector<const CLI::App*>& apps, const std::string& option) {
+  return std::any_of(apps.begin(), apps.end(), [&](const CLI::App* app) {
+    return app->get_option_no_throw("--" + option) ||
+           (option.size() == 1 && app->get_option_no_throw("-" + option)) || app->get_option_no_throw(option);
+  });
+}
+
+// The --from contract: every entry of a --from file fills an option of the tool
+// (or of the chosen subcommand), or its file declared it foreign, or the command
+// line's --from-ignore names it; anything else is a renamed or misplaced value
+// that would silently leave an option at its default. Returns the entries left
+// untaken, by file, for the run record.
+nlohmann::ordered_json check_from_contract(const CLI::App& root,
+                                           const std::vector<std::pair<std::string, io::QuantityFile>>& files,
+                                           const std::vector<std::string>& consumer_ignores) {
+  auto listed = [](const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
+  for (const auto& name : consumer_ignores)
+    if (std::none_of(files.begin(), files.end(), [&](const auto& file) {
+          return std::any_of(file.second.quantities.begin(), file.second.quantities.end(),
+                             [&](const io::Quantity& q) { return q.name == name; });
+        }))
+      throw InputError("--from-ignore names '" + name + "', which is an entry of no --from file");
+  const auto apps = chosen_apps(root);
+  std::string tool = root.get_name();
+  for (std::size_t i = 1; i < apps.size(); ++i) tool += " " + apps[i]->get_name();
+  nlohmann::ordered_json ignored = nlohmann::ordered_json::object();
+  for (const auto& [path, file] : files) {
+    std::vector<const io::Quantity*> stray;
+    for (const auto& q : file.quantities) {
+      if (takes(apps, q.option_name())) continue;
+      if (!listed(file.foreign_keys, q.name) && !listed(consumer_ignores, q.name))
+        stray.push_back(&q);
+      else
+        ignored[path].push_back(q.name);
+    }
+    if (stray.empty()) continue;
+    std::string names;
+    for (const auto* q : stray) names += (names.empty() ? "'" : ", '") + q->name + "' (--" + q->option_name() + ")";
+    throw InputError("--from " + path + ": " + (stray.size() == 1 ? "entry " : "entries ") + names + " fill" +
+                     (stray.size() == 1 ? "s" : "") + " no option of " + tool + " (a value meant for another reader: " +
+                     "list it in the file's " + io::kForeignKeys + " or in --from-ignore)");
+  }
+  return ignored;
+}
 
 // `--from` files, found before CLI11 parses so that a bad file is reported by
 // name (CLI11 hands the reader only a stream).
@@ -173,6 +231,12 @@ Tool::Tool(std::string name, std::string description) : name_(std::move(name)), 
                   "the command line beats them all.")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
       ->type_name("FILE");
+  app_.add_option("--from-ignore", from_ignore_,
+                  "Entries of the --from files this run may leave untaken (KEY[,KEY...], repeatable; recorded as "
+                  "from_ignored): every other entry must fill an option, or be declared in its file's foreign_keys")
+      ->delimiter(',')
+      ->configurable(false)
+      ->type_name("KEY");
   app_.add_option("--db", db_path_,
                   "Record this run in the provenance database PATH (SQLite; created if absent)")
       ->envname("MESOWAVE_DB")
@@ -187,9 +251,13 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
   record.started_at = utc_timestamp();
   record.argv.assign(argv, argv + argc);
 
+  nlohmann::ordered_json from_ignored;
   try {
-    for (const auto& file : from_files_in(argc, argv)) io::read_quantity_file(file);  // named errors first
+    std::vector<std::pair<std::string, io::QuantityFile>> from_files;
+    for (const auto& file : from_files_in(argc, argv))  // named errors first
+      from_files.emplace_back(file, io::read_quantity_document(file));
     app_.parse(from_options_first(argc, argv));
+    from_ignored = check_from_contract(app_, from_files, from_ignore_);
   } catch (const CLI::Success& e) {
     return app_.exit(e);
   } catch (const CLI::ParseError& e) {
@@ -202,6 +270,7 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
 
   std::optional<prov::Database> db;
   Run run;
+  if (!from_ignored.empty()) run.param("from_ignored", from_ignored);
   try {
     if (records_runs_ && !db_path_.empty()) db.emplace(prov::Database::open(db_path_));
     for (const auto& file : app_.get_option("--from")->as<std::vector<std::string>>())

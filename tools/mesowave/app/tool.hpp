@@ -4,7 +4,13 @@
 //  - `--help`, `--version`;
 //  - `--from FILE` (repeatable): lab-data TOML or an earlier tool's JSON whose
 //    entries fill options not given on the command line (t_p in "us" fills
-//    --t-p-us; the last file named wins, the command line beats them all);
+//    --t-p-us; the last file named wins, the command line beats them all).
+//    Every entry must fill an option of the tool or of its chosen subcommand:
+//    one that does not is an error naming the entry and the file (exit 1),
+//    unless the file declares it foreign (`foreign_keys`, io/quantity_file.hpp:
+//    the producer's word) or `--from-ignore KEY` names it (the reader's word);
+//    the entries so left untaken are recorded in the run's parameters as
+//    "from_ignored": {"FILE": ["entry", ...]};
 //  - `--db PATH` or MESOWAVE_DB: the provenance database that records the run;
 //  - exit status 0 on success, 1 on bad input (one line: `error: <what>`),
 //    2 on internal failure;
@@ -71,6 +77,7 @@ private:
   std::string name_;
   CLI::App app_;
   std::string db_path_;
+  std::vector<std::string> from_ignore_;
   bool records_runs_ = true;
 };
 

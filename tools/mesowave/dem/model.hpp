@@ -1,8 +1,8 @@
 #pragma once
 // What the simulation loop, the actuators and the sensors see of a DEM model,
 // whichever one runs: the full cohesive-frictional law, the linearised bonded
-// network or the axial chain (DESIGN.md section 6: model only what the scene
-// needs). Spheres are addressed in the model's own numbering (Morton order);
+// network or the axial chain (docs/models.md, "Three models": model only what
+// the scene needs). Spheres are addressed in the model's own numbering (Morton order);
 // `packing_index` maps back.
 //
 // Time levels (Yade's NewtonIntegrator, leapfrog): step n computes forces

@@ -1,5 +1,5 @@
 #pragma once
-// Model only what the scene needs (DESIGN.md section 6). The rules, in order:
+// Model only what the scene needs (docs/models.md, "Three models"). The rules, in order:
 //  1. `--model` (or the scene's [model] choice) forces a model;
 //  2. chain: every centre on one line and every load along it (and, with
 //     damping, the line along x, y or z, where Yade's per-component damping is

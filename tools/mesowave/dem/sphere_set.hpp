@@ -2,7 +2,7 @@
 // The spheres of a packing as the engine stores them: renumbered along a
 // Morton (Z-order) space-filling curve, so that spheres close in space are
 // close in memory and a contact's two ends mostly hit the same cache lines
-// (the largest single speed-up of the step, DESIGN.md section 6).
+// (the largest single speed-up of the memory-bound step, docs/benchmarks.md).
 #include <array>
 #include <cstdint>
 #include <span>

@@ -234,13 +234,6 @@ double double_attribute(hid_t object, const std::string& name) {
   return value;
 }
 
-std::int64_t int_attribute(hid_t object, const std::string& name) {
-  Handle attr = open_attribute(object, name);
-  std::int64_t value = 0;
-  check_status(H5Aread(attr.id(), H5T_NATIVE_INT64, &value), "read attribute " + name);
-  return value;
-}
-
 std::vector<double> doubles_attribute(hid_t object, const std::string& name) {
   Handle attr = open_attribute(object, name);
   Handle space(H5Aget_space(attr.id()));

@@ -56,7 +56,6 @@ void set_attribute(hid_t object, const std::string& name, const std::vector<doub
 bool has_attribute(hid_t object, const std::string& name);
 std::string string_attribute(hid_t object, const std::string& name);
 double double_attribute(hid_t object, const std::string& name);
-std::int64_t int_attribute(hid_t object, const std::string& name);
 std::vector<double> doubles_attribute(hid_t object, const std::string& name);
 
 }  // namespace mesowave::io::h5

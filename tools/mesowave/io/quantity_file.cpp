@@ -24,7 +24,17 @@ std::string scalar_text(const toml::node& node, const std::string& where) {
   throw InputError(where + ": value must be a number, a string or a boolean");
 }
 
-std::vector<Quantity> parse_toml(const std::string& text, const std::string& origin) {
+// Every name of a foreign_keys array must be an entry of the file: a renamed
+// entry must not leave a declaration that silently covers nothing.
+std::vector<std::string> foreign_names(const std::vector<std::string>& names, const std::set<std::string>& entries,
+                                       const std::string& origin) {
+  for (const auto& name : names)
+    if (!entries.count(name))
+      throw InputError(origin + ": " + kForeignKeys + " names '" + name + "', which is not an entry of the file");
+  return names;
+}
+
+QuantityFile parse_toml(const std::string& text, const std::string& origin) {
   toml::table root;
   try {
     root = toml::parse(text, origin);
@@ -34,7 +44,22 @@ std::vector<Quantity> parse_toml(const std::string& text, const std::string& ori
   }
   // toml++ keeps tables sorted by key; people read files top to bottom.
   std::vector<std::pair<std::string_view, const toml::node*>> entries;
-  for (const auto& [key, node] : root) entries.emplace_back(key.str(), &node);
+  std::vector<std::string> declared;
+  std::set<std::string> names;
+  for (const auto& [key, node] : root) {
+    if (key.str() != kForeignKeys) {
+      entries.emplace_back(key.str(), &node);
+      names.emplace(key.str());
+      continue;
+    }
+    const toml::array* list = node.as_array();
+    if (!list) throw InputError(origin + ": " + kForeignKeys + " must be an array of entry names");
+    for (const auto& element : *list) {
+      const auto name = element.value<std::string>();
+      if (!name) throw InputError(origin + ": " + kForeignKeys + " must hold only strings (entry names)");
+      declared.push_back(*name);
+    }
+  }
   std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
     return a.second->source().begin.line < b.second->source().begin.line;
   });
@@ -59,10 +84,10 @@ std::vector<Quantity> parse_toml(const std::string& text, const std::string& ori
       throw InputError(where + " is '" + q.source + "' but has no cite saying where it comes from");
     quantities.push_back(std::move(q));
   }
-  return quantities;
+  return {std::move(quantities), foreign_names(declared, names, origin)};
 }
 
-std::vector<Quantity> parse_json(const std::string& text, const std::string& origin) {
+QuantityFile parse_json(const std::string& text, const std::string& origin) {
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(text);
@@ -71,7 +96,18 @@ std::vector<Quantity> parse_json(const std::string& text, const std::string& ori
   }
   if (!root.is_object()) throw InputError(origin + ": expected a JSON object");
   std::vector<Quantity> quantities;
+  std::vector<std::string> declared;
+  std::set<std::string> names;
   for (const auto& [key, value] : root.items()) {
+    if (key == kForeignKeys) {
+      if (!value.is_array()) throw InputError(origin + ": " + kForeignKeys + " must be an array of key names");
+      for (const auto& element : value) {
+        if (!element.is_string()) throw InputError(origin + ": " + kForeignKeys + " must hold only strings (key names)");
+        declared.push_back(element.get<std::string>());
+      }
+      continue;
+    }
+    names.insert(key);
     Quantity q;
     q.name = key;
     q.source = "output";
@@ -82,7 +118,7 @@ std::vector<Quantity> parse_json(const std::string& text, const std::string& ori
     else continue;  // nested data is not an option value
     quantities.push_back(std::move(q));
   }
-  return quantities;
+  return {std::move(quantities), foreign_names(declared, names, origin)};
 }
 
 }  // namespace
@@ -94,18 +130,26 @@ std::string Quantity::option_name() const {
   return option;
 }
 
-std::vector<Quantity> parse_quantity_text(const std::string& text, const std::string& origin) {
+QuantityFile parse_quantity_document(const std::string& text, const std::string& origin) {
   const auto first = text.find_first_not_of(" \t\r\n");
   if (first != std::string::npos && text[first] == '{') return parse_json(text, origin);
   return parse_toml(text, origin);
 }
 
-std::vector<Quantity> read_quantity_file(const std::filesystem::path& path) {
+QuantityFile read_quantity_document(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read " + path.string());
   std::ostringstream content;
   content << in.rdbuf();
-  return parse_quantity_text(content.str(), path.string());
+  return parse_quantity_document(content.str(), path.string());
+}
+
+std::vector<Quantity> parse_quantity_text(const std::string& text, const std::string& origin) {
+  return parse_quantity_document(text, origin).quantities;
+}
+
+std::vector<Quantity> read_quantity_file(const std::filesystem::path& path) {
+  return read_quantity_document(path).quantities;
 }
 
 }  // namespace mesowave::io

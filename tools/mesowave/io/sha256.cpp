@@ -1,8 +1,9 @@
 #include "mesowave/io/sha256.hpp"
 
-#include <bit>
-#include <cstring>
+#include <openssl/evp.h>
+
 #include <fstream>
+#include <stdexcept>
 #include <vector>
 
 #include "mesowave/core/error.hpp"
@@ -10,96 +11,37 @@
 namespace mesowave::io {
 namespace {
 
-// FIPS 180-4, Section 4.2.2: first 32 bits of the fractional parts of the cube
-// roots of the first 64 primes.
-constexpr std::array<std::uint32_t, 64> kRound = {
-    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
-    0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
-    0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
-    0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967,
-    0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
-    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070,
-    0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
-    0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
-
-// Section 5.3.3: first 32 bits of the fractional parts of the square roots of
-// the first 8 primes.
-constexpr std::array<std::uint32_t, 8> kInitial = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
-                                                   0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
-
-constexpr std::uint32_t big_endian_word(const std::uint8_t* p) {
-  return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
-         std::uint32_t(p[3]);
+// OpenSSL fails only when it cannot allocate or its library is broken: not bad input.
+void require(int ok, const char* call) {
+  if (ok != 1) throw std::runtime_error(std::string("OpenSSL ") + call + " failed for SHA-256");
 }
 
 }  // namespace
 
-Sha256::Sha256() : state_(kInitial) {}
+void Sha256::FreeContext::operator()(evp_md_ctx_st* context) const { EVP_MD_CTX_free(context); }
 
-// Section 6.2.2: the message schedule and the 64 rounds.
-void Sha256::compress(const std::uint8_t* block) {
-  std::array<std::uint32_t, 64> w;
-  for (int t = 0; t < 16; ++t) w[t] = big_endian_word(block + 4 * t);
-  for (int t = 16; t < 64; ++t) {
-    const std::uint32_t s0 = std::rotr(w[t - 15], 7) ^ std::rotr(w[t - 15], 18) ^ (w[t - 15] >> 3);
-    const std::uint32_t s1 = std::rotr(w[t - 2], 17) ^ std::rotr(w[t - 2], 19) ^ (w[t - 2] >> 10);
-    w[t] = w[t - 16] + s0 + w[t - 7] + s1;
-  }
-  auto [a, b, c, d, e, f, g, h] = state_;
-  for (int t = 0; t < 64; ++t) {
-    const std::uint32_t sigma1 = std::rotr(e, 6) ^ std::rotr(e, 11) ^ std::rotr(e, 25);
-    const std::uint32_t choose = (e & f) ^ (~e & g);
-    const std::uint32_t t1 = h + sigma1 + choose + kRound[t] + w[t];
-    const std::uint32_t sigma0 = std::rotr(a, 2) ^ std::rotr(a, 13) ^ std::rotr(a, 22);
-    const std::uint32_t majority = (a & b) ^ (a & c) ^ (b & c);
-    const std::uint32_t t2 = sigma0 + majority;
-    h = g;
-    g = f;
-    f = e;
-    e = d + t1;
-    d = c;
-    c = b;
-    b = a;
-    a = t1 + t2;
-  }
-  const std::array<std::uint32_t, 8> add = {a, b, c, d, e, f, g, h};
-  for (int i = 0; i < 8; ++i) state_[i] += add[i];
+Sha256::Sha256() : context_(EVP_MD_CTX_new()) {
+  if (!context_) throw std::runtime_error("OpenSSL EVP_MD_CTX_new failed for SHA-256");
+  require(EVP_DigestInit_ex(context_.get(), EVP_sha256(), nullptr), "EVP_DigestInit_ex");
 }
 
+Sha256::~Sha256() = default;
+Sha256::Sha256(Sha256&&) noexcept = default;
+Sha256& Sha256::operator=(Sha256&&) noexcept = default;
+
 void Sha256::update(std::span<const std::byte> data) {
-  auto bytes = reinterpret_cast<const std::uint8_t*>(data.data());
-  std::size_t n = data.size();
-  total_bytes_ += n;
-  if (buffered_ > 0) {
-    const std::size_t take = std::min(n, 64 - buffered_);
-    std::memcpy(buffer_.data() + buffered_, bytes, take);
-    buffered_ += take;
-    bytes += take;
-    n -= take;
-    if (buffered_ < 64) return;
-    compress(buffer_.data());
-    buffered_ = 0;
-  }
-  for (; n >= 64; n -= 64, bytes += 64) compress(bytes);
-  std::memcpy(buffer_.data(), bytes, n);
-  buffered_ = n;
+  require(EVP_DigestUpdate(context_.get(), data.data(), data.size()), "EVP_DigestUpdate");
 }
 
 void Sha256::update(std::string_view text) {
   update(std::as_bytes(std::span(text.data(), text.size())));
 }
 
-// Section 5.1.1: pad with 0x80, zeros, and the message length in bits.
 std::array<std::uint8_t, 32> Sha256::digest() {
-  const std::uint64_t bit_length = total_bytes_ * 8;
-  std::array<std::uint8_t, 72> padding{};
-  padding[0] = 0x80;
-  const std::size_t pad = (buffered_ < 56) ? 56 - buffered_ : 120 - buffered_;
-  for (int i = 0; i < 8; ++i) padding[pad + i] = std::uint8_t(bit_length >> (56 - 8 * i));
-  update(std::as_bytes(std::span(padding.data(), pad + 8)));
   std::array<std::uint8_t, 32> out;
-  for (int i = 0; i < 8; ++i)
-    for (int j = 0; j < 4; ++j) out[4 * i + j] = std::uint8_t(state_[i] >> (24 - 8 * j));
+  unsigned int length = 0;
+  require(EVP_DigestFinal_ex(context_.get(), out.data(), &length), "EVP_DigestFinal_ex");
+  if (length != out.size()) throw std::runtime_error("OpenSSL SHA-256 digest is not 32 bytes");
   return out;
 }
 

@@ -1,12 +1,20 @@
 #pragma once
 // SHA-256 (FIPS 180-4), for content hashes of every file a run reads or writes.
+// The hash itself is OpenSSL's (libcrypto, the EVP digest interface): a maintained,
+// validated implementation, not one of ours; this header only fits it to the
+// library's types (byte spans, strings, files) and to InputError.
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
+
+// OpenSSL's context type, declared as <openssl/types.h> does, so that users of
+// this header do not include OpenSSL.
+struct evp_md_ctx_st;
 
 namespace mesowave::io {
 
@@ -14,6 +22,9 @@ namespace mesowave::io {
 class Sha256 {
 public:
   Sha256();
+  ~Sha256();
+  Sha256(Sha256&&) noexcept;
+  Sha256& operator=(Sha256&&) noexcept;
   void update(std::span<const std::byte> data);
   void update(std::string_view text);
   /// Finishes the hash; the object must not be updated afterwards.
@@ -21,11 +32,10 @@ public:
   std::string hex_digest();
 
 private:
-  void compress(const std::uint8_t* block);
-  std::array<std::uint32_t, 8> state_;
-  std::array<std::uint8_t, 64> buffer_{};
-  std::size_t buffered_ = 0;
-  std::uint64_t total_bytes_ = 0;
+  struct FreeContext {
+    void operator()(evp_md_ctx_st* context) const;
+  };
+  std::unique_ptr<evp_md_ctx_st, FreeContext> context_;
 };
 
 /// Lower-case hex SHA-256 of a string.

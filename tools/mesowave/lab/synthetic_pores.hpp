@@ -1,6 +1,6 @@
 #pragma once
-// Synthetic porosity images with a stated ground truth (DESIGN.md section 4:
-// `synthetic` lab data), so mw-porosity can be tested on recovering it.
+// Synthetic porosity images with a stated ground truth (`source = "synthetic"`
+// lab data, docs/lab-raw-data.md), so mw-porosity can be tested on recovering it.
 //
 // Micro-CT stack: a block of mortar (cement paste with brighter sand grains)
 // with air voids, voxelised slice by slice, surrounded by a margin of air as a

@@ -3,8 +3,11 @@
 #include <sstream>
 
 #include "mesowave/core/format.hpp"
+#include "mesowave/io/quantity_file.hpp"
 
 namespace mesowave::lab {
+
+using io::kForeignKeys;
 
 namespace {
 std::string toml_string(const std::string& text) {
@@ -33,6 +36,13 @@ std::string truth_toml(const std::string& title, const std::string& command, con
   s << "# " << title << "\n"
     << "# source: synthetic - made by mesowave's generator from the values below, not measured.\n"
     << "# Regenerate with:\n#   " << command << "\n";
+  // A truth file records what the generator put in, for tests and people: a
+  // tool reading it with --from takes the set-up values it has options for
+  // and leaves the rest (the answers above all) without an error.
+  s << "\n# Every entry is foreign: --from takes those an option names, the rest is for comparison.\n"
+    << kForeignKeys << " = [";
+  for (std::size_t i = 0; i < entries.size(); ++i) s << (i ? ", " : "") << toml_string(entries[i].name);
+  s << "]\n";
   for (const auto& e : entries) {
     s << "\n[" << e.name << "]\n"
       << "value = " << toml_float(e.value) << "\n"

@@ -16,8 +16,10 @@ struct TruthEntry {
   std::string source = "synthetic";  ///< synthetic (made by the generator) or paper/assumed for setup values
 };
 
-/// TOML text: a comment block (title, the command that made the data), then
-/// one table per entry with value, unit, source and cite.
+/// TOML text: a comment block (title, the command that made the data), every
+/// entry declared foreign (`foreign_keys`: a tool reading the file with --from
+/// takes what its options name and leaves the answers), then one table per
+/// entry with value, unit, source and cite.
 std::string truth_toml(const std::string& title, const std::string& command, const std::vector<TruthEntry>& entries);
 
 /// The first line of a synthetic record (CSV: a comment the readers skip), so

@@ -34,7 +34,6 @@ public:
   std::string text(int column) const;
   std::int64_t integer(int column) const;
   double real(int column) const;
-  bool is_null(int column) const;
 
 private:
   sqlite3* db_;

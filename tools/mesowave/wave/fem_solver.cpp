@@ -106,14 +106,15 @@ std::pair<std::size_t, std::size_t> my_range(std::size_t n) {
   return {n * std::size_t(t) / std::size_t(nt), n * std::size_t(t + 1) / std::size_t(nt)};
 }
 
-}  // namespace
-
+// f = K u (f overwritten), using the element colouring: the power iteration's product.
 void apply_stiffness(const FemModel& model, const std::vector<double>& u, std::vector<double>& f) {
   f.assign(model.dof_count(), 0.0);
   const Assembler A(model);
 #pragma omp parallel num_threads(region_threads(model.element_count(), 4000))
   A.add(u.data(), f.data());
 }
+
+}  // namespace
 
 double global_max_omega(const FemModel& model, int iterations) {
   const std::size_t n = model.dof_count();

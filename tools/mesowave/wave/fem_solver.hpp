@@ -70,9 +70,6 @@ struct ExplicitResult {
   int threads = 1;
 };
 
-/// f = K u (f overwritten), using the element colouring: for tests and the power iteration.
-void apply_stiffness(const FemModel& model, const std::vector<double>& u, std::vector<double>& f);
-
 /// Largest frequency of the assembled mesh (power iteration on M^-1 K; free dofs).
 /// Below the element bound behind FemModel::stable_dt(); for reporting.
 double global_max_omega(const FemModel& model, int iterations = 300);
