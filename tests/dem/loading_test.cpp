@@ -31,7 +31,7 @@ TEST(Loading, RodPulledAtConstantSpeedCarriesTheSeriesStiffness) {
   s.actuators = {hold, pull};
   SensorSpec force;
   force.name = "F";
-  force.kind = SensorSpec::Kind::force;
+  force.kind = "force";
   force.actuator = "pull";
   s.sensors.push_back(force);
   s.sensors.push_back(motion_sensor("u", end_target(true), MotionQuantity::displacement, "x"));

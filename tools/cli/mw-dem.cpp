@@ -17,6 +17,7 @@
 #include "mesowave/core/format.hpp"
 #include "mesowave/core/units.hpp"
 #include "mesowave/dem/packing_file.hpp"
+#include "mesowave/dem/plugins.hpp"
 #include "mesowave/dem/run_report.hpp"
 #include "mesowave/dem/scene.hpp"
 #include "mesowave/dem/simulation.hpp"
@@ -118,7 +119,7 @@ int main(int argc, char** argv) {
     if (velocity_mm_s != 0) {
       require_positive("--velocity-mm-s", velocity_mm_s, "mm/s");
       for (auto& a : scene.actuators)
-        if ((a.kind == "velocity" || a.kind == "wall") && a.amplitude != 0) a.amplitude = velocity_mm_s * units::mm;
+        if (dem::actuator_kinds().get(a.kind, "actuator " + a.name).moving && a.amplitude != 0) a.amplitude = velocity_mm_s * units::mm;
     }
     if (unbreakable)
       scene.material.tensile_strength_Pa = scene.material.cohesion_Pa = std::numeric_limits<double>::infinity();

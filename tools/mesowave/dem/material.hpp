@@ -5,6 +5,8 @@
 //   F_n,min = T R^2,   F_s,max = C R^2,   R = min(R_A, R_B)              (Eq. 6)
 #include <algorithm>
 #include <limits>
+#include <map>
+#include <string>
 
 namespace mesowave::dem {
 
@@ -22,6 +24,9 @@ struct CohesiveFrictionalMaterial {
   bool breakable() const { return tensile_strength_Pa < std::numeric_limits<double>::infinity() ||
                                   cohesion_Pa < std::numeric_limits<double>::infinity(); }
 };
+
+/// A law's own parameters beyond these (material_parameters.hpp key -> SI value).
+using LawParameters = std::map<std::string, double>;
 
 /// Eq. (3): the harmonic mean of the two spheres' stiffnesses E R_A and E R_B.
 inline double normal_stiffness(const CohesiveFrictionalMaterial& m, double r_a, double r_b) {
