@@ -61,7 +61,7 @@ const Packing& cube() {
 
 CohesiveFrictionalMaterial concrete() {
   CohesiveFrictionalMaterial m;
-  m.young_Pa = 23.31e9;
+  m.E_dem_Pa = 23.31e9;
   m.stiffness_ratio = 0.32;
   m.friction_angle_rad = 18.0 * 3.14159265358979 / 180;
   m.tensile_strength_Pa = m.cohesion_Pa = 24.4e6;

@@ -77,7 +77,7 @@ void check_spring(const Vec3& e, bool twist) {
   const MomentParameters p{1.5, 0.7, 0.0, 0.0};
   auto sys = pair(m, p);
   const double k = twist ? twisting_stiffness(m, p, kR, kR) : rolling_stiffness(m, p, kR, kR);
-  EXPECT_DOUBLE_EQ(k, (twist ? 0.7 : 1.5) * m.stiffness_ratio * m.young_Pa * kR * kR * kR);  // alpha K_s R^2, K_s = nu E R
+  EXPECT_DOUBLE_EQ(k, (twist ? 0.7 : 1.5) * m.stiffness_ratio * m.E_dem_Pa * kR * kR * kR);  // alpha K_s R^2, K_s = nu E R
   const double inertia = sys->spheres().inertia_kg_m2[0];
   const double omega = std::sqrt(2 * k / inertia);
   const double dt = 2 * std::numbers::pi / omega / 500;

@@ -22,6 +22,7 @@
 #include "mesowave/dem/calibration.hpp"
 #include "mesowave/dem/calibration_report.hpp"
 #include "mesowave/dem/material.hpp"
+#include "mesowave/dem/material_parameters.hpp"
 #include "mesowave/dem/packing_file.hpp"
 #include "mesowave/dem/scene.hpp"
 #include "mesowave/dem/vec3.hpp"
@@ -69,8 +70,9 @@ std::string trial_name(int k) { return "trial-" + std::string(k < 10 ? "0" : "")
 dem::CalibrationTrial run_compression_trial(const TrialRunner& runner, dem::CalibrationTrial t,
                                             const dem::CalibrationTargets& targets, double friction_deg) {
   const auto& p = t.parameters;
-  std::vector<std::string> options = {"--E-dem-GPa", format_exact(p.E_dem_Pa / 1e9), "--nu-dem", format_exact(p.nu_dem),
-                                      "--friction-angle-deg", format_exact(friction_deg)};
+  const auto option = [](const char* key) { return dem::material_parameter(key).option; };
+  std::vector<std::string> options = {option("E_dem_GPa"), format_exact(p.E_dem_Pa / 1e9), option("nu_dem"),
+                                      format_exact(p.nu_dem), option("friction_angle_deg"), format_exact(friction_deg)};
   if (t.kind == dem::CalibrationTrial::Kind::elastic) {
     // The elastic response alone, read where the lab reads it: between 10 % and
     // 1/3 of the target strength (EN 12390-13), the run ending just above; the
@@ -137,8 +139,8 @@ int main(int argc, char** argv) {
       "random-packing estimate (1 - a)/(4 + a)). Failure trials (the full law to failure) fix T: the peak stress does "
       "not depend on the stiffness scale and grows about proportionally with T (secant); E_dem and nu_dem are "
       "corrected from the same runs, whose modulus is the secant between 10 % and 1/3 of their peak.\n"
-      "rod: the contact modulus E_c (K_n = E_c R) so that the tension test of the chain gives the rod's E "
-      "(E_DEM = K_n d / (pi R^2) is proportional to E_c: one rescaled trial and a check); the particle density is "
+      "rod: the contact modulus E_dem (K_n = E_dem R) so that the tension test of the chain gives the rod's E "
+      "(E_DEM = K_n d / (pi R^2) is proportional to E_dem: one rescaled trial and a check); the particle density is "
       "the packing's (mw-pack line chose it from the rod's mass).\n\n"
       "  mw-calibrate cube --scene pipeline/concrete-cube/scenes/cube-compression.toml --from "
       "lab-data/concrete-cube/static-test.toml --start-E-dem-GPa 10 --start-nu-dem 0.1 --start-T-MPa 10 --work-dir "
@@ -184,7 +186,7 @@ int main(int argc, char** argv) {
   auto* rod = cli.add_subcommand("rod", "Tension test of a chain: the contact modulus for the rod's E");
   common(rod);
   rod->add_option("--E-GPa", E_rod_GPa, "Target: the rod's Young modulus [GPa] (the rod paper: 208.72)")->required();
-  rod->add_option("--start-E-dem-GPa", start_E, "First contact modulus E_c [GPa] (default: the scene's)");
+  rod->add_option("--start-E-dem-GPa", start_E, "First contact modulus E_dem [GPa] (default: the scene's)");
   rod->add_option("--tolerance-E-pct", tol_rod_pct, "Tolerance on E_DEM [%]")->capture_default_str();
 
   return tool.run(argc, argv, [&](app::Run& run) {
@@ -201,22 +203,22 @@ int main(int argc, char** argv) {
     if (rod->parsed()) {
       if (scene.test.kind != dem::UniaxialTestSpec::Kind::tension) throw InputError("mw-calibrate rod needs a tension test scene");
       const double target = require_positive("--E-GPa", E_rod_GPa, "GPa");
-      double E_c = require_positive("--start-E-dem-GPa", start_E.value_or(m.young_Pa / 1e9), "GPa");
+      double E_dem = require_positive("--start-E-dem-GPa", start_E.value_or(m.E_dem_Pa / 1e9), "GPa");
       const dem::Packing packing = dem::read_packing_file(scene.packing_file);
       ordered_json trials = ordered_json::array();
       double E_start_result = 0, E_result = 0;
       for (int k = 1;; ++k) {
         if (k > max_trials) throw InputError("the rod calibration did not reach " + format_number(target) + " GPa within " + std::to_string(max_trials) + " trials");
         const std::string name = trial_name(k);
-        const ordered_json s = runner.run(name, {"--E-dem-GPa", format_exact(E_c)});
+        const ordered_json s = runner.run(name, {"--E-dem-GPa", format_exact(E_dem)});
         E_result = s.at("test").at("E_fit_GPa").get<double>();
         if (k == 1) E_start_result = E_result;
-        trials.push_back({{"trial", k}, {"E_dem_GPa", E_c}, {"E_DEM_GPa", E_result}, {"wall_s", s.at("wall_s")}});
+        trials.push_back({{"trial", k}, {"E_dem_GPa", E_dem}, {"E_DEM_GPa", E_result}, {"wall_s", s.at("wall_s")}});
         run.input(work_dir / (name + ".json"));
-        std::cerr << "mw-calibrate rod: trial " << k << ": E_c " << format_number(E_c) << " GPa -> E_DEM "
+        std::cerr << "mw-calibrate rod: trial " << k << ": E_dem " << format_number(E_dem) << " GPa -> E_DEM "
                   << format_number(E_result) << " GPa\n";
         if (std::abs(E_result / target - 1) <= tol_rod_pct / 100) break;
-        E_c *= target / E_result;  // E_DEM = E_c R d / (pi R^2): proportional to E_c
+        E_dem *= target / E_result;  // E_DEM = E_dem R d / (pi R^2): proportional to E_dem
       }
       const double R = packing.radii_m.front();
       auto centre = [&](std::size_t i) {
@@ -225,22 +227,22 @@ int main(int argc, char** argv) {
       };
       const double d = dem::norm(centre(1) - centre(0));
       dem::CohesiveFrictionalMaterial calibrated = m;
-      calibrated.young_Pa = E_c * 1e9;
+      calibrated.E_dem_Pa = E_dem * 1e9;
       ordered_json j;
       j["spheres"] = packing.size();
       j["sphere_radius_mm"] = R * 1e3;
       j["spacing_mm"] = d * 1e3;
       j["spacing_R"] = d / R;
       j["rho_p_kg_m3"] = packing.particle_density_kg_m3;
-      j["E_dem_GPa"] = E_c;
-      j["Kn_N_m"] = dem::normal_stiffness(calibrated, R, R);  // Eq. (3): E_c R for equal spheres
+      j["E_dem_GPa"] = E_dem;
+      j["Kn_N_m"] = dem::normal_stiffness(calibrated, R, R);  // Eq. (3): E_dem R for equal spheres
       j["E_DEM_GPa"] = E_result;
       j["E_target_GPa"] = target;
       j["E_dem_start_GPa"] = trials.front().at("E_dem_GPa");
       j["E_DEM_at_start_GPa"] = E_start_result;
       j["trials"] = trials;
       run.metric("E_DEM", E_result, "GPa");
-      run.metric("E_dem", E_c, "GPa");
+      run.metric("E_dem", E_dem, "GPa");
       run.emit_json(j, out);
       return;
     }
@@ -253,7 +255,7 @@ int main(int argc, char** argv) {
     if (scene.test.kind != dem::UniaxialTestSpec::Kind::compression) throw InputError("mw-calibrate cube needs a compression test scene");
     const double T0 = start_T ? *start_T * units::MPa : m.tensile_strength_Pa;
     if (!std::isfinite(T0)) throw InputError("the scene's bonds never break (no T_MPa): give --start-T-MPa");
-    const dem::DemParameters start{start_E ? *start_E * units::GPa : m.young_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
+    const dem::DemParameters start{start_E ? *start_E * units::GPa : m.E_dem_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
     const double mu_deg = friction_deg.value_or(m.friction_angle_rad * 180 / 3.141592653589793);
     dem::CompressionCalibration calibration(targets, tolerances, start, max_trials);
 

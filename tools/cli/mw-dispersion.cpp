@@ -4,7 +4,7 @@
 //   mw-dispersion theory --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1
 //       --f-max-kHz 500 --csv pc.csv --plot pc.png
 //   mw-dispersion lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 6044.37
-//       --contact-modulus-GPa 660 --spacing-R 1.03 --csv chain103.csv
+//       --E-dem-GPa 660 --spacing-R 1.03 --csv chain103.csv
 //   mw-dispersion measure --run fem50.h5 ... --method echo --distance-mm 2000 --E-GPa 208.72 ...
 //   mw-dispersion bar-echo --record shpb.csv --column incident_bar_signal --path-mm 2036 ...
 //
@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
       "  the c0 for which the Pochhammer-Chree-propagated pulse's edges meet the echo's.\n\n"
       "  mw-dispersion theory --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1 --csv pc.csv --plot "
       "pc.png\n"
-      "  mw-dispersion lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 6044.37 --contact-modulus-GPa 660 "
+      "  mw-dispersion lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 6044.37 --E-dem-GPa 660 "
       "--spacing-R 1.03 --csv chain.csv\n"
       "  mw-dispersion theory ... --overlay 1.03R=chain.csv --plot figure9.png\n"
       "  mw-dispersion measure --run fem50.h5 --run fem100.h5 --method echo --distance-mm 2000 --E-GPa 208.72 --nu 0.3 "
@@ -89,16 +89,16 @@ int main(int argc, char** argv) {
 
   // lattice
   auto* lattice = cli.add_subcommand("lattice", "Exact dispersion of the DEM chain (1D mass-spring lattice)");
-  std::optional<double> mass_kg, stiffness, spacing_mm, sphere_mm, rho_p, Ec_GPa, spacing_R;
+  std::optional<double> mass_kg, stiffness, spacing_mm, sphere_mm, rho_p, E_dem_GPa, spacing_R;
   double l_f_max_kHz = 500, l_df_kHz = 1;
   std::string label = "chain";
   fs::path l_csv, l_out;
   lattice->add_option("--mass-kg", mass_kg, "Particle mass m [kg]");
   lattice->add_option("--stiffness-N-m", stiffness, "Bond stiffness K [N/m]");
   lattice->add_option("--spacing-mm", spacing_mm, "Distance d between particle centres [mm]");
-  lattice->add_option("--sphere-radius-mm", sphere_mm, "Sphere radius R [mm] (m = rho_p 4/3 pi R^3, K = E_c R)");
+  lattice->add_option("--sphere-radius-mm", sphere_mm, "Sphere radius R [mm] (m = rho_p 4/3 pi R^3, K = E_dem R)");
   lattice->add_option("--particle-density-kg-m3", rho_p, "Particle density rho_p [kg/m3] (rod Table 1)");
-  lattice->add_option("--contact-modulus-GPa", Ec_GPa, "Contact modulus E_c [GPa] (the K_n column of rod Table 1)");
+  lattice->add_option("--E-dem-GPa", E_dem_GPa, "Contact modulus E_dem [GPa] (the K_n column of rod Table 1)");
   lattice->add_option("--spacing-R", spacing_R, "Spacing d as a multiple of the sphere radius (1.03 for 1.03R)");
   lattice->add_option("--f-max-kHz", l_f_max_kHz, "Highest frequency [kHz]")->capture_default_str();
   lattice->add_option("--df-kHz", l_df_kHz, "Frequency step [kHz]")->capture_default_str();
@@ -389,21 +389,21 @@ int main(int argc, char** argv) {
     } else {
       wave::MassSpringChain chain;
       const bool direct = mass_kg || stiffness;
-      const bool dem = sphere_mm || rho_p || Ec_GPa || spacing_R;
+      const bool dem = sphere_mm || rho_p || E_dem_GPa || spacing_R;
       if (direct && dem) throw InputError("give either --mass-kg/--stiffness-N-m or the sphere description, not both");
       if (direct) {
         if (!mass_kg || !stiffness || !spacing_mm)
           throw InputError("--mass-kg, --stiffness-N-m and --spacing-mm are needed together");
         chain = {*mass_kg, *stiffness, *spacing_mm * units::mm};
       } else {
-        if (!sphere_mm || !rho_p || !Ec_GPa)
-          throw InputError("need --sphere-radius-mm, --particle-density-kg-m3 and --contact-modulus-GPa "
+        if (!sphere_mm || !rho_p || !E_dem_GPa)
+          throw InputError("need --sphere-radius-mm, --particle-density-kg-m3 and --E-dem-GPa "
                            "(or --mass-kg, --stiffness-N-m, --spacing-mm)");
         if (spacing_mm.has_value() == spacing_R.has_value())
           throw InputError("give exactly one of --spacing-mm and --spacing-R");
         const double R = require_positive("--sphere-radius-mm", *sphere_mm, "mm") * units::mm;
         const double d = spacing_mm ? *spacing_mm * units::mm : require_positive("--spacing-R", *spacing_R) * R;
-        chain = wave::dem_chain(R, *rho_p, require_positive("--contact-modulus-GPa", *Ec_GPa, "GPa") * units::GPa, d);
+        chain = wave::dem_chain(R, *rho_p, require_positive("--E-dem-GPa", *E_dem_GPa, "GPa") * units::GPa, d);
       }
       wave::validate(chain);
       const auto grid = wave::frequency_grid(l_df_kHz * units::kHz, l_f_max_kHz * units::kHz, l_df_kHz * units::kHz);

@@ -95,7 +95,7 @@ template <class Result, class Extension>
 inline void CohesiveFrictionalContact::run(SphereSystem& system, double dt, bool evaluate_energy, Extension& extension) {
   constexpr bool extended = !std::is_same_v<Extension, NoExtension>;
   const CohesiveFrictionalMaterial& material = system.material();
-  const double two_young = 2.0 * material.young_Pa, ratio = material.stiffness_ratio;
+  const double two_E_dem = 2.0 * material.E_dem_Pa, ratio = material.stiffness_ratio;
   const double tan_mu = std::tan(material.friction_angle_rad);
   const double T = material.tensile_strength_Pa, C = material.cohesion_Pa;
   // Reference strengths for the peak ratio: T R^2 and C R^2, or K_n R when a strength is not given.
@@ -122,7 +122,7 @@ inline void CohesiveFrictionalContact::run(SphereSystem& system, double dt, bool
     const double inv = 1.0 / (sum * dist);  // one division: 1/dist, K_n and the factor a
     const Vec3 n = (sum * inv) * d;
     const double u = sum - dist;
-    const double kn = two_young * ri * rj * dist * inv, ks = ratio * kn;
+    const double kn = two_E_dem * ri * rj * dist * inv, ks = ratio * kn;
 
     // ScGeom::precompute + rotate: carry the shear force with the contact frame.
     const Vec3 n_prev{nx[b], ny[b], nz[b]};

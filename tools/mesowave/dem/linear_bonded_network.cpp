@@ -26,7 +26,7 @@ void LinearBondedNetwork::contact_forces(SphereSystem& system, double /*dt*/, bo
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
   const CohesiveFrictionalMaterial& material = system.material();
-  const double two_young = 2.0 * material.young_Pa, ratio = material.stiffness_ratio;
+  const double two_E_dem = 2.0 * material.E_dem_Pa, ratio = material.stiffness_ratio;
   const double T = material.tensile_strength_Pa, C = material.cohesion_Pa;
   const bool finite_T = std::isfinite(T), finite_C = std::isfinite(C);
   const double* radius = system.spheres().radius_m.data();
@@ -41,7 +41,7 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
     const double ri = radius[i], rj = radius[j], sum = ri + rj;
     const double u0 = overlap0[b], dist0 = sum - u0;
     const double inv = 1.0 / (sum * dist0);  // one division for K_n and a0
-    const double kn = two_young * ri * rj * dist0 * inv, ks = ratio * kn;
+    const double kn = two_E_dem * ri * rj * dist0 * inv, ks = ratio * kn;
     const double a0 = sum * sum * inv;
     const Vec3 n{nx[b], ny[b], nz[b]};
     const Vec3 dd = d[j] - d[i];

@@ -11,7 +11,7 @@
 namespace mesowave::dem {
 
 struct CohesiveFrictionalMaterial {
-  double young_Pa = 0;            ///< E_dem, the contact modulus of Eq. (3)
+  double E_dem_Pa = 0;            ///< E_dem, the contact modulus of Eq. (3)
   double stiffness_ratio = 0;     ///< nu_dem = K_s / K_n (Yade's CohFrictMat.poisson)
   double friction_angle_rad = 0;  ///< mu of Eqs. (4)-(5)
   /// T and C of Eq. (6); infinity = a bond that never breaks (no strength given).
@@ -30,7 +30,7 @@ using LawParameters = std::map<std::string, double>;
 
 /// Eq. (3): the harmonic mean of the two spheres' stiffnesses E R_A and E R_B.
 inline double normal_stiffness(const CohesiveFrictionalMaterial& m, double r_a, double r_b) {
-  return m.young_Pa * 2.0 * r_a * r_b / (r_a + r_b);
+  return m.E_dem_Pa * 2.0 * r_a * r_b / (r_a + r_b);
 }
 inline double shear_stiffness(const CohesiveFrictionalMaterial& m, double r_a, double r_b) {
   return m.stiffness_ratio * normal_stiffness(m, r_a, r_b);

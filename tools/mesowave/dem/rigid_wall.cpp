@@ -12,7 +12,7 @@
 
 namespace mesowave::dem {
 
-RigidWall::RigidWall(std::string name, const Model& model, const Box& box, Face face, double young_Pa,
+RigidWall::RigidWall(std::string name, const Model& model, const Box& box, Face face, double E_dem_Pa,
                      const VelocityRamp& motion, double reach_m)
     : name_(std::move(name)), face_(face), motion_(motion) {
   const int a = face.axis;
@@ -30,8 +30,8 @@ RigidWall::RigidWall(std::string name, const Model& model, const Box& box, Face 
     candidates_.push_back(k);
     radius_.push_back(r);
     centre0_.push_back(c);
-    stiffness_.push_back(young_Pa * r);
-    max_stiffness_per_mass_ = std::max(max_stiffness_per_mass_, young_Pa * r / model.mass(k));
+    stiffness_.push_back(E_dem_Pa * r);
+    max_stiffness_per_mass_ = std::max(max_stiffness_per_mass_, E_dem_Pa * r / model.mass(k));
   }
   if (candidates_.empty()) throw InputError("wall " + name_ + ": no sphere near face " + face.name());
 }
@@ -95,7 +95,7 @@ void register_rigid_wall(Plugins& p) {
       .parse = read_wall,
       .make = [](const ActuatorSite& site) -> std::unique_ptr<Actuator> {
         const ActuatorSpec& a = site.spec;
-        return std::make_unique<RigidWall>(a.name, site.model, site.box, a.target.patch.face, site.material.young_Pa,
+        return std::make_unique<RigidWall>(a.name, site.model, site.box, a.target.patch.face, site.material.E_dem_Pa,
                                            VelocityRamp{a.amplitude, a.delay_s, a.ramp_s}, a.amplitude * site.duration_s);
       },
       .peak_sphere_force = [](const ActuatorSpec& a, std::size_t, double stiffest_kn, double duration_s) {

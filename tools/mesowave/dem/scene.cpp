@@ -14,6 +14,7 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/core/units.hpp"
+#include "mesowave/dem/material_parameters.hpp"
 #include "mesowave/dem/plugins.hpp"
 #include "mesowave/dem/scene_keys.hpp"
 
@@ -210,25 +211,19 @@ Vec3 direction_vector(const std::string& name, const SphereTarget& target, const
 }
 
 const std::vector<std::string>& material_keys() {
-  static const std::vector<std::string> keys = {"E_dem_GPa", "nu_dem", "friction_angle_deg", "T_MPa",
-                                                "C_MPa",     "density_kg_m3", "damping", "bond_factor"};
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k;
+    for (const auto& p : material_parameters()) k.push_back(p.key);
+    return k;
+  }();
   return keys;
 }
 
 void set_material_value(Scene& s, const std::string& key, double value, const std::string& name) {
-  CohesiveFrictionalMaterial& m = s.material;
-  if (key == "E_dem_GPa") m.young_Pa = require_positive(name, value, "GPa") * units::GPa;
-  else if (key == "nu_dem") m.stiffness_ratio = require_in_range(name, value, 0.0, 10.0);
-  else if (key == "friction_angle_deg")
-    m.friction_angle_rad = require_in_range(name, value, 0.0, 89.9, "deg") * std::numbers::pi / 180.0;
-  else if (key == "T_MPa") m.tensile_strength_Pa = require_positive(name, value, "MPa") * units::MPa;
-  else if (key == "C_MPa") m.cohesion_Pa = require_positive(name, value, "MPa") * units::MPa;
-  else if (key == "density_kg_m3") {
-    m.density_kg_m3 = require_positive(name, value, "kg/m3");
-    s.density_given = true;
-  } else if (key == "damping") m.damping = require_in_range(name, value, 0.0, 0.99);
-  else if (key == "bond_factor") m.bond_factor = require_positive(name, value);
-  else throw InputError(name + ": unknown material key \"" + key + "\"");
+  const MaterialParameter& p = material_parameter(key, name);
+  const double checked = p.positive ? require_positive(name, value, p.unit) : require_in_range(name, value, p.min, p.max, p.unit);
+  s.material.*p.field = p.to_si(checked);
+  if (p.field == &CohesiveFrictionalMaterial::density_kg_m3) s.density_given = true;
 }
 
 Scene parse_scene(const std::string& text, const std::string& origin) {

@@ -146,7 +146,7 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
   }
   double r_min = model_->radius(0);
   for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
-  dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.young_Pa, m.damping);
+  dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.E_dem_Pa, m.damping);
   // Walls add a contact spring to the spheres they touch: by Weyl's inequality
   // lambda_max(K + D) <= lambda_max(K) + max D, D the largest k_w / m.
   double boundary = 0;
