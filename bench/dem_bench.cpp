@@ -62,7 +62,7 @@ const Packing& cube() {
 
 CohesiveFrictionalMaterial concrete() {
   CohesiveFrictionalMaterial m;
-  m.young_Pa = 23.31e9;
+  m.E_dem_Pa = 23.31e9;
   m.stiffness_ratio = 0.32;
   m.friction_angle_rad = 18.0 * 3.14159265358979 / 180;
   m.tensile_strength_Pa = m.cohesion_Pa = 24.4e6;
@@ -78,7 +78,7 @@ void step_benchmark(benchmark::State& state) {
   const auto m = concrete();
   SphereSet s = make_sphere_set(cube(), m.density_kg_m3);
   BondNetwork b = make_bond_network(s, m.bond_factor);
-  Law model(std::move(s), std::move(b), m);
+  SphereSystem model(std::move(s), std::move(b), m, std::make_unique<Law>());
   for (std::size_t k = 0; k < 50; ++k) model.add_external_force(k, {1e-3, 0, 0});
   for (int i = 0; i < 20; ++i) model.step(5e-8, false);  // warm the caches
   for (auto _ : state) model.step(5e-8, false);

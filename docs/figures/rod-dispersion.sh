@@ -1,19 +1,19 @@
 #!/usr/bin/env bash
 # Regenerates docs/figures/rod-dispersion-{full,zoom}.png: Pochhammer-Chree L(0,1)/L(0,2)
 # for the rod paper's steel (Section 4.1) and the exact lattice dispersion of the four DEM
-# chains of rod Table 1 (particle density rho_p, K_n column read as the contact modulus E_c).
+# chains of rod Table 1 (particle density rho_p, K_n column read as the contact modulus E_dem).
 #   docs/figures/rod-dispersion.sh [build/bin]
 set -euo pipefail
 bin=${1:-build/bin}
 out=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-chain() {  # label rho_p E_c[GPa] d/R
-  "$bin/mw-dispersion" lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 "$2" --contact-modulus-GPa "$3" \
+chain() {  # label rho_p E_dem[GPa] d/R
+  "$bin/mw-dispersion" lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 "$2" --E-dem-GPa "$3" \
     --spacing-R "$4" --label "$1" --f-max-kHz 500 --csv "$tmp/$1.csv" > /dev/null
 }
 chain 0.95R 5577.17 230 0.95
-chain 0.95R-EDEM 5577.17 686 0.95   # E_c that reproduces Table 1's E_DEM = 207.30 GPa (E_c = pi E_DEM / 0.95)
+chain 0.95R-EDEM 5577.17 686 0.95   # E_dem that reproduces Table 1's E_DEM = 207.30 GPa (E_dem = pi E_DEM / 0.95)
 chain 1.03R 6044.37 660 1.03
 chain 1.05R 6173.66 640 1.05
 chain 1.15R 6751.31 600 1.15

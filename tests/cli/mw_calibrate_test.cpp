@@ -123,10 +123,10 @@ TEST(MwCalibrate, RodGetsTheContactModulusOfItsYoungModulus) {
   ASSERT_EQ(r.exit_status, 0) << r.err;
   const auto j = json_of(r);
   EXPECT_NEAR(j["E_DEM_GPa"].get<double>() / 208.72, 1.0, 0.005);
-  // E_DEM = E_c R d / (pi R^2) (K_n = E_c R): E_c = E pi R / d.
+  // E_DEM = E_dem R d / (pi R^2) (K_n = E_dem R): E_dem = E pi R / d.
   EXPECT_NEAR(j["E_dem_GPa"].get<double>() / (208.72 * std::numbers::pi / 1.05), 1.0, 0.005);
   EXPECT_NEAR(j["Kn_N_m"].get<double>(), j["E_dem_GPa"].get<double>() * 1e9 * 5.1e-3, 1e-3);
-  // The first trial ran the scene's E_c (the rod paper's 660 GPa for 1.03 R): its E_DEM is 660 d / (pi R).
+  // The first trial ran the scene's E_dem (the rod paper's 660 GPa for 1.03 R): its E_DEM is 660 d / (pi R).
   EXPECT_NEAR(j["E_DEM_at_start_GPa"].get<double>() / (660.0 * 1.05 / std::numbers::pi), 1.0, 1e-4);
 }
 

@@ -59,10 +59,10 @@ TEST(MwDispersion, TheoryWritesTheTableAndSummary) {
 TEST(MwDispersion, LatticeFromTheRodPaperTable1) {
   TempDir dir;
   const auto r = run_tool("mw-dispersion", {"lattice", "--sphere-radius-mm", "5.1", "--particle-density-kg-m3",
-                                            "6044.37", "--contact-modulus-GPa", "660", "--spacing-R", "1.03",
+                                            "6044.37", "--E-dem-GPa", "660", "--spacing-R", "1.03",
                                             "--df-kHz", "10", "--csv", (dir / "l.csv").string()});
   ASSERT_EQ(r.exit_status, 0) << r.err;
-  // Long-wave speed d sqrt(K/m) = 1.03 R sqrt(E_c R / (rho_p 4/3 pi R^3)) = 5258.8 m/s
+  // Long-wave speed d sqrt(K/m) = 1.03 R sqrt(E_dem R / (rho_p 4/3 pi R^3)) = 5258.8 m/s
   const double R = 5.1e-3;
   const double c = 1.03 * R * std::sqrt(660e9 * R / (6044.37 * 4.0 / 3.0 * std::numbers::pi * R * R * R));
   const auto pos = r.out.find("\"long_wave_speed_m_s\": ");

@@ -136,13 +136,13 @@ TEST(CompressionCalibration, GivesUpAfterItsTrialBudget) {
 
 namespace {
 
-// A chain of equal spheres in tension (rod paper, Section 3): K_n = E_c R
-// (Eq. 3) and E_DEM = K_n d / (pi R^2) = E_c d / (pi R), linear in E_c.
-double chain_modulus(double E_c_GPa, double spacing_R) { return E_c_GPa * spacing_R / std::numbers::pi; }
+// A chain of equal spheres in tension (rod paper, Section 3): K_n = E_dem R
+// (Eq. 3) and E_DEM = K_n d / (pi R^2) = E_dem d / (pi R), linear in E_dem.
+double chain_modulus(double E_dem_GPa, double spacing_R) { return E_dem_GPa * spacing_R / std::numbers::pi; }
 
 std::vector<RodTrial> calibrate_rod(RodCalibration& c, const std::function<double(double)>& response) {
   while (auto t = c.next()) {
-    t->E_DEM_GPa = response(t->E_c_GPa);
+    t->E_DEM_GPa = response(t->E_dem_GPa);
     c.record(*t);
   }
   return c.trials();
@@ -153,13 +153,13 @@ std::vector<RodTrial> calibrate_rod(RodCalibration& c, const std::function<doubl
 TEST(RodCalibration, TheSecantThroughTheOriginConvergesInOneStep) {
   const double E = 208.72, spacing_R = 1.03;
   RodCalibration c(E, 0.005, 100.0, 12);
-  const auto trials = calibrate_rod(c, [&](double E_c) { return chain_modulus(E_c, spacing_R); });
+  const auto trials = calibrate_rod(c, [&](double E_dem) { return chain_modulus(E_dem, spacing_R); });
   ASSERT_TRUE(c.converged());
   ASSERT_EQ(trials.size(), 2u);  // the start, then the rescaled trial that meets the target
-  EXPECT_EQ(trials[0].E_c_GPa, 100.0);
+  EXPECT_EQ(trials[0].E_dem_GPa, 100.0);
   EXPECT_NEAR(trials[0].E_DEM_GPa, 100.0 * 1.03 / std::numbers::pi, 1e-12);
-  // The closed form E_c = E pi R / d:
-  EXPECT_NEAR(trials[1].E_c_GPa, E * std::numbers::pi / spacing_R, 1e-9);
+  // The closed form E_dem = E pi R / d:
+  EXPECT_NEAR(trials[1].E_dem_GPa, E * std::numbers::pi / spacing_R, 1e-9);
   EXPECT_NEAR(c.result().E_DEM_GPa, E, 1e-9);
   EXPECT_EQ(c.result().number, 2);
   EXPECT_FALSE(c.next());  // done stays done
@@ -168,20 +168,20 @@ TEST(RodCalibration, TheSecantThroughTheOriginConvergesInOneStep) {
 TEST(RodCalibration, AStartThatMeetsTheTargetIsOneTrial) {
   const double start = 208.72 * std::numbers::pi / 0.95;
   RodCalibration c(208.72, 0.005, start, 12);
-  EXPECT_EQ(calibrate_rod(c, [](double E_c) { return chain_modulus(E_c, 0.95); }).size(), 1u);
-  EXPECT_EQ(c.result().E_c_GPa, start);
+  EXPECT_EQ(calibrate_rod(c, [](double E_dem) { return chain_modulus(E_dem, 0.95); }).size(), 1u);
+  EXPECT_EQ(c.result().E_dem_GPa, start);
 }
 
 TEST(RodCalibration, AnAffineResponseTakesAFewRescalings) {
-  // E_DEM = 2 E_c + 30 (not through the origin): the rescaling converges
+  // E_DEM = 2 E_dem + 30 (not through the origin): the rescaling converges
   // geometrically (the error shrinks by 30 / E each step), within tolerance.
   RodCalibration c(200.0, 1e-4, 10.0, 12);
-  const auto trials = calibrate_rod(c, [](double E_c) { return 2 * E_c + 30; });
+  const auto trials = calibrate_rod(c, [](double E_dem) { return 2 * E_dem + 30; });
   ASSERT_TRUE(c.converged());
   EXPECT_GT(trials.size(), 2u);
   EXPECT_LE(trials.size(), 9u);  // 7: 10, 40, 72.7, 82.9, 84.7, 84.95, 84.99 GPa
-  // The fixed point of 2 E_c + 30 = 200; E_DEM within 1e-4 puts E_c within 1e-4 / (170 / 200).
-  EXPECT_NEAR(c.result().E_c_GPa, 85.0, 85.0 * 1.18e-4);
+  // The fixed point of 2 E_dem + 30 = 200; E_DEM within 1e-4 puts E_dem within 1e-4 / (170 / 200).
+  EXPECT_NEAR(c.result().E_dem_GPa, 85.0, 85.0 * 1.18e-4);
   for (std::size_t k = 1; k < trials.size(); ++k)
     EXPECT_LT(std::abs(trials[k].E_DEM_GPa - 200.0), std::abs(trials[k - 1].E_DEM_GPa - 200.0));
 }
@@ -193,7 +193,7 @@ TEST(RodCalibration, RefusesWhatItCannotReach) {
   EXPECT_THROW(RodCalibration(208, 0.005, 100, 0), InputError);
   // A chain that saturates below the target: max_trials trials, then an error.
   RodCalibration c(208.72, 0.005, 100, 4);
-  EXPECT_THROW(calibrate_rod(c, [](double E_c) { return std::min(E_c, 150.0); }), InputError);
+  EXPECT_THROW(calibrate_rod(c, [](double E_dem) { return std::min(E_dem, 150.0); }), InputError);
   EXPECT_EQ(c.trials().size(), 4u);
   // A trial without a modulus, and the protocol.
   RodCalibration d(208.72, 0.005, 100, 4);

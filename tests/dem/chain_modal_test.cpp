@@ -25,7 +25,7 @@ constexpr double kFrequency = 100e3, kCycles = 5, kAmplitude = 1.0;
 
 Scene rod_scene(double dt, double duration) {
   CohesiveFrictionalMaterial m;
-  m.young_Pa = kContactModulus;
+  m.E_dem_Pa = kContactModulus;
   m.stiffness_ratio = 0.3;
   m.density_kg_m3 = kDensity;
   m.bond_factor = 1.0;  // nearest neighbours only (the rod paper's d <= L_int < 2d)

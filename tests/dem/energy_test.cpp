@@ -14,8 +14,7 @@
 #include <cmath>
 #include <memory>
 
-#include "mesowave/dem/cohesive_frictional_contact.hpp"
-#include "mesowave/dem/linear_bonded_network.hpp"
+#include "mesowave/dem/plugins.hpp"
 #include "test_packings.hpp"
 
 using namespace mesowave::dem;
@@ -26,8 +25,8 @@ namespace {
 std::unique_ptr<Model> build(const std::string& kind, const Packing& p, const CohesiveFrictionalMaterial& m) {
   SphereSet s = make_sphere_set(p, m.density_kg_m3);
   BondNetwork b = make_bond_network(s, m.bond_factor);
-  if (kind == "full") return std::make_unique<CohesiveFrictionalContact>(std::move(s), std::move(b), m);
-  return std::make_unique<LinearBondedNetwork>(std::move(s), std::move(b), m);
+  if (kind == "full") return make_model("cohesive_frictional", "full", std::move(s), std::move(b), m);
+  return make_model("cohesive_frictional", "linear", std::move(s), std::move(b), m);
 }
 
 // Relative drift of the stored energy (kinetic + elastic) over `steps` steps

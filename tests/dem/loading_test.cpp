@@ -13,7 +13,7 @@ TEST(Loading, RodPulledAtConstantSpeedCarriesTheSeriesStiffness) {
   const std::size_t n = 20;
   const double R = 5.1e-3, rho = 7850, E = 200e9, v = 1e-3;  // 1 mm/s: far below the wave speed
   CohesiveFrictionalMaterial m;
-  m.young_Pa = E;
+  m.E_dem_Pa = E;
   m.density_kg_m3 = rho;
   m.bond_factor = 1.0;
   m.damping = 0.2;  // settle the start-up transient
@@ -31,7 +31,7 @@ TEST(Loading, RodPulledAtConstantSpeedCarriesTheSeriesStiffness) {
   s.actuators = {hold, pull};
   SensorSpec force;
   force.name = "F";
-  force.kind = SensorSpec::Kind::force;
+  force.kind = "force";
   force.actuator = "pull";
   s.sensors.push_back(force);
   s.sensors.push_back(motion_sensor("u", end_target(true), MotionQuantity::displacement, "x"));

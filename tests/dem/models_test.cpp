@@ -83,7 +83,7 @@ TEST(Models, ChainLinearAndFullGiveTheSameRodSignal) {
   // reproduce the chain.
   const double R = 5.1e-3, rho = 6044.37;
   CohesiveFrictionalMaterial m;
-  m.young_Pa = 6.6e11;
+  m.E_dem_Pa = 6.6e11;
   m.stiffness_ratio = 0.3;
   m.density_kg_m3 = rho;
   m.bond_factor = 1.0;

@@ -64,7 +64,7 @@ TEST(SceneFiles, CubeSceneMatchesTheLabDataPositions) {
   // The paper's Section 4.1-4.2 values.
   EXPECT_DOUBLE_EQ(s.dt_s, 5e-8);
   EXPECT_DOUBLE_EQ(s.duration_s, 1.5e-3);
-  EXPECT_DOUBLE_EQ(s.material.young_Pa, 23.31e9);
+  EXPECT_DOUBLE_EQ(s.material.E_dem_Pa, 23.31e9);
   EXPECT_DOUBLE_EQ(s.material.stiffness_ratio, 0.32);
   EXPECT_DOUBLE_EQ(s.material.damping, 0.01);
   EXPECT_DOUBLE_EQ(s.material.bond_factor, 1.1);
@@ -92,7 +92,7 @@ TEST(SceneFiles, MirrorPairsSitOnOppositeFacesSymmetricAboutTheActuatorAxis) {
 
 TEST(SceneFiles, RodSceneParses) {
   const Scene s = read_scene_file(kSource / "pipeline/steel-rod/scenes/rod-wave.toml");
-  EXPECT_DOUBLE_EQ(s.material.young_Pa, 660e9);
+  EXPECT_DOUBLE_EQ(s.material.E_dem_Pa, 660e9);
   EXPECT_DOUBLE_EQ(s.material.bond_factor, 1.0);
   EXPECT_EQ(s.actuators.at(0).direction, "line");
   EXPECT_EQ(s.sensors.at(0).component, "line");

@@ -44,7 +44,7 @@ TEST(TimeStep, ChainEigenvalueMatchesTheClosedForm) {
   const std::size_t n = 60;
   const double r = 5.1e-3, rho = 7850;
   CohesiveFrictionalMaterial m;
-  m.young_Pa = 200e9;
+  m.E_dem_Pa = 200e9;
   m.density_kg_m3 = rho;
   m.bond_factor = 1.0;
   Scene s = bare_scene(m, 1e-8, 1e-7);
@@ -122,7 +122,7 @@ TEST(HardCases, SizeRatioTenRunsStably) {
   EXPECT_GT(rep.energy.external_work_J, 0.0);
   EXPECT_LT(std::abs(rep.energy.residual()), 1e-2 * rep.energy.external_work_J);
   // The small spheres set the limit: far below the big sphere's own R sqrt(rho/E).
-  EXPECT_LT(limit, R * std::sqrt(m.density_kg_m3 / m.young_Pa));
+  EXPECT_LT(limit, R * std::sqrt(m.density_kg_m3 / m.E_dem_Pa));
 }
 
 TEST(HardCases, RodAtPointNineFiveRBondsSecondNeighbours) {
@@ -130,7 +130,7 @@ TEST(HardCases, RodAtPointNineFiveRBondsSecondNeighbours) {
   const std::size_t n = 207;
   const double R = 5.1e-3, d = 0.95 * R, rho = 5577.17;
   CohesiveFrictionalMaterial m;
-  m.young_Pa = 2.3e11;
+  m.E_dem_Pa = 2.3e11;
   m.density_kg_m3 = rho;
   m.bond_factor = 1.1;  // the concrete paper's C_f: 2.2 R reaches them
   Scene s = bare_scene(m, 5e-8, 5e-5);

@@ -71,7 +71,7 @@ inline Packing fcc_packing(int cells, double a, double r_min, double r_max, doub
 /// Concrete-like material (the paper's calibrated values).
 inline CohesiveFrictionalMaterial concrete_material(bool breakable = true) {
   CohesiveFrictionalMaterial m;
-  m.young_Pa = 23.31e9;
+  m.E_dem_Pa = 23.31e9;
   m.stiffness_ratio = 0.32;
   m.friction_angle_rad = 18.0 * 3.14159265358979323846 / 180.0;
   if (breakable) {

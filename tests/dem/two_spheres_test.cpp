@@ -9,9 +9,7 @@
 #include <memory>
 #include <numbers>
 
-#include "mesowave/dem/axial_chain.hpp"
-#include "mesowave/dem/cohesive_frictional_contact.hpp"
-#include "mesowave/dem/linear_bonded_network.hpp"
+#include "mesowave/dem/plugins.hpp"
 #include "test_packings.hpp"
 
 using namespace mesowave::dem;
@@ -40,9 +38,9 @@ Pair make_pair(Vec3 dir, double distance = 1.6e-3) {
 std::unique_ptr<Model> build(const std::string& kind, const Pair& pair, const CohesiveFrictionalMaterial& m) {
   SphereSet s = make_sphere_set(pair.packing, m.density_kg_m3);
   BondNetwork b = make_bond_network(s, m.bond_factor);
-  if (kind == "full") return std::make_unique<CohesiveFrictionalContact>(std::move(s), std::move(b), m);
-  if (kind == "linear") return std::make_unique<LinearBondedNetwork>(std::move(s), std::move(b), m);
-  return std::make_unique<AxialChain>(std::move(s), b, m, pair.n);
+  if (kind == "full") return make_model("cohesive_frictional", "full", std::move(s), std::move(b), m);
+  if (kind == "linear") return make_model("cohesive_frictional", "linear", std::move(s), std::move(b), m);
+  return make_model("cohesive_frictional", "chain", std::move(s), std::move(b), m, {}, pair.n);
 }
 
 // Mean period from upward zero crossings (linear interpolation) of x(t).

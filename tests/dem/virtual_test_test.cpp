@@ -129,8 +129,8 @@ TEST(VirtualCompression, WallsAddTheirStiffnessToTheCriticalStep) {
 }
 
 TEST(VirtualTension, ChainModulusIsKnTimesSpacingOverPiR2) {
-  // Rod paper, Section 3: E_DEM = K_n d / (pi R^2), K_n = E_c R.
-  const double R = 5e-3, d = 1.05 * R, E_c = 640e9, rho = 6000;
+  // Rod paper, Section 3: E_DEM = K_n d / (pi R^2), K_n = E_dem R.
+  const double R = 5e-3, d = 1.05 * R, E_dem = 640e9, rho = 6000;
   const std::string text = R"(
 [packing]
 file = "unused.h5"
@@ -176,7 +176,7 @@ inertial_number_bound = 0.0
   EXPECT_EQ(sim.choice().model, "chain");
   const RunReport report = sim.run();
   ASSERT_TRUE(report.test);
-  const double expected = E_c * R * d / (std::numbers::pi * R * R);
+  const double expected = E_dem * R * d / (std::numbers::pi * R * R);
   EXPECT_NEAR(report.test->area_m2, std::numbers::pi * R * R, 1e-15);
   // The fit averages the waves the start of the pull leaves in the force
   // (3e-7 measured); the secant reads two samples of them (8e-5).

@@ -82,10 +82,10 @@ TEST(DispersionReport, LatticeSummaryIsTheChainsClosedForm) {
   LatticeRequest dem;
   dem.sphere_radius_mm = 5;
   dem.particle_density_kg_m3 = 7800;
-  dem.contact_modulus_GPa = 600;
+  dem.E_dem_GPa = 600;
   EXPECT_THROW(lattice_report(dem), InputError);  // neither --spacing-mm nor --spacing-R
   dem.spacing_R = 2;
-  // m = rho 4/3 pi R^3, K = E_c R, d = 2 R: c = d sqrt(K / m).
+  // m = rho 4/3 pi R^3, K = E_dem R, d = 2 R: c = d sqrt(K / m).
   const double R = 5e-3, m = 7800 * 4.0 / 3 * std::numbers::pi * R * R * R, K = 600e9 * R;
   EXPECT_NEAR(lattice_report(dem).summary["long_wave_speed_m_s"].get<double>(), 2 * R * std::sqrt(K / m), 1e-6);
 }

@@ -51,7 +51,7 @@ TEST(Lattice, GroupVelocityIsTheDerivativeAndVanishesAtTheCutoff) {
 }
 
 TEST(Lattice, RodPaperChainLongWaveSpeedFollowsFromTable1) {
-  // 1.03R: rho_p = 6044.37 kg/m3, K_n column 6.6e11 (the contact modulus E_c, K_n = E_c R).
+  // 1.03R: rho_p = 6044.37 kg/m3, K_n column 6.6e11 (the contact modulus E_dem, K_n = E_dem R).
   const double R = 5.1e-3;
   const auto c = dem_chain(R, 6044.37, 6.6e11, 1.03 * R);
   EXPECT_NEAR(c.mass_kg, 6044.37 * 4.0 / 3.0 * std::numbers::pi * R * R * R, 1e-15);

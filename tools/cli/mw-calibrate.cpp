@@ -29,8 +29,8 @@ int main(int argc, char** argv) {
       "sigma_max within tolerance. Elastic trials (unbreakable bonds, to sigma_max / 3) fix E_dem (E_glob is "
       "proportional to it) and nu_dem (secant on nu_glob); failure trials (the full law) fix T (secant on the peak "
       "stress) and correct E_dem and nu_dem from the same runs (their modulus: the secant from 10 % to 1/3 of the peak).\n"
-      "rod: the contact modulus E_c (K_n = E_c R) so that the chain's tension test gives the rod's E (E_DEM = K_n d / "
-      "(pi R^2), proportional to E_c: one rescaled trial and a check); rho_p is the packing's (mw-pack line).\n\n"
+      "rod: the contact modulus E_dem (K_n = E_dem R) so that the chain's tension test gives the rod's E (E_DEM = K_n d / "
+      "(pi R^2), proportional to E_dem: one rescaled trial and a check); rho_p is the packing's (mw-pack line).\n\n"
       "  mw-calibrate cube --scene pipeline/concrete-cube/scenes/cube-compression.toml --from "
       "lab-data/concrete-cube/static-test.toml --start-E-dem-GPa 10 --start-nu-dem 0.1 --start-T-MPa 10 --work-dir "
       "calib --out calibration.json --trials trials.csv --plot-trajectory trajectory.png --plot-curves curves.png\n"
@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
   auto* rod = cli.add_subcommand("rod", "Tension test of a chain: the contact modulus for the rod's E");
   common(rod);
   rod->add_option("--E-GPa", E_rod_GPa, "Target: the rod's Young modulus [GPa] (the rod paper: 208.72)")->required();
-  rod->add_option("--start-E-dem-GPa", start_E, "First contact modulus E_c [GPa] (default: the scene's)");
+  rod->add_option("--start-E-dem-GPa", start_E, "First contact modulus E_dem [GPa] (default: the scene's)");
   rod->add_option("--tolerance-E-pct", tol_rod_pct, "Tolerance on E_DEM [%]")->capture_default_str();
 
   return tool.run(argc, argv, [&](app::Run& run) {
@@ -97,16 +97,16 @@ int main(int argc, char** argv) {
     if (rod->parsed()) {
       if (scene.test.kind != dem::UniaxialTestSpec::Kind::tension) throw InputError("mw-calibrate rod needs a tension test scene");
       dem::RodCalibration calibration(require_positive("--E-GPa", E_rod_GPa, "GPa"), tol_rod_pct / 100,
-                                      require_positive("--start-E-dem-GPa", start_E.value_or(m.young_Pa / 1e9), "GPa"), max_trials);
+                                      require_positive("--start-E-dem-GPa", start_E.value_or(m.E_dem_Pa / 1e9), "GPa"), max_trials);
       const dem::Packing chain = dem::read_packing_file(scene.packing_file);
       while (auto t = calibration.next()) {
-        t = dem::with_results(*t, run_trial(t->number, {"--E-dem-GPa", format_exact(t->E_c_GPa)}));
-        std::cerr << "mw-calibrate rod: trial " << t->number << ": E_c " << format_number(t->E_c_GPa) << " GPa -> E_DEM "
+        t = dem::with_results(*t, run_trial(t->number, {"--E-dem-GPa", format_exact(t->E_dem_GPa)}));
+        std::cerr << "mw-calibrate rod: trial " << t->number << ": E_dem " << format_number(t->E_dem_GPa) << " GPa -> E_DEM "
                   << format_number(t->E_DEM_GPa) << " GPa\n";
         calibration.record(*t);
       }
       run.metric("E_DEM", calibration.result().E_DEM_GPa, "GPa");
-      run.metric("E_dem", calibration.result().E_c_GPa, "GPa");
+      run.metric("E_dem", calibration.result().E_dem_GPa, "GPa");
       run.emit_json(dem::rod_calibration_summary(calibration, chain, m), out);
       return;
     }
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     if (scene.test.kind != dem::UniaxialTestSpec::Kind::compression) throw InputError("mw-calibrate cube needs a compression test scene");
     const double T0 = start_T ? *start_T * units::MPa : m.tensile_strength_Pa;
     if (!std::isfinite(T0)) throw InputError("the scene's bonds never break (no T_MPa): give --start-T-MPa");
-    const dem::DemParameters start{start_E ? *start_E * units::GPa : m.young_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
+    const dem::DemParameters start{start_E ? *start_E * units::GPa : m.E_dem_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
     const double mu_deg = friction_deg.value_or(m.friction_angle_rad * 180 / 3.141592653589793);
     dem::CompressionCalibration calibration(targets, tolerances, start, max_trials);
     while (auto trial = calibration.next()) {

@@ -5,21 +5,17 @@
 //   mw-dem info pipeline/concrete-cube/scenes/cube-wave.toml
 //   mw-dem run pipeline/concrete-cube/scenes/cube-wave.toml --frequency-kHz 100
 //       --signals results/concrete-cube/dem-100kHz.h5 --summary results/concrete-cube/dem-100kHz.json
-#include <algorithm>
 #include <filesystem>
-#include <limits>
 #include <map>
 #include <optional>
 
 #include "mesowave/app/progress.hpp"
 #include "mesowave/app/tool.hpp"
-#include "mesowave/core/check.hpp"
-#include "mesowave/core/format.hpp"
 #include "mesowave/core/threads.hpp"
-#include "mesowave/core/units.hpp"
 #include "mesowave/dem/packing_file.hpp"
 #include "mesowave/dem/run_report.hpp"
 #include "mesowave/dem/scene.hpp"
+#include "mesowave/dem/scene_overrides.hpp"
 #include "mesowave/dem/simulation.hpp"
 #include "mesowave/dem/snapshot.hpp"
 #include "mesowave/io/signal_file.hpp"
@@ -47,47 +43,17 @@ int main(int argc, char** argv) {
   auto& cli = tool.cli();
   cli.require_subcommand(1);
 
-  fs::path scene_path, packing_path, signals_path, summary_path, snapshot_dir;
+  fs::path scene_path, signals_path, summary_path, snapshot_dir, csv_path, curves_path;
   std::string model = "auto";
-  double frequency_kHz = 0, dt_ns = 0, duration_ms = 0, snapshot_us = -1;
   int threads = 0;
   bool quiet = false;
-  std::map<std::string, double> material_values;  // [material] key -> value given on the command line
-  std::map<std::string, std::string> material_option_names;
-  bool unbreakable = false;
-  double stop_at_MPa = 0, velocity_mm_s = 0;
-  std::vector<double> levels_MPa;
+  dem::SceneOverrides overrides;
 
   auto common = [&](CLI::App* sub) {
     sub->add_option("scene", scene_path, "Scene file (TOML; see docs/formats.md)")->required();
-    sub->add_option("--packing", packing_path, "Packing file to use instead of the scene's [packing] file");
     sub->add_option("--model", model, "auto (default: the scene's choice, else the rules) | full | linear | chain")
         ->check(CLI::IsMember({"auto", "full", "linear", "chain"}));
-    sub->add_option("--frequency-kHz", frequency_kHz, "Centre frequency of every actuator's burst [kHz]");
-    sub->add_option("--dt-ns", dt_ns, "Time step instead of the scene's [ns]");
-    sub->add_option("--duration-ms", duration_ms, "Duration instead of the scene's [ms]");
-    for (const auto& [key, what] : std::vector<std::pair<std::string, std::string>>{
-             {"E_dem_GPa", "Contact modulus E_dem of Eq. (3) [GPa]"},
-             {"nu_dem", "Stiffness ratio nu_dem = K_s / K_n (Eq. 3)"},
-             {"friction_angle_deg", "Friction angle mu of Eqs. (4)-(5) [deg]"},
-             {"T_MPa", "Normal (tensile) bond strength T of Eq. (6) [MPa]"},
-             {"C_MPa", "Shear cohesion C of Eq. (6) [MPa]"},
-             {"damping", "Local damping alpha_d of Eq. (7)"},
-             {"bond_factor", "Detection factor C_f: pairs within C_f (r_i + r_j) are bonded at step 0"}}) {
-      std::string option = "--" + key;
-      std::replace(option.begin(), option.end(), '_', '-');
-      sub->add_option_function<double>(option, [&, key = key](double v) { material_values[key] = v; },
-                                       what + " (beats the scene's [material]; --from mw-calibrate's JSON fills it)");
-      material_option_names[key] = option;
-    }
-    sub->add_flag("--unbreakable-bonds", unbreakable,
-                  "Bonds never break (no T, C): the elastic response (mw-calibrate's elastic trials)");
-    sub->add_option("--stop-at-MPa", stop_at_MPa, "A [test] ends once its stress reaches this [MPa]");
-    sub->add_option("--velocity-mm-s", velocity_mm_s,
-                    "Every moving platen or wall (velocity, wall actuators with a velocity) at this speed instead [mm/s]");
-    sub->add_option("--modulus-levels-MPa", levels_MPa,
-                    "A [test]'s secant modulus between these two stresses [MPa] instead of the scene's levels")
-        ->expected(2)->delimiter(',');
+    dem::add_override_options(*sub, overrides);
     sub->add_option("--threads", threads,
                     "OpenMP threads (default: the cores the machine is not busy with; the results are the same bits "
                     "for any count)");
@@ -98,12 +64,10 @@ int main(int argc, char** argv) {
   common(run_cmd);
   run_cmd->add_option("--signals", signals_path, "Sensor signals (HDF5, docs/formats.md)")->required();
   run_cmd->add_option("--summary", summary_path, "Run summary (JSON; also printed)");
-  fs::path csv_path;
   run_cmd->add_option("--signals-csv", csv_path, "The signals also as CSV (t_s and one column per sensor)");
   run_cmd->add_option("--snapshots", snapshot_dir, "Folder for ParaView snapshots (.vtp per instant + snapshots.pvd)");
-  run_cmd->add_option("--snapshot-interval-us", snapshot_us, "Time between snapshots [us] (default: the scene's)");
+  run_cmd->add_option("--snapshot-interval-us", overrides.snapshot_us, "Time between snapshots [us] (default: the scene's)");
   run_cmd->add_flag("--quiet", quiet, "No progress bar");
-  fs::path curves_path;
   run_cmd->add_option("--curves", curves_path,
                       "A [test]'s stress-strain curves as CSV (t_s, stress_MPa, axial_strain, lateral_strain, "
                       "broken_bonds); the signal file holds them too (test.stress, test.axial_strain, ...)");
@@ -112,34 +76,8 @@ int main(int argc, char** argv) {
     const std::string threads_reason = use_threads(threads).reason;
     dem::Scene scene = dem::read_scene_file(scene_path);
     run.input(scene_path);
-    if (!packing_path.empty()) scene.packing_file = packing_path;
-    for (const auto& [key, value] : material_values)
-      dem::set_material_value(scene, key, value, material_option_names.at(key));
-    if (velocity_mm_s != 0) {
-      require_positive("--velocity-mm-s", velocity_mm_s, "mm/s");
-      for (auto& a : scene.actuators)
-        if ((a.kind == "velocity" || a.kind == "wall") && a.amplitude != 0) a.amplitude = velocity_mm_s * units::mm;
-    }
-    if (unbreakable)
-      scene.material.tensile_strength_Pa = scene.material.cohesion_Pa = std::numeric_limits<double>::infinity();
-    if ((stop_at_MPa != 0 || !levels_MPa.empty()) && !scene.test.active())
-      throw InputError("--stop-at-MPa and --modulus-levels-MPa need a scene with a [test] table");
-    if (stop_at_MPa != 0) scene.test.stop_at_Pa = require_positive("--stop-at-MPa", stop_at_MPa, "MPa") * units::MPa;
-    if (!levels_MPa.empty()) {
-      if (!(levels_MPa[0] >= 0 && levels_MPa[1] > levels_MPa[0]))
-        throw InputError("--modulus-levels-MPa (" + format_number(levels_MPa[0]) + ", " + format_number(levels_MPa[1]) +
-                         ") must rise from a lower to an upper stress");
-      scene.test.levels_absolute = true;
-      scene.test.levels[0] = levels_MPa[0] * units::MPa;
-      scene.test.levels[1] = levels_MPa[1] * units::MPa;
-    }
-    if (frequency_kHz != 0)
-      for (auto& a : scene.actuators) a.frequency_hz = require_positive("--frequency-kHz", frequency_kHz, "kHz") * units::kHz;
-    if (dt_ns != 0) scene.dt_s = require_positive("--dt-ns", dt_ns, "ns") * units::ns;
-    if (duration_ms != 0) scene.duration_s = require_positive("--duration-ms", duration_ms, "ms") * units::ms;
-    if (snapshot_us >= 0) scene.snapshot_interval_s = snapshot_us * units::us;
-    if (!curves_path.empty() && !scene.test.active())
-      throw InputError("--curves needs a scene with a [test] table (a compression or tension test)");
+    overrides.curves = !curves_path.empty();
+    dem::apply_overrides(scene, overrides);
     const dem::Packing packing = dem::read_packing_file(scene.packing_file);
     run.input(scene.packing_file);
 

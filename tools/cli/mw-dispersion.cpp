@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
       "  the c0 for which the Pochhammer-Chree-propagated pulse's edges meet the echo's.\n\n"
       "  mw-dispersion theory --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1 --csv pc.csv --plot "
       "pc.png\n"
-      "  mw-dispersion lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 6044.37 --contact-modulus-GPa 660 "
+      "  mw-dispersion lattice --sphere-radius-mm 5.1 --particle-density-kg-m3 6044.37 --E-dem-GPa 660 "
       "--spacing-R 1.03 --csv chain.csv\n"
       "  mw-dispersion theory ... --overlay 1.03R=chain.csv --plot figure9.png\n"
       "  mw-dispersion measure --run fem50.h5 --run fem100.h5 --method echo --distance-mm 2000 --E-GPa 208.72 --nu 0.3 "
@@ -72,9 +72,9 @@ int main(int argc, char** argv) {
   lattice->add_option("--mass-kg", lq.mass_kg, "Particle mass m [kg]");
   lattice->add_option("--stiffness-N-m", lq.stiffness_N_m, "Bond stiffness K [N/m]");
   lattice->add_option("--spacing-mm", lq.spacing_mm, "Distance d between particle centres [mm]");
-  lattice->add_option("--sphere-radius-mm", lq.sphere_radius_mm, "Sphere radius R [mm] (m = rho_p 4/3 pi R^3, K = E_c R)");
+  lattice->add_option("--sphere-radius-mm", lq.sphere_radius_mm, "Sphere radius R [mm] (m = rho_p 4/3 pi R^3, K = E_dem R)");
   lattice->add_option("--particle-density-kg-m3", lq.particle_density_kg_m3, "Particle density rho_p [kg/m3] (rod Table 1)");
-  lattice->add_option("--contact-modulus-GPa", lq.contact_modulus_GPa, "Contact modulus E_c [GPa] (the K_n column of rod Table 1)");
+  lattice->add_option("--E-dem-GPa", lq.E_dem_GPa, "Contact modulus E_dem [GPa] (the K_n column of rod Table 1)");
   lattice->add_option("--spacing-R", lq.spacing_R, "Spacing d as a multiple of the sphere radius (1.03 for 1.03R)");
   lattice->add_option("--f-max-kHz", lq.f_max_kHz, "Highest frequency [kHz]")->capture_default_str();
   lattice->add_option("--df-kHz", lq.df_kHz, "Frequency step [kHz]")->capture_default_str();

@@ -1,9 +1,10 @@
 #pragma once
 // An actuator loads the model each step; one class per kind of loading, one
-// file each (force_actuator, displacement_actuator). The simulation calls
-// before_step at t_n (forces for step n) and after_step once x_{n+1} exists
-// (constraints at t_{n+1}); adding a kind touches neither the loop nor the
-// integrator.
+// file each (force_actuator, displacement_actuator, rigid_wall), each kind
+// registered by name with its scene keys and factory (plugins.hpp). The
+// simulation calls before_step at t_n (forces for step n) and after_step once
+// x_{n+1} exists (constraints at t_{n+1}); adding a kind is its file and one
+// line in plugins.def, touching neither the loop nor the integrator.
 #include <string>
 #include <vector>
 

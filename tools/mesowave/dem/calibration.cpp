@@ -207,10 +207,10 @@ CalibrationTrial CompressionCalibration::next_failure() {
   return make(CalibrationTrial::Kind::failure, p);
 }
 
-RodCalibration::RodCalibration(double E_target_GPa, double tolerance_relative, double start_E_c_GPa, int max_trials)
+RodCalibration::RodCalibration(double E_target_GPa, double tolerance_relative, double start_E_dem_GPa, int max_trials)
     : target_GPa_(require_positive("target E", E_target_GPa, "GPa")),
       tolerance_(require_positive("tolerance on E_DEM", tolerance_relative)),
-      start_GPa_(require_positive("start E_c", start_E_c_GPa, "GPa")),
+      start_GPa_(require_positive("start E_dem", start_E_dem_GPa, "GPa")),
       max_trials_(max_trials) {
   if (max_trials < 1) throw InputError("max trials (" + std::to_string(max_trials) + ") must be at least 1");
 }
@@ -221,7 +221,7 @@ std::optional<RodTrial> RodCalibration::next() {
   RodTrial t;
   t.number = int(trials_.size()) + 1;
   if (trials_.empty()) {
-    t.E_c_GPa = start_GPa_;
+    t.E_dem_GPa = start_GPa_;
   } else {
     const RodTrial& last = trials_.back();
     if (std::abs(last.E_DEM_GPa / target_GPa_ - 1) <= tolerance_) {
@@ -231,7 +231,7 @@ std::optional<RodTrial> RodCalibration::next() {
     if (int(trials_.size()) >= max_trials_)
       throw InputError("the rod calibration did not reach " + format_number(target_GPa_) + " GPa within " +
                        std::to_string(max_trials_) + " trials");
-    t.E_c_GPa = last.E_c_GPa * (target_GPa_ / last.E_DEM_GPa);  // E_DEM proportional to E_c
+    t.E_dem_GPa = last.E_dem_GPa * (target_GPa_ / last.E_DEM_GPa);  // E_DEM proportional to E_dem
   }
   pending_ = true;
   return t;

@@ -94,16 +94,16 @@ private:
   int pending_ = 0;  ///< a trial handed out and not yet recorded
 };
 
-// The rod paper's calibration (Table 1): the contact modulus E_c (K_n = E_c R
+// The rod paper's calibration (Table 1): the contact modulus E_dem (K_n = E_dem R
 // for equal spheres, Eq. 3) so that the tension test of the chain of spheres
 // gives the rod's Young modulus E. The chain's modulus E_DEM = K_n d / (pi R^2)
-// is proportional to E_c, so each next trial rescales the last one,
-// E_c <- E_c E / E_DEM: one rescaled trial and a check. Moduli in GPa, as
+// is proportional to E_dem, so each next trial rescales the last one,
+// E_dem <- E_dem E / E_DEM: one rescaled trial and a check. Moduli in GPa, as
 // mw-dem reads and reports them (the trials' parameters pass between programs
 // bit for bit). Like CompressionCalibration, the class only decides.
 struct RodTrial {
   int number = 0;      ///< 1, 2, ...
-  double E_c_GPa = 0;  ///< the contact modulus tried (mw-dem --E-dem-GPa)
+  double E_dem_GPa = 0;  ///< the contact modulus tried (mw-dem --E-dem-GPa)
   // Results, filled by whoever ran it:
   double E_DEM_GPa = 0;  ///< the chain's tension modulus (mw-dem's E_fit_GPa)
   double wall_s = 0;
@@ -113,7 +113,7 @@ struct RodTrial {
 class RodCalibration {
 public:
   /// InputError for a non-positive target, tolerance or start, or max_trials < 1.
-  RodCalibration(double E_target_GPa, double tolerance_relative, double start_E_c_GPa, int max_trials);
+  RodCalibration(double E_target_GPa, double tolerance_relative, double start_E_dem_GPa, int max_trials);
 
   /// The next trial, or nothing once the last one met the target. InputError
   /// when max_trials ran without meeting it.

@@ -5,6 +5,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/dem/material_parameters.hpp"
 #include "mesowave/dem/vec3.hpp"
 #include "mesowave/io/csv.hpp"
 #include "mesowave/io/gnuplot.hpp"
@@ -28,8 +29,9 @@ std::vector<std::string> TrialCommand::argv(int k, const std::vector<std::string
 std::vector<std::string> compression_trial_options(const CalibrationTrial& t, const CalibrationTargets& targets,
                                                    double friction_deg) {
   const auto& p = t.parameters;
-  std::vector<std::string> options = {"--E-dem-GPa", format_exact(p.E_dem_Pa / 1e9), "--nu-dem", format_exact(p.nu_dem),
-                                      "--friction-angle-deg", format_exact(friction_deg)};
+  const auto option = [](const char* key) { return material_parameter(key).option; };
+  std::vector<std::string> options = {option("E_dem_GPa"), format_exact(p.E_dem_Pa / 1e9), option("nu_dem"),
+                                      format_exact(p.nu_dem), option("friction_angle_deg"), format_exact(friction_deg)};
   if (t.kind == CalibrationTrial::Kind::elastic) {
     // The linearised network is valid there (the scene's linear_validity_bound says how far).
     const double b = 0.1 * targets.sigma_Pa / 1e6, a = targets.sigma_Pa / 3 / 1e6;
@@ -120,21 +122,21 @@ nlohmann::ordered_json rod_calibration_summary(const RodCalibration& c, const Pa
   };
   const double d = norm(centre(1) - centre(0));
   CohesiveFrictionalMaterial calibrated = material;
-  calibrated.young_Pa = best.E_c_GPa * 1e9;
+  calibrated.E_dem_Pa = best.E_dem_GPa * 1e9;
   nlohmann::ordered_json trials = nlohmann::ordered_json::array();
   for (const auto& t : c.trials())
-    trials.push_back({{"trial", t.number}, {"E_dem_GPa", t.E_c_GPa}, {"E_DEM_GPa", t.E_DEM_GPa}, {"wall_s", t.wall_s}});
+    trials.push_back({{"trial", t.number}, {"E_dem_GPa", t.E_dem_GPa}, {"E_DEM_GPa", t.E_DEM_GPa}, {"wall_s", t.wall_s}});
   nlohmann::ordered_json j;
   j["spheres"] = chain.size();
   j["sphere_radius_mm"] = R * 1e3;
   j["spacing_mm"] = d * 1e3;
   j["spacing_R"] = d / R;
   j["rho_p_kg_m3"] = chain.particle_density_kg_m3;
-  j["E_dem_GPa"] = best.E_c_GPa;
-  j["Kn_N_m"] = normal_stiffness(calibrated, R, R);  // Eq. (3): E_c R for equal spheres
+  j["E_dem_GPa"] = best.E_dem_GPa;
+  j["Kn_N_m"] = normal_stiffness(calibrated, R, R);  // Eq. (3): E_dem R for equal spheres
   j["E_DEM_GPa"] = best.E_DEM_GPa;
   j["E_target_GPa"] = c.target_GPa();
-  j["E_dem_start_GPa"] = c.trials().front().E_c_GPa;
+  j["E_dem_start_GPa"] = c.trials().front().E_dem_GPa;
   j["E_DEM_at_start_GPa"] = c.trials().front().E_DEM_GPa;
   j["trials"] = trials;
   return j;

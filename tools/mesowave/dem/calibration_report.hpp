@@ -46,9 +46,9 @@ std::string describe(const CalibrationTrial& trial);
 /// The calibrated cube: the flat keys that `mw-dem run --from` reads (E_dem_GPa,
 /// nu_dem, T_MPa, C_MPa, friction_angle_deg), then the results against the targets.
 nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_angle_deg);
-/// The calibrated rod: the chain (spheres, R, d, rho_p), E_c and K_n = E_c R
+/// The calibrated rod: the chain (spheres, R, d, rho_p), E_dem and K_n = E_dem R
 /// (Eq. 3), E_DEM against the target, and the trials. `material` is the
-/// scene's (all but E_c).
+/// scene's (all but E_dem).
 nlohmann::ordered_json rod_calibration_summary(const RodCalibration& c, const Packing& chain,
                                                const CohesiveFrictionalMaterial& material);
 

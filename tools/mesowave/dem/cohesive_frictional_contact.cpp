@@ -8,26 +8,28 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/dem/axial_chain.hpp"
+#include "mesowave/dem/linear_bonded_network.hpp"
 #include "mesowave/dem/neighbour_search.hpp"
+#include "mesowave/dem/plugins.hpp"
 
 namespace mesowave::dem {
 
-CohesiveFrictionalContact::CohesiveFrictionalContact(SphereSet spheres, BondNetwork bonds,
-                                                     const CohesiveFrictionalMaterial& material)
-    : SphereSystem(std::move(spheres), std::move(bonds), material, false, false) {
-  const auto stray = unbonded_overlaps(spheres_, bonds_);
+void CohesiveFrictionalContact::attach(SphereSystem& system) {
+  const SphereSet& spheres = system.spheres();
+  const auto stray = unbonded_overlaps(spheres, system.bonds());
   if (!stray.empty()) {
     double worst = 0;
     for (auto [i, j] : stray)
-      worst = std::max(worst, spheres_.radius_m[i] + spheres_.radius_m[j] - norm(spheres_.centre_m[j] - spheres_.centre_m[i]));
+      worst = std::max(worst, spheres.radius_m[i] + spheres.radius_m[j] - norm(spheres.centre_m[j] - spheres.centre_m[i]));
     throw InputError(std::to_string(stray.size()) + " pairs of spheres overlap at step 0 without a bond (bond factor C_f " +
-                     format_number(material.bond_factor) + " < 1; largest overlap " + format_number(worst) +
+                     format_number(system.material().bond_factor) + " < 1; largest overlap " + format_number(worst) +
                      " m): the full law would start them as contacts pushing with K_n u; raise C_f to bond them, or "
                      "run --model linear/chain, which never adds contacts");
   }
-  const double r_min = *std::min_element(spheres_.radius_m.begin(), spheres_.radius_m.end());
+  const double r_min = *std::min_element(spheres.radius_m.begin(), spheres.radius_m.end());
   margin_ = 0.1 * r_min;
-  detect_contacts();
+  detect_contacts(system);
 }
 
 CohesiveFrictionalContact::Slot CohesiveFrictionalContact::slot(std::size_t s) const {
@@ -54,130 +56,57 @@ std::size_t CohesiveFrictionalContact::broken_bond_count() const {
   return broken;
 }
 
-std::size_t CohesiveFrictionalContact::memory_bytes() const {
-  return SphereSystem::memory_bytes() + bond_.size() * (8 * sizeof(double) + sizeof(std::uint32_t));
+void CohesiveFrictionalContact::contact_forces(SphereSystem& system, double dt, bool evaluate_energy) {
+  kernel(system, dt, evaluate_energy);
 }
-
-void CohesiveFrictionalContact::contact_forces(double dt, bool evaluate_energy) { kernel(dt, evaluate_energy); }
 
 // Compiled for AVX-512, AVX2 and baseline x86-64, picked at load time. No FMA
 // contraction (ISO C++ mode), so every version gives the same bits.
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-void CohesiveFrictionalContact::kernel(double dt, bool evaluate_energy) {
-  const double two_young = 2.0 * material_.young_Pa, ratio = material_.stiffness_ratio;
-  const double tan_mu = std::tan(material_.friction_angle_rad);
-  const double T = material_.tensile_strength_Pa, C = material_.cohesion_Pa;
-  // Reference strengths for the peak ratio: T R^2 and C R^2, or K_n R when a strength is not given.
-  const double T_ref = std::isfinite(T) ? T : 0.0, C_ref = std::isfinite(C) ? C : 0.0;
-  const double T_none = std::isfinite(T) ? 0.0 : 1.0, C_none = std::isfinite(C) ? 0.0 : 1.0;
-  const double half_dt = 0.5 * dt;
-  const double energy_on = evaluate_energy ? 1.0 : 0.0;
-  const double* radius = spheres_.radius_m.data();
-  const Vec3* x = x_.data();
-  const Vec3* v = v_.data();
-  const Vec3* w = w_.data();
-  double *nx = nx_.data(), *ny = ny_.data(), *nz = nz_.data();
-  double *sx = sx_.data(), *sy = sy_.data(), *sz = sz_.data();
-  const double* overlap0 = overlap0_.data();
-  double* cohesion = cohesive_.data();
-  const std::uint32_t* first = first_.data();
-  const std::uint32_t* second = second_.data();
-
-  for_each_contact([&](std::size_t b, ContactResult& r) __attribute__((always_inline)) {
-    const std::uint32_t i = first[b], j = second[b];
-    const Vec3 d = x[j] - x[i];
-    const double dist = std::sqrt(norm2(d));
-    const double ri = radius[i], rj = radius[j], sum = ri + rj;
-    const double inv = 1.0 / (sum * dist);  // one division: 1/dist, K_n and the factor a
-    const Vec3 n = (sum * inv) * d;
-    const double u = sum - dist;
-    const double kn = two_young * ri * rj * dist * inv, ks = ratio * kn;
-
-    // ScGeom::precompute + rotate: carry the shear force with the contact frame.
-    const Vec3 n_prev{nx[b], ny[b], nz[b]};
-    Vec3 fs{sx[b], sy[b], sz[b]};
-    const Vec3 wi = w[i], wj = w[j];
-    fs -= cross(fs, cross(n_prev, n));
-    fs -= cross(fs, (half_dt * dot(n_prev, wi + wj)) * n_prev);
-    // Shear increment, Eq. (2): ScGeom::getIncidentVel with avoidGranularRatcheting.
-    Vec3 v_rel = (sum * sum * inv) * (v[j] - v[i]) - rj * cross(wj, n) - ri * cross(wi, n);
-    v_rel -= dot(n, v_rel) * n;
-    fs -= (ks * dt) * v_rel;
-    const double fn = kn * (u - overlap0[b]);  // Eq. (1)
-    const double fs2 = norm2(fs);
-
-    // Strength and friction (Eqs. 4-6) as 0/1 flags and selects on doubles, no
-    // branches, so the chunk runs as one vector loop.
-    const double r_min = std::min(ri, rj), r2 = r_min * r_min;
-    const double cohesive = cohesion[b];                                  // 1 while the bond holds
-    const double tension_break = cohesive * (-fn > T * r2 ? 1.0 : 0.0);   // Eq. (6); Yade removes the interaction
-    const double cohesive_max = std::max(0.0, C * r2 + fn * tan_mu);      // Eq. (4)
-    const double shear_break = (cohesive - tension_break) * (fs2 > cohesive_max * cohesive_max ? 1.0 : 0.0);
-    const double intact = cohesive - tension_break - shear_break;
-    const double open = tension_break + (1.0 - cohesive) * (fn <= 0.0 ? 1.0 : 0.0);  // no force, shear history reset
-    const double max_fs = intact != 0.0 ? cohesive_max : std::max(0.0, fn * tan_mu);  // Eq. (5) once cohesion is gone
-    const double slip = (1.0 - open) * (fs2 > max_fs * max_fs ? 1.0 : 0.0);
-    const double slip_scale = max_fs / std::sqrt(fs2);
-    const double scale = open != 0.0 ? 0.0 : (slip != 0.0 ? slip_scale : 1.0);
-    const Vec3 fs_new = scale * fs;
-    const double no_normal = std::max(open, shear_break * (fn < 0.0 ? 1.0 : 0.0));
-    const double fn_new = no_normal != 0.0 ? 0.0 : fn;
-    cohesion[b] = intact;
-    nx[b] = n.x, ny[b] = n.y, nz[b] = n.z;
-    sx[b] = fs_new.x, sy[b] = fs_new.y, sz[b] = fs_new.z;
-
-    r.f = fn_new * n + fs_new;
-    r.c = cross(n, fs_new);
-    r.arm[0] = ri - 0.5 * u;
-    r.arm[1] = rj - 0.5 * u;
-    const double inv_ks_raw = 1.0 / ks;
-    const double inv_ks = ks > 0.0 ? inv_ks_raw : 0.0;
-    // Excess shear sheared off (Yade's plasticDissipation); zero without sliding.
-    r.plastic = dot(fs - fs_new, fs_new) * inv_ks;
-    // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
-    const double sn = T_ref * r2 + T_none * kn * r_min, ss = C_ref * r2 + C_none * kn * r_min;
-    r.ratio2 = intact * std::max(fn * fn / (sn * sn), fs2 / (ss * ss));
-    // The shear increment carries the factor (r_i + r_j)/|x_j - x_i|: the spring is that times K_s.
-    r.elastic = energy_on * (0.5 * fn_new * fn_new / kn + 0.5 * norm2(fs_new) * dist * inv * dist * inv_ks);
-  });
+void CohesiveFrictionalContact::kernel(SphereSystem& system, double dt, bool evaluate_energy) {
+  NoExtension none;
+  run<SphereSystem::ContactResult>(system, dt, evaluate_energy, none);
 }
 
-void CohesiveFrictionalContact::after_step(double dt) {
-  travelled_ += max_speed_ * dt;
+void CohesiveFrictionalContact::after_step(SphereSystem& system, double dt) {
+  travelled_ += system.max_speed() * dt;
   // Two spheres close in by at most twice the distance the fastest one moved.
-  if (2.0 * travelled_ > margin_) detect_contacts();
+  if (2.0 * travelled_ > margin_) detect_contacts(system);
 }
 
-void CohesiveFrictionalContact::detect_contacts() {
+void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   travelled_ = 0;
   ++detection_passes_;
-  const std::size_t n = spheres_.size(), nb = bonds_.size();
+  const SphereSet& spheres = system.spheres();
+  const BondNetwork& bonds = system.bonds();
+  const Vec3* x = system.positions();
+  const std::size_t n = spheres.size(), nb = bonds.size();
   std::vector<std::array<double, 3>> pos(n);
-  for (std::size_t k = 0; k < n; ++k) pos[k] = {x_[k].x, x_[k].y, x_[k].z};
-  const double r_min = *std::min_element(spheres_.radius_m.begin(), spheres_.radius_m.end());
-  const auto pairs = find_pairs_within(pos, spheres_.radius_m, 1.0 + margin_ / (2.0 * r_min));
+  for (std::size_t k = 0; k < n; ++k) pos[k] = {x[k].x, x[k].y, x[k].z};
+  const double r_min = *std::min_element(spheres.radius_m.begin(), spheres.radius_m.end());
+  const auto pairs = find_pairs_within(pos, spheres.radius_m, 1.0 + margin_ / (2.0 * r_min));
 
   // Where each bond and each detected pair lives now.
   std::vector<std::uint32_t> slot_of_bond(nb, kNoBond);
   std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> old_pairs;
   for (std::size_t s = 0; s < bond_.size(); ++s) {
     if (bond_[s] != kNoBond) slot_of_bond[bond_[s]] = std::uint32_t(s);
-    else old_pairs.emplace_back(first_[s], second_[s], std::uint32_t(s));
+    else old_pairs.emplace_back(system.first(s), system.second(s), std::uint32_t(s));
   }
   std::sort(old_pairs.begin(), old_pairs.end());
 
-  std::vector<std::uint32_t> first(bonds_.first), second(bonds_.second);
+  std::vector<std::uint32_t> first(bonds.first), second(bonds.second);
   std::vector<Slot> natural(nb);
   for (std::size_t b = 0; b < nb; ++b)
     natural[b] = slot_of_bond[b] != kNoBond ? slot(slot_of_bond[b])
-                                            : Slot{bonds_.normal0[b], {}, bonds_.overlap0_m[b], std::uint32_t(b), kCohesive};
+                                            : Slot{bonds.normal0[b], {}, bonds.overlap0_m[b], std::uint32_t(b), kCohesive};
   std::size_t b = 0;  // bonds and pairs are both sorted by (first, second)
   for (const auto& p : pairs) {
-    const double reach = spheres_.radius_m[p.i] + spheres_.radius_m[p.j] + margin_;
-    const Vec3 d = x_[p.j] - x_[p.i];
+    const double reach = spheres.radius_m[p.i] + spheres.radius_m[p.j] + margin_;
+    const Vec3 d = x[p.j] - x[p.i];
     if (norm2(d) > reach * reach) continue;
-    while (b < nb && (bonds_.first[b] < p.i || (bonds_.first[b] == p.i && bonds_.second[b] < p.j))) ++b;
-    if (b < nb && bonds_.first[b] == p.i && bonds_.second[b] == p.j) continue;  // bonded
+    while (b < nb && (bonds.first[b] < p.i || (bonds.first[b] == p.i && bonds.second[b] < p.j))) ++b;
+    if (b < nb && bonds.first[b] == p.i && bonds.second[b] == p.j) continue;  // bonded
     const auto known = std::lower_bound(old_pairs.begin(), old_pairs.end(), std::make_tuple(p.i, p.j, 0u));
     first.push_back(p.i);
     second.push_back(p.j);
@@ -188,10 +117,36 @@ void CohesiveFrictionalContact::detect_contacts() {
   }
   // Same contacts as before (the usual case for waves: bonds only): keep the layout.
   if (detection_passes_ > 1 && natural.size() == nb && bond_.size() == nb) return;
-  const auto order = set_contacts(first, second);
+  before_relayout(system);
+  const auto order = system.set_contacts(first, second, moments());
   std::vector<Slot> slots(order.size());
   for (std::size_t s = 0; s < order.size(); ++s) slots[s] = natural[order[s]];
   set_slots(slots);
+  after_relayout(system);
+}
+
+// The law of both papers, with its two shortcuts: the linearised network and
+// the axial chain model the same law where the scene lets them (model_choice.hpp).
+void register_cohesive_frictional_law(Plugins& p) {
+  p.laws.add({
+      .name = "cohesive_frictional",
+      .summary = "Yade's CohFrictMat / CohFrictPhys with Law2_ScGeom6D_CohFrictPhys_CohesionMoment, momentRotationLaw "
+                 "off: F_n = K_n (u - u_0) (Eq. 1), incremental shear (Eq. 2), K_n = E_dem 2 R_A R_B/(R_A + R_B), "
+                 "K_s = nu_dem K_n (Eq. 3), Mohr-Coulomb with strengths T R^2, C R^2 (Eqs. 4-6)",
+      .parameters = {},
+      .models = {"full", "linear", "chain"},
+      .make = [](const std::string& model, SphereSet spheres, BondNetwork bonds,
+                 const LawInput& in) -> std::unique_ptr<Model> {
+        if (model == "chain") return std::make_unique<AxialChain>(std::move(spheres), bonds, in.material, *in.line);
+        if (model == "linear")
+          return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
+                                                std::make_unique<LinearBondedNetwork>());
+        return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
+                                              std::make_unique<CohesiveFrictionalContact>());
+      },
+      .shortcut_obstacle = [](const std::string&, const Scene&) { return std::string(); },
+      .describe = [](const LawParameters&) { return nlohmann::ordered_json::object(); },
+  });
 }
 
 }  // namespace mesowave::dem

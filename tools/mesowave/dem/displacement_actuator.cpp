@@ -1,6 +1,10 @@
 #include "mesowave/dem/displacement_actuator.hpp"
 
+#include <cmath>
+
 #include "mesowave/core/format.hpp"
+#include "mesowave/core/units.hpp"
+#include "mesowave/dem/plugins.hpp"
 
 namespace mesowave::dem {
 
@@ -35,6 +39,52 @@ void DisplacementActuator::after_step(Model& model, double t_s, double dt_s) {
 std::string DisplacementActuator::description() const {
   return what_ + " along (" + format_number(direction_.x + 0.0) + ", " + format_number(direction_.y + 0.0) + ", " +
          format_number(direction_.z + 0.0) + ") imposed on " + std::to_string(spheres_.size()) + " spheres";
+}
+
+}  // namespace mesowave::dem
+
+namespace mesowave::dem {
+
+void register_displacement_actuators(Plugins& p) {
+  p.actuators.add({
+      .name = "displacement",
+      .summary = "a Hann-windowed displacement burst imposed on the spheres under a patch",
+      .keys = {{"amplitude_nm", "nm", -1e12, 1e12, "peak displacement"},
+               {"frequency_kHz", "kHz", 0, 1e9, "centre frequency"},
+               {"cycles", "", 0, 1e9, "cycles of the burst (5)"},
+               {"delay_us", "us", 0, 1e9, "start"}},
+      .parse = [](SceneKeys& k, ActuatorSpec& spec) { read_actuator_load(k, spec, units::nm, true); },
+      .make = [](const ActuatorSite& site) -> std::unique_ptr<Actuator> {
+        const ActuatorSpec& a = site.spec;
+        return std::make_unique<DisplacementActuator>(DisplacementActuator::burst(
+            a.name, site.spheres, site.direction, signal::HannBurst(a.frequency_hz, a.cycles, a.amplitude, a.delay_s)));
+      },
+      .peak_sphere_force = [](const ActuatorSpec& a, std::size_t, double stiffest_kn, double) {
+        return stiffest_kn * std::abs(a.amplitude);
+      },
+      .amplitude_key = "amplitude_nm",
+      .report_key = "amplitude_m",
+  });
+  p.actuators.add({
+      .name = "velocity",
+      .summary = "a platen: the spheres under a patch moved at a constant velocity (reached over ramp_us)",
+      .keys = {{"velocity_mm_s", "mm/s", -1e12, 1e12, "platen speed"},
+               {"ramp_us", "us", 0, 1e12, "time to reach it"},
+               {"delay_us", "us", 0, 1e9, "start"}},
+      .parse = [](SceneKeys& k, ActuatorSpec& spec) { read_actuator_load(k, spec, units::mm, false); },
+      .make = [](const ActuatorSite& site) -> std::unique_ptr<Actuator> {
+        const ActuatorSpec& a = site.spec;
+        return std::make_unique<DisplacementActuator>(DisplacementActuator::constant_velocity(
+            a.name, site.spheres, site.direction, VelocityRamp{a.amplitude, a.delay_s, a.ramp_s}));
+      },
+      // The travel over the whole run, imposed on the stiffest bond.
+      .peak_sphere_force = [](const ActuatorSpec& a, std::size_t, double stiffest_kn, double duration_s) {
+        return stiffest_kn * (std::abs(a.amplitude) * duration_s);
+      },
+      .amplitude_key = "velocity_mm_s",
+      .report_key = "velocity_m_s",
+      .moving = true,
+  });
 }
 
 }  // namespace mesowave::dem

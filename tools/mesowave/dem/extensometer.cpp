@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
+#include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/core/units.hpp"
+#include "mesowave/dem/plugins.hpp"
 
 namespace mesowave::dem {
 namespace {
@@ -61,6 +65,93 @@ signal::Signal BrokenBondCounter::signal(double dt_s) const {
 
 std::string BrokenBondCounter::description() const {
   return "broken bonds, " + every();
+}
+
+
+namespace {
+
+// An extensometer: two pads on one face, gauge_mm apart along component and
+// centred on centre_mm, or the two end spheres of a line.
+void read_extensometer(SceneKeys& k, SensorSpec& spec, const std::string&, const std::vector<ActuatorSpec>&) {
+  spec.component = k.text("component", "");
+  static const std::set<std::string> axes = {"x", "y", "z", "line"};
+  if (!axes.count(spec.component))
+    throw InputError(k.where() + ": an extensometer needs component = \"x\", \"y\", \"z\" or \"line\" (its gauge axis)");
+  if (k.has("between")) {
+    const toml::array* a = k.get("between")->as_array();
+    if (!a || a->size() != 2 || !(*a)[0].value<std::string>() || !(*a)[1].value<std::string>())
+      throw InputError(k.where() + ".between must be [\"first\", \"last\"] (the end spheres of a line)");
+    for (int e = 0; e < 2; ++e) {
+      const std::string which = *(*a)[std::size_t(e)].value<std::string>();
+      if (which != "first" && which != "last")
+        throw InputError(k.where() + ".between: \"" + which + "\" must be \"first\" or \"last\"");
+      spec.ends[e].kind = SphereTarget::Kind::end;
+      spec.ends[e].last = which == "last";
+    }
+    if (spec.ends[0].last == spec.ends[1].last) throw InputError(k.where() + ".between names one sphere twice");
+    return;
+  }
+  const SphereTarget centre = read_target(k);
+  if (centre.kind != SphereTarget::Kind::patch)
+    throw InputError(k.where() + ": an extensometer sits on a face (face, centre_mm, gauge_mm, patch_mm) or between the "
+                     "ends of a line (between = [\"first\", \"last\"])");
+  if (spec.component == "line") throw InputError(k.where() + ": component \"line\" needs between = [\"first\", \"last\"]");
+  const int axis = spec.component[0] - 'x';
+  if (axis == centre.patch.face.axis)
+    throw InputError(k.where() + ": component " + spec.component + " is normal to face " + centre.patch.face.name() +
+                     "; a face's extensometer measures along the face");
+  // The pads sit gauge/2 either side of the centre, in the centre's own terms.
+  const bool relative = centre.patch.relative;
+  const char* key = relative ? "gauge_rel" : "gauge_mm";
+  if (k.has(relative ? "gauge_mm" : "gauge_rel"))
+    throw InputError(k.where() + ": centre_" + (relative ? "rel takes gauge_rel" : "mm takes gauge_mm") +
+                     " (both in the same terms)");
+  const double gauge = require_positive(k.where() + "." + key, k.required_number(key), relative ? "" : "mm") *
+                       (relative ? 1.0 : units::mm);
+  for (int e = 0; e < 2; ++e) {
+    spec.ends[e] = centre;
+    (relative ? spec.ends[e].patch.centre_rel : spec.ends[e].patch.centre_m)[axis] += (e == 0 ? -0.5 : 0.5) * gauge;
+  }
+}
+
+}  // namespace
+
+void register_extensometer(Plugins& p) {
+  p.sensors.add({
+      .name = "strain",
+      .quantities = {"strain"},
+      .summary = "an extensometer: the strain between two pads on a face, or between the two ends of a line",
+      .keys = {{"component", "", 0, 0, "x | y | z | line: the gauge axis"},
+               {"gauge_mm", "mm", 0, 1e12, "pad spacing (or gauge_rel with centre_rel)"},
+               {"sample_interval_ns", "ns", 0, 1e12, "time between samples (every step)"}},
+      .parse = read_extensometer,
+      .targets = [](const SensorSpec& spec) {
+        return std::vector<std::pair<const SphereTarget*, std::string>>{{&spec.ends[0], " (first pad)"},
+                                                                        {&spec.ends[1], " (second pad)"}};
+      },
+      .make = [](const SensorSite& site, Placement& where) -> std::unique_ptr<Sensor> {
+        const SensorSpec& sensor = site.spec;
+        const Vec3 axis = direction_vector(sensor.component, sensor.target, "sensor " + sensor.name, site.line);
+        where.kind = "strain";
+        where.spheres = packing_indices(site.model, site.groups[0]);
+        where.direction = axis;
+        where.spheres_b = packing_indices(site.model, site.groups[1]);
+        return std::make_unique<Extensometer>(sensor.name, site.model, site.groups[0], site.groups[1], axis,
+                                              sensor.component, site.every);
+      },
+  });
+  p.sensors.add({
+      .name = "broken_bonds",
+      .quantities = {"broken_bonds"},
+      .summary = "the number of broken bonds",
+      .keys = {{"sample_interval_ns", "ns", 0, 1e12, "time between samples (every step)"}},
+      .parse = [](SceneKeys&, SensorSpec&, const std::string&, const std::vector<ActuatorSpec>&) {},
+      .targets = [](const SensorSpec&) { return std::vector<std::pair<const SphereTarget*, std::string>>{}; },
+      .make = [](const SensorSite& site, Placement& where) -> std::unique_ptr<Sensor> {
+        where.kind = "broken bonds";
+        return std::make_unique<BrokenBondCounter>(site.spec.name, site.every);
+      },
+  });
 }
 
 }  // namespace mesowave::dem

@@ -5,42 +5,43 @@
 
 namespace mesowave::dem {
 
-LinearBondedNetwork::LinearBondedNetwork(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material)
-    : SphereSystem(std::move(spheres), std::move(bonds), material, true, true) {
-  const auto order = set_contacts(bonds_.first, bonds_.second);
+void LinearBondedNetwork::attach(SphereSystem& system) {
+  const BondNetwork& bonds = system.bonds();
+  const auto order = system.set_contacts(bonds.first, bonds.second);
   const std::size_t m = order.size();
   nx_.resize(m), ny_.resize(m), nz_.resize(m), overlap0_.resize(m);
   for (std::size_t s = 0; s < m; ++s) {
-    const Vec3 n = bonds_.normal0[order[s]];
+    const Vec3 n = bonds.normal0[order[s]];
     nx_[s] = n.x, ny_[s] = n.y, nz_[s] = n.z;
-    overlap0_[s] = bonds_.overlap0_m[order[s]];
+    overlap0_[s] = bonds.overlap0_m[order[s]];
   }
 }
 
-std::size_t LinearBondedNetwork::memory_bytes() const { return SphereSystem::memory_bytes() + nx_.size() * 4 * sizeof(double); }
-
-void LinearBondedNetwork::contact_forces(double /*dt*/, bool evaluate_energy) { kernel(evaluate_energy); }
+void LinearBondedNetwork::contact_forces(SphereSystem& system, double /*dt*/, bool evaluate_energy) {
+  kernel(system, evaluate_energy);
+}
 
 // Compiled for AVX-512, AVX2 and baseline x86-64, picked at load time. No FMA
 // contraction (ISO C++ mode), so every version gives the same bits.
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-void LinearBondedNetwork::kernel(bool evaluate_energy) {
-  const double two_young = 2.0 * material_.young_Pa, ratio = material_.stiffness_ratio;
-  const double T = material_.tensile_strength_Pa, C = material_.cohesion_Pa;
+void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
+  const CohesiveFrictionalMaterial& material = system.material();
+  const double two_E_dem = 2.0 * material.E_dem_Pa, ratio = material.stiffness_ratio;
+  const double T = material.tensile_strength_Pa, C = material.cohesion_Pa;
   const bool finite_T = std::isfinite(T), finite_C = std::isfinite(C);
-  const double* radius = spheres_.radius_m.data();
-  const Vec3* d = x_.data();
-  const Vec3* theta = theta_.data();
+  const double* radius = system.spheres().radius_m.data();
+  const Vec3* d = system.positions();
+  const Vec3* theta = system.rotations();
   const double *nx = nx_.data(), *ny = ny_.data(), *nz = nz_.data(), *overlap0 = overlap0_.data();
-  const std::uint32_t* first = first_.data();
-  const std::uint32_t* second = second_.data();
+  const std::uint32_t* first = system.first();
+  const std::uint32_t* second = system.second();
 
-  for_each_contact([&](std::size_t b, ContactResult& r) __attribute__((always_inline)) {
+  system.for_each_contact([&](std::size_t b, SphereSystem::ContactResult& r) __attribute__((always_inline)) {
     const std::uint32_t i = first[b], j = second[b];
     const double ri = radius[i], rj = radius[j], sum = ri + rj;
     const double u0 = overlap0[b], dist0 = sum - u0;
     const double inv = 1.0 / (sum * dist0);  // one division for K_n and a0
-    const double kn = two_young * ri * rj * dist0 * inv, ks = ratio * kn;
+    const double kn = two_E_dem * ri * rj * dist0 * inv, ks = ratio * kn;
     const double a0 = sum * sum * inv;
     const Vec3 n{nx[b], ny[b], nz[b]};
     const Vec3 dd = d[j] - d[i];

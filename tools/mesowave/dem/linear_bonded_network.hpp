@@ -15,17 +15,18 @@
 
 namespace mesowave::dem {
 
-class LinearBondedNetwork : public SphereSystem {
+/// The kernel (sphere_system.hpp composes it).
+class LinearBondedNetwork : public ContactKernel {
 public:
-  LinearBondedNetwork(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material);
   std::string name() const override { return "linear"; }
-  std::size_t memory_bytes() const override;
-
-protected:
-  void contact_forces(double dt, bool evaluate_energy) override;
+  bool displacement_state() const override { return true; }
+  bool track_rotation() const override { return true; }
+  void attach(SphereSystem& system) override;
+  void contact_forces(SphereSystem& system, double dt, bool evaluate_energy) override;
+  std::size_t memory_bytes() const override { return nx_.size() * 4 * sizeof(double); }
 
 private:
-  void kernel(bool evaluate_energy);
+  void kernel(SphereSystem& system, bool evaluate_energy);
   // Per contact, in slot order, one array per component (vector loads).
   std::vector<double> nx_, ny_, nz_;  ///< n0, first -> second
   std::vector<double> overlap0_;      ///< u_0

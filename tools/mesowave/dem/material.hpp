@@ -5,11 +5,13 @@
 //   F_n,min = T R^2,   F_s,max = C R^2,   R = min(R_A, R_B)              (Eq. 6)
 #include <algorithm>
 #include <limits>
+#include <map>
+#include <string>
 
 namespace mesowave::dem {
 
 struct CohesiveFrictionalMaterial {
-  double young_Pa = 0;            ///< E_dem, the contact modulus of Eq. (3)
+  double E_dem_Pa = 0;            ///< E_dem, the contact modulus of Eq. (3)
   double stiffness_ratio = 0;     ///< nu_dem = K_s / K_n (Yade's CohFrictMat.poisson)
   double friction_angle_rad = 0;  ///< mu of Eqs. (4)-(5)
   /// T and C of Eq. (6); infinity = a bond that never breaks (no strength given).
@@ -23,9 +25,12 @@ struct CohesiveFrictionalMaterial {
                                   cohesion_Pa < std::numeric_limits<double>::infinity(); }
 };
 
+/// A law's own parameters beyond these (material_parameters.hpp key -> SI value).
+using LawParameters = std::map<std::string, double>;
+
 /// Eq. (3): the harmonic mean of the two spheres' stiffnesses E R_A and E R_B.
 inline double normal_stiffness(const CohesiveFrictionalMaterial& m, double r_a, double r_b) {
-  return m.young_Pa * 2.0 * r_a * r_b / (r_a + r_b);
+  return m.E_dem_Pa * 2.0 * r_a * r_b / (r_a + r_b);
 }
 inline double shear_stiffness(const CohesiveFrictionalMaterial& m, double r_a, double r_b) {
   return m.stiffness_ratio * normal_stiffness(m, r_a, r_b);

@@ -6,6 +6,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/dem/plugins.hpp"
 #include "mesowave/dem/sphere_selection.hpp"
 
 namespace mesowave::dem {
@@ -40,10 +41,8 @@ double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& s, const
       stiffest = std::max(stiffest, kn);
     }
   if (!std::isfinite(weakest)) return std::numeric_limits<double>::infinity();  // a loaded sphere without bonds
-  const bool moving = load.spec->kind == "velocity" || load.spec->kind == "wall";
-  const double amplitude = std::abs(load.spec->amplitude) * (moving ? duration_s : 1.0);
-  const double per_sphere = load.spec->kind == "force" ? amplitude / double(load.spheres.size()) : stiffest * amplitude;
-  return per_sphere / weakest;
+  const ActuatorKind& kind = actuator_kinds().get(load.spec->kind, "actuator " + load.spec->name);
+  return kind.peak_sphere_force(*load.spec, load.spheres.size(), stiffest, duration_s) / weakest;
 }
 
 ModelChoice choose_model(const std::string& requested, const Scene& scene, const SphereSet& s,
@@ -53,9 +52,19 @@ ModelChoice choose_model(const std::string& requested, const Scene& scene, const
     c.estimated_force_ratio = std::max(c.estimated_force_ratio, estimated_force_ratio(load, s, bonds, scene.material, scene.duration_s));
   const auto axis = line_axis(s);
 
-  std::string chain_obstacle;
-  if (!axis) chain_obstacle = "the sphere centres are not on one line";
-  else {
+  const ContactLaw& law = contact_laws().get(scene.contact_law, "[material].law");
+  const auto offers = [&](const std::string& model) {
+    return std::find(law.models.begin(), law.models.end(), model) != law.models.end();
+  };
+  // The law's own rule first (a shortcut it does not offer, or one its values rule out).
+  const auto law_obstacle = [&](const std::string& model) {
+    if (!offers(model)) return "the " + law.name + " law has no " + model + " model";
+    return law.shortcut_obstacle(model, scene);
+  };
+
+  std::string chain_obstacle = law_obstacle("chain");
+  if (chain_obstacle.empty() && !axis) chain_obstacle = "the sphere centres are not on one line";
+  else if (chain_obstacle.empty()) {
     for (const auto& load : loads)
       if (std::abs(std::abs(dot(load.direction, *axis)) - 1.0) > 1e-9)
         chain_obstacle = "actuator " + load.spec->name + " does not load along the line";
@@ -67,6 +76,7 @@ ModelChoice choose_model(const std::string& requested, const Scene& scene, const
   if (requested != "auto") {
     if (requested == "chain" && !chain_obstacle.empty())
       throw InputError("--model chain is not possible: " + chain_obstacle);
+    if (!offers(requested)) throw InputError("--model " + requested + " is not possible: " + law_obstacle(requested));
     c.model = requested;
     c.reason = "forced (model = " + requested + ")";
     return c;
@@ -80,7 +90,8 @@ ModelChoice choose_model(const std::string& requested, const Scene& scene, const
     return c;
   }
   const double bound = scene.linear_validity_bound;
-  if (c.estimated_force_ratio < bound) {
+  const std::string linear_obstacle = law_obstacle("linear");
+  if (linear_obstacle.empty() && c.estimated_force_ratio < bound) {
     c.model = "linear";
     c.reason = "estimated peak bond force / strength " + format_number(c.estimated_force_ratio) +
                " is below the validity bound " + format_number(bound) +
@@ -89,9 +100,12 @@ ModelChoice choose_model(const std::string& requested, const Scene& scene, const
     return c;
   }
   c.model = "full";
-  c.reason = "estimated peak bond force / strength " + format_number(c.estimated_force_ratio) +
-             " reaches the linear validity bound " + format_number(bound) +
-             ": full cohesive-frictional law with contact detection";
+  c.reason = linear_obstacle.empty()
+                 ? "estimated peak bond force / strength " + format_number(c.estimated_force_ratio) +
+                       " reaches the linear validity bound " + format_number(bound) +
+                       ": full cohesive-frictional law with contact detection"
+                 : "full " + law.name + " law with contact detection (" + linear_obstacle + "; " + chain_obstacle +
+                       " for the chain)";
   return c;
 }
 

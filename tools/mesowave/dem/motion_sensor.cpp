@@ -1,6 +1,7 @@
 #include "mesowave/dem/motion_sensor.hpp"
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/dem/plugins.hpp"
 
 namespace mesowave::dem {
 
@@ -49,6 +50,47 @@ signal::Signal MotionSensor::signal(double dt_s) const {
 std::string MotionSensor::description() const {
   return to_string(quantity_) + " (" + component_name_ + ") averaged over " + std::to_string(spheres_.size()) +
          " spheres, " + every();
+}
+
+
+namespace {
+
+void read_motion_sensor(SceneKeys& k, SensorSpec& spec, const std::string& quantity, const std::vector<ActuatorSpec>&) {
+  spec.quantity = parse_motion_quantity(quantity);
+  spec.target = read_target(k);
+  spec.component = k.text("component", spec.target.kind == SphereTarget::Kind::patch ? "normal" : "");
+  if (spec.component.empty()) throw InputError(k.where() + " needs component (x, -x, ..., magnitude) when it is not on a face");
+  if (spec.component == "inward") throw InputError(k.where() + ".component must be normal, an axis or magnitude");
+  direction_vector(spec.component, spec.target, k.where(), std::nullopt, true);
+}
+
+}  // namespace
+
+void register_motion_sensor(Plugins& p) {
+  p.sensors.add({
+      .name = "motion",
+      .quantities = {"acceleration", "velocity", "displacement"},
+      .summary = "acceleration, velocity or displacement averaged over the spheres under a patch (or one sphere)",
+      .keys = {{"component", "", 0, 0, "normal | line | x | -x | ... | magnitude"},
+               {"sample_interval_ns", "ns", 0, 1e12, "time between samples (every step)"}},
+      .parse = read_motion_sensor,
+      .targets = [](const SensorSpec& spec) {
+        return std::vector<std::pair<const SphereTarget*, std::string>>{{&spec.target, ""}};
+      },
+      .make = [](const SensorSite& site, Placement& where) -> std::unique_ptr<Sensor> {
+        const SensorSpec& sensor = site.spec;
+        const std::vector<std::size_t>& chosen = site.groups[0];
+        const Vec3 component = direction_vector(sensor.component, sensor.target, "sensor " + sensor.name, site.line);
+        where.kind = to_string(sensor.quantity);
+        where.spheres = packing_indices(site.model, chosen);
+        where.direction = component;
+        Vec3 position{};
+        for (std::size_t k : chosen) position += site.model.reference_position(k);
+        position = (1.0 / double(chosen.size())) * position;
+        return std::make_unique<MotionSensor>(sensor.name, chosen, sensor.quantity, component, sensor.component,
+                                              site.every, position);
+      },
+  });
 }
 
 }  // namespace mesowave::dem

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "mesowave/dem/material_parameters.hpp"
+#include "mesowave/dem/plugins.hpp"
 #include "mesowave/io/csv.hpp"
 
 namespace mesowave::dem {
@@ -36,14 +38,10 @@ nlohmann::ordered_json to_json(const RunReport& r) {
   j["lanczos_iterations"] = r.dt_cr.lanczos_iterations;
   j["memory_estimate_MiB"] = double(r.memory_bytes) / (1024.0 * 1024.0);
   nlohmann::ordered_json m;
-  m["E_dem_Pa"] = r.material.young_Pa;
-  m["nu_dem"] = r.material.stiffness_ratio;
-  m["friction_angle_rad"] = r.material.friction_angle_rad;
-  m["T_Pa"] = finite_or_null(r.material.tensile_strength_Pa);
-  m["C_Pa"] = finite_or_null(r.material.cohesion_Pa);
-  m["density_kg_m3"] = r.material.density_kg_m3;
-  m["damping"] = r.material.damping;
-  m["bond_factor"] = r.material.bond_factor;
+  for (const MaterialParameter& p : material_parameters()) m[p.report_key] = finite_or_null(r.material.*p.field);
+  m["law"] = r.contact_law;
+  const nlohmann::ordered_json law = contact_laws().get(r.contact_law, "law").describe(r.law_parameters);
+  for (const auto& [key, value] : law.items()) m[key] = value;
   j["material"] = m;
   auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v.x + 0.0, v.y + 0.0, v.z + 0.0}); };
   j["actuator_loads"] = nlohmann::ordered_json::array();
@@ -53,8 +51,7 @@ nlohmann::ordered_json to_json(const RunReport& r) {
     e["kind"] = a.kind;
     e["spheres"] = a.spheres;
     e["direction"] = vec(a.direction);
-    const bool moving = a.kind == "velocity" || a.kind == "wall";
-    e[a.kind == "force" ? "amplitude_N" : moving ? "velocity_m_s" : "amplitude_m"] = a.amplitude;
+    e[actuator_kinds().get(a.kind, "actuator " + a.name).report_key] = a.amplitude;
     e["frequency_hz"] = a.frequency_hz;
     e["cycles"] = a.cycles;
     e["delay_s"] = a.delay_s;

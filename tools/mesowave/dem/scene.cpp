@@ -14,66 +14,12 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/core/units.hpp"
+#include "mesowave/dem/material_parameters.hpp"
+#include "mesowave/dem/plugins.hpp"
+#include "mesowave/dem/scene_keys.hpp"
 
 namespace mesowave::dem {
 namespace {
-
-// A TOML table whose keys must all be read: finish() names any left over.
-class Keys {
-public:
-  Keys(const toml::table& table, std::string where) : table_(table), where_(std::move(where)) {}
-
-  const toml::node* get(const std::string& key) {
-    used_.insert(key);
-    return table_.get(key);
-  }
-  bool has(const std::string& key) const { return table_.contains(key); }
-
-  std::optional<double> number(const std::string& key) {
-    const toml::node* n = get(key);
-    if (!n) return std::nullopt;
-    if (auto v = n->value<double>()) return *v;
-    throw InputError(where_ + "." + key + " must be a number");
-  }
-  double number(const std::string& key, double fallback) { return number(key).value_or(fallback); }
-  double required_number(const std::string& key) {
-    auto v = number(key);
-    if (!v) throw InputError(where_ + " needs " + key);
-    return *v;
-  }
-  std::optional<std::string> text(const std::string& key) {
-    const toml::node* n = get(key);
-    if (!n) return std::nullopt;
-    if (auto v = n->value<std::string>()) return *v;
-    throw InputError(where_ + "." + key + " must be a string");
-  }
-  std::string text(const std::string& key, const std::string& fallback) { return text(key).value_or(fallback); }
-  std::optional<std::vector<double>> numbers(const std::string& key, std::size_t count) {
-    const toml::node* n = get(key);
-    if (!n) return std::nullopt;
-    const toml::array* a = n->as_array();
-    if (!a || a->size() != count)
-      throw InputError(where_ + "." + key + " must be an array of " + std::to_string(count) + " numbers");
-    std::vector<double> out;
-    for (const auto& e : *a) {
-      auto v = e.value<double>();
-      if (!v) throw InputError(where_ + "." + key + " must be an array of " + std::to_string(count) + " numbers");
-      out.push_back(*v);
-    }
-    return out;
-  }
-  const std::string& where() const { return where_; }
-  void finish() const {
-    for (const auto& [key, node] : table_)
-      if (!used_.count(std::string(key.str())))
-        throw InputError(where_ + " has an unknown key \"" + std::string(key.str()) + "\"");
-  }
-
-private:
-  const toml::table& table_;
-  std::string where_;
-  std::set<std::string> used_;
-};
 
 const toml::table& table_or_empty(const toml::table& root, const std::string& key, const std::string& origin) {
   static const toml::table empty;
@@ -85,7 +31,76 @@ const toml::table& table_or_empty(const toml::table& root, const std::string& ke
 
 Vec3 vec_mm(const std::vector<double>& v) { return {v[0] * units::mm, v[1] * units::mm, v[2] * units::mm}; }
 
-SphereTarget read_target(Keys& k) {
+UniaxialTestSpec read_test(SceneKeys& k, const std::vector<SensorSpec>& sensors) {
+  UniaxialTestSpec t;
+  const std::string kind = k.text("kind", "");
+  if (kind == "compression") t.kind = UniaxialTestSpec::Kind::compression;
+  else if (kind == "tension") t.kind = UniaxialTestSpec::Kind::tension;
+  else throw InputError(k.where() + ".kind (\"" + kind + "\") must be compression or tension");
+  auto names = [&](const std::string& key, const std::string& want, const char* what, bool required) {
+    std::vector<std::string> out;
+    const toml::node* n = k.get(key);
+    if (!n) {
+      if (required) throw InputError(k.where() + " needs " + key + " = [sensor names] (" + what + ")");
+      return out;
+    }
+    if (auto single = n->value<std::string>()) out.push_back(*single);
+    else if (const toml::array* a = n->as_array())
+      for (const auto& e : *a) {
+        auto v = e.value<std::string>();
+        if (!v) throw InputError(k.where() + "." + key + " must list sensor names");
+        out.push_back(*v);
+      }
+    else throw InputError(k.where() + "." + key + " must list sensor names");
+    if (out.empty() && required) throw InputError(k.where() + "." + key + " is empty (" + what + ")");
+    for (const auto& name : out) {
+      const SensorSpec* found = nullptr;
+      for (const auto& s : sensors) if (s.name == name) found = &s;
+      if (!found) throw InputError(k.where() + "." + key + ": no sensor named \"" + name + "\"");
+      if (found->kind != want) throw InputError(k.where() + "." + key + ": sensor " + name + " is not " + what);
+    }
+    return out;
+  };
+  t.load = names("load", "force", "a force sensor", true);
+  t.axial = names("axial", "strain", "an extensometer", true);
+  t.lateral = names("lateral", "strain", "an extensometer", false);
+  const auto broken = names("broken_bonds", "broken_bonds", "a broken_bonds sensor", false);
+  if (broken.size() > 1) throw InputError(k.where() + ".broken_bonds names one sensor");
+  if (!broken.empty()) t.broken_bonds = broken.front();
+  std::optional<double> interval;
+  for (const auto& name : t.sensor_names())
+    for (const auto& s : sensors)
+      if (s.name == name) {
+        if (interval && *interval != s.sample_interval_s)
+          throw InputError(k.where() + ": the test's sensors must sample together; " + name +
+                           " has another sample_interval_ns than " + t.load.front());
+        interval = s.sample_interval_s;
+      }
+  if (auto area = k.number("area_mm2")) t.area_m2 = require_positive(k.where() + ".area_mm2", *area, "mm2") * units::mm * units::mm;
+  const bool pct = k.has("modulus_levels_pct"), abs = k.has("modulus_levels_MPa");
+  if (pct && abs) throw InputError(k.where() + ": give modulus_levels_pct or modulus_levels_MPa, not both");
+  if (pct || abs) {
+    const auto v = *k.numbers(pct ? "modulus_levels_pct" : "modulus_levels_MPa", 2);
+    const std::string key = k.where() + (pct ? ".modulus_levels_pct" : ".modulus_levels_MPa");
+    if (!(v[0] >= 0 && v[1] > v[0] && (abs || v[1] < 100)))
+      throw InputError(key + " [" + format_number(v[0]) + ", " + format_number(v[1]) + "] must rise from a lower to an upper level" +
+                       (pct ? " below 100 % of the peak" : ""));
+    t.levels_absolute = abs;
+    t.levels[0] = pct ? v[0] / 100 : v[0] * units::MPa;
+    t.levels[1] = pct ? v[1] / 100 : v[1] * units::MPa;
+  }
+  t.stop_drop = require_in_range(k.where() + ".stop_drop_pct", k.number("stop_drop_pct", 0.0), 0.0, 99.0, "%") / 100;
+  t.stop_armed_above_Pa = require_in_range(k.where() + ".stop_armed_above_MPa", k.number("stop_armed_above_MPa", 0.0), 0.0, 1e6, "MPa") * units::MPa;
+  if (t.stop_drop > 0 && !k.has("stop_armed_above_MPa"))
+    throw InputError(k.where() + ": stop_drop_pct needs stop_armed_above_MPa, the stress above which a drop counts (a "
+                     "testing machine's break detection; the first load steps are noisy)");
+  t.stop_at_Pa = require_in_range(k.where() + ".stop_at_MPa", k.number("stop_at_MPa", 0.0), 0.0, 1e6, "MPa") * units::MPa;
+  t.inertial_number_bound = require_in_range(k.where() + ".inertial_number_bound", k.number("inertial_number_bound", 1e-4), 0.0, 1.0);
+  return t;
+}
+}  // namespace
+
+SphereTarget read_target(SceneKeys& k) {
   SphereTarget t;
   const bool has_face = k.has("face"), has_point = k.has("point_mm"), has_sphere = k.has("sphere");
   if (int(has_face) + int(has_point) + int(has_sphere) != 1)
@@ -123,183 +138,29 @@ SphereTarget read_target(Keys& k) {
 }
 
 
-double read_ramp(Keys& k) {
+double read_ramp(SceneKeys& k) {
   return require_in_range(k.where() + ".ramp_us", k.number("ramp_us", 0.0), 0.0, 1e12, "us") * units::us;
 }
 
-void read_burst_or_platen(Keys& k, ActuatorSpec& spec) {
+void read_actuator_load(SceneKeys& k, ActuatorSpec& spec, double scale, bool burst) {
   spec.target = read_target(k);
   spec.direction = k.text("direction", spec.target.kind == SphereTarget::Kind::patch ? "inward" : "");
   if (spec.direction.empty()) throw InputError(k.where() + " needs direction (x, -x, ...) when it is not on a face");
   direction_vector(spec.direction, spec.target, k.where(), std::nullopt, true);
   if (spec.direction == "magnitude" || spec.direction == "normal")
     throw InputError(k.where() + ".direction must be inward or an axis (x, -x, ...)");
-  static const std::map<std::string, std::string> amplitude_key = {
-      {"force", "amplitude_N"}, {"displacement", "amplitude_nm"}, {"velocity", "velocity_mm_s"}};
-  if (!amplitude_key.count(spec.kind))
-    throw InputError(k.where() + ".kind (\"" + spec.kind + "\") must be force, displacement, velocity or wall");
-  for (const auto& [kind, key] : amplitude_key)
-    if (kind != spec.kind && k.has(key))
-      throw InputError(k.where() + ": a " + spec.kind + " actuator takes " + amplitude_key.at(spec.kind) + ", not " + key);
-  const std::string key = amplitude_key.at(spec.kind);
-  const double scale = spec.kind == "force" ? 1.0 : spec.kind == "displacement" ? units::nm : units::mm;
+  const std::string& key = actuator_kinds().get(spec.kind, k.where() + ".kind").amplitude_key;
+  for (const auto& other : actuator_kinds().entries())
+    if (!other.amplitude_key.empty() && other.amplitude_key != key && k.has(other.amplitude_key))
+      throw InputError(k.where() + ": a " + spec.kind + " actuator takes " + key + ", not " + other.amplitude_key);
   spec.amplitude = require_finite(k.where() + "." + key, k.required_number(key)) * scale;
-  if (spec.kind != "velocity") {
+  if (burst) {
     spec.frequency_hz = require_positive(k.where() + ".frequency_kHz", k.required_number("frequency_kHz"), "kHz") * units::kHz;
     spec.cycles = require_positive(k.where() + ".cycles", k.number("cycles", 5.0));
   }
   spec.delay_s = require_in_range(k.where() + ".delay_us", k.number("delay_us", 0.0), 0.0, 1e9, "us") * units::us;
-  if (spec.kind == "velocity") spec.ramp_s = read_ramp(k);
+  if (!burst) spec.ramp_s = read_ramp(k);
 }
-
-// A platen: the whole face, moving inward (or fixed).
-void read_wall(Keys& k, ActuatorSpec& spec) {
-  auto face = k.text("face");
-  if (!face) throw InputError(k.where() + ": a wall needs face (x-, x+, y-, y+, z- or z+)");
-  for (const char* key : {"centre_mm", "patch_mm", "point_mm", "sphere", "direction", "amplitude_N"})
-    if (k.has(key)) throw InputError(k.where() + ": a wall covers its whole face and moves along its normal; drop " + key);
-  spec.target.kind = SphereTarget::Kind::patch;
-  spec.target.patch.face = Face::parse(*face);
-  spec.target.patch.size_m[0] = spec.target.patch.size_m[1] = std::numeric_limits<double>::infinity();
-  spec.direction = "inward";
-  spec.amplitude = require_in_range(k.where() + ".velocity_mm_s", k.number("velocity_mm_s", 0.0), 0.0, 1e6, "mm/s") * units::mm;
-  spec.delay_s = require_in_range(k.where() + ".delay_us", k.number("delay_us", 0.0), 0.0, 1e9, "us") * units::us;
-  spec.ramp_s = read_ramp(k);
-}
-
-void read_force_sensor(Keys& k, SensorSpec& spec, const std::vector<ActuatorSpec>& actuators) {
-  spec.kind = SensorSpec::Kind::force;
-  auto actuator = k.text("actuator");
-  if (!actuator) throw InputError(k.where() + ": quantity force needs actuator = NAME (the force it applies)");
-  bool known = false;
-  for (const auto& a : actuators) known = known || a.name == *actuator;
-  if (!known) throw InputError(k.where() + ": no actuator named \"" + *actuator + "\"");
-  spec.actuator = *actuator;
-}
-
-void read_motion_sensor(Keys& k, SensorSpec& spec, const std::string& quantity) {
-  spec.kind = SensorSpec::Kind::motion;
-  spec.quantity = parse_motion_quantity(quantity);
-  spec.target = read_target(k);
-  spec.component = k.text("component", spec.target.kind == SphereTarget::Kind::patch ? "normal" : "");
-  if (spec.component.empty()) throw InputError(k.where() + " needs component (x, -x, ..., magnitude) when it is not on a face");
-  if (spec.component == "inward") throw InputError(k.where() + ".component must be normal, an axis or magnitude");
-  direction_vector(spec.component, spec.target, k.where(), std::nullopt, true);
-}
-
-// An extensometer: two pads on one face, gauge_mm apart along component and
-// centred on centre_mm, or the two end spheres of a line.
-void read_extensometer(Keys& k, SensorSpec& spec) {
-  spec.kind = SensorSpec::Kind::strain;
-  spec.component = k.text("component", "");
-  static const std::set<std::string> axes = {"x", "y", "z", "line"};
-  if (!axes.count(spec.component))
-    throw InputError(k.where() + ": an extensometer needs component = \"x\", \"y\", \"z\" or \"line\" (its gauge axis)");
-  if (k.has("between")) {
-    const toml::array* a = k.get("between")->as_array();
-    if (!a || a->size() != 2 || !(*a)[0].value<std::string>() || !(*a)[1].value<std::string>())
-      throw InputError(k.where() + ".between must be [\"first\", \"last\"] (the end spheres of a line)");
-    for (int e = 0; e < 2; ++e) {
-      const std::string which = *(*a)[std::size_t(e)].value<std::string>();
-      if (which != "first" && which != "last")
-        throw InputError(k.where() + ".between: \"" + which + "\" must be \"first\" or \"last\"");
-      spec.ends[e].kind = SphereTarget::Kind::end;
-      spec.ends[e].last = which == "last";
-    }
-    if (spec.ends[0].last == spec.ends[1].last) throw InputError(k.where() + ".between names one sphere twice");
-    return;
-  }
-  const SphereTarget centre = read_target(k);
-  if (centre.kind != SphereTarget::Kind::patch)
-    throw InputError(k.where() + ": an extensometer sits on a face (face, centre_mm, gauge_mm, patch_mm) or between the "
-                     "ends of a line (between = [\"first\", \"last\"])");
-  if (spec.component == "line") throw InputError(k.where() + ": component \"line\" needs between = [\"first\", \"last\"]");
-  const int axis = spec.component[0] - 'x';
-  if (axis == centre.patch.face.axis)
-    throw InputError(k.where() + ": component " + spec.component + " is normal to face " + centre.patch.face.name() +
-                     "; a face's extensometer measures along the face");
-  // The pads sit gauge/2 either side of the centre, in the centre's own terms.
-  const bool relative = centre.patch.relative;
-  const char* key = relative ? "gauge_rel" : "gauge_mm";
-  if (k.has(relative ? "gauge_mm" : "gauge_rel"))
-    throw InputError(k.where() + ": centre_" + (relative ? "rel takes gauge_rel" : "mm takes gauge_mm") +
-                     " (both in the same terms)");
-  const double gauge = require_positive(k.where() + "." + key, k.required_number(key), relative ? "" : "mm") *
-                       (relative ? 1.0 : units::mm);
-  for (int e = 0; e < 2; ++e) {
-    spec.ends[e] = centre;
-    (relative ? spec.ends[e].patch.centre_rel : spec.ends[e].patch.centre_m)[axis] += (e == 0 ? -0.5 : 0.5) * gauge;
-  }
-}
-
-UniaxialTestSpec read_test(Keys& k, const std::vector<SensorSpec>& sensors) {
-  UniaxialTestSpec t;
-  const std::string kind = k.text("kind", "");
-  if (kind == "compression") t.kind = UniaxialTestSpec::Kind::compression;
-  else if (kind == "tension") t.kind = UniaxialTestSpec::Kind::tension;
-  else throw InputError(k.where() + ".kind (\"" + kind + "\") must be compression or tension");
-  auto names = [&](const std::string& key, SensorSpec::Kind want, const char* what, bool required) {
-    std::vector<std::string> out;
-    const toml::node* n = k.get(key);
-    if (!n) {
-      if (required) throw InputError(k.where() + " needs " + key + " = [sensor names] (" + what + ")");
-      return out;
-    }
-    if (auto single = n->value<std::string>()) out.push_back(*single);
-    else if (const toml::array* a = n->as_array())
-      for (const auto& e : *a) {
-        auto v = e.value<std::string>();
-        if (!v) throw InputError(k.where() + "." + key + " must list sensor names");
-        out.push_back(*v);
-      }
-    else throw InputError(k.where() + "." + key + " must list sensor names");
-    if (out.empty() && required) throw InputError(k.where() + "." + key + " is empty (" + what + ")");
-    for (const auto& name : out) {
-      const SensorSpec* found = nullptr;
-      for (const auto& s : sensors) if (s.name == name) found = &s;
-      if (!found) throw InputError(k.where() + "." + key + ": no sensor named \"" + name + "\"");
-      if (found->kind != want) throw InputError(k.where() + "." + key + ": sensor " + name + " is not " + what);
-    }
-    return out;
-  };
-  t.load = names("load", SensorSpec::Kind::force, "a force sensor", true);
-  t.axial = names("axial", SensorSpec::Kind::strain, "an extensometer", true);
-  t.lateral = names("lateral", SensorSpec::Kind::strain, "an extensometer", false);
-  const auto broken = names("broken_bonds", SensorSpec::Kind::broken_bonds, "a broken_bonds sensor", false);
-  if (broken.size() > 1) throw InputError(k.where() + ".broken_bonds names one sensor");
-  if (!broken.empty()) t.broken_bonds = broken.front();
-  std::optional<double> interval;
-  for (const auto& name : t.sensor_names())
-    for (const auto& s : sensors)
-      if (s.name == name) {
-        if (interval && *interval != s.sample_interval_s)
-          throw InputError(k.where() + ": the test's sensors must sample together; " + name +
-                           " has another sample_interval_ns than " + t.load.front());
-        interval = s.sample_interval_s;
-      }
-  if (auto area = k.number("area_mm2")) t.area_m2 = require_positive(k.where() + ".area_mm2", *area, "mm2") * units::mm * units::mm;
-  const bool pct = k.has("modulus_levels_pct"), abs = k.has("modulus_levels_MPa");
-  if (pct && abs) throw InputError(k.where() + ": give modulus_levels_pct or modulus_levels_MPa, not both");
-  if (pct || abs) {
-    const auto v = *k.numbers(pct ? "modulus_levels_pct" : "modulus_levels_MPa", 2);
-    const std::string key = k.where() + (pct ? ".modulus_levels_pct" : ".modulus_levels_MPa");
-    if (!(v[0] >= 0 && v[1] > v[0] && (abs || v[1] < 100)))
-      throw InputError(key + " [" + format_number(v[0]) + ", " + format_number(v[1]) + "] must rise from a lower to an upper level" +
-                       (pct ? " below 100 % of the peak" : ""));
-    t.levels_absolute = abs;
-    t.levels[0] = pct ? v[0] / 100 : v[0] * units::MPa;
-    t.levels[1] = pct ? v[1] / 100 : v[1] * units::MPa;
-  }
-  t.stop_drop = require_in_range(k.where() + ".stop_drop_pct", k.number("stop_drop_pct", 0.0), 0.0, 99.0, "%") / 100;
-  t.stop_armed_above_Pa = require_in_range(k.where() + ".stop_armed_above_MPa", k.number("stop_armed_above_MPa", 0.0), 0.0, 1e6, "MPa") * units::MPa;
-  if (t.stop_drop > 0 && !k.has("stop_armed_above_MPa"))
-    throw InputError(k.where() + ": stop_drop_pct needs stop_armed_above_MPa, the stress above which a drop counts (a "
-                     "testing machine's break detection; the first load steps are noisy)");
-  t.stop_at_Pa = require_in_range(k.where() + ".stop_at_MPa", k.number("stop_at_MPa", 0.0), 0.0, 1e6, "MPa") * units::MPa;
-  t.inertial_number_bound = require_in_range(k.where() + ".inertial_number_bound", k.number("inertial_number_bound", 1e-4), 0.0, 1.0);
-  return t;
-}
-}  // namespace
 
 std::string SphereTarget::describe() const {
   auto mm = [](const Vec3& v) {
@@ -350,25 +211,19 @@ Vec3 direction_vector(const std::string& name, const SphereTarget& target, const
 }
 
 const std::vector<std::string>& material_keys() {
-  static const std::vector<std::string> keys = {"E_dem_GPa", "nu_dem", "friction_angle_deg", "T_MPa",
-                                                "C_MPa",     "density_kg_m3", "damping", "bond_factor"};
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k;
+    for (const auto& p : material_parameters()) k.push_back(p.key);
+    return k;
+  }();
   return keys;
 }
 
 void set_material_value(Scene& s, const std::string& key, double value, const std::string& name) {
-  CohesiveFrictionalMaterial& m = s.material;
-  if (key == "E_dem_GPa") m.young_Pa = require_positive(name, value, "GPa") * units::GPa;
-  else if (key == "nu_dem") m.stiffness_ratio = require_in_range(name, value, 0.0, 10.0);
-  else if (key == "friction_angle_deg")
-    m.friction_angle_rad = require_in_range(name, value, 0.0, 89.9, "deg") * std::numbers::pi / 180.0;
-  else if (key == "T_MPa") m.tensile_strength_Pa = require_positive(name, value, "MPa") * units::MPa;
-  else if (key == "C_MPa") m.cohesion_Pa = require_positive(name, value, "MPa") * units::MPa;
-  else if (key == "density_kg_m3") {
-    m.density_kg_m3 = require_positive(name, value, "kg/m3");
-    s.density_given = true;
-  } else if (key == "damping") m.damping = require_in_range(name, value, 0.0, 0.99);
-  else if (key == "bond_factor") m.bond_factor = require_positive(name, value);
-  else throw InputError(name + ": unknown material key \"" + key + "\"");
+  const MaterialParameter& p = material_parameter(key, name);
+  const double checked = p.positive ? require_positive(name, value, p.unit) : require_in_range(name, value, p.min, p.max, p.unit);
+  s.material.*p.field = p.to_si(checked);
+  if (p.field == &CohesiveFrictionalMaterial::density_kg_m3) s.density_given = true;
 }
 
 Scene parse_scene(const std::string& text, const std::string& origin) {
@@ -386,33 +241,36 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
 
   Scene s;
   {
-    Keys k(table_or_empty(root, "scene", origin), origin + ": [scene]");
+    SceneKeys k(table_or_empty(root, "scene", origin), origin + ": [scene]");
     s.name = k.text("name", "scene");
     s.description = k.text("description", "");
     k.finish();
   }
   {
-    Keys k(table_or_empty(root, "packing", origin), origin + ": [packing]");
+    SceneKeys k(table_or_empty(root, "packing", origin), origin + ": [packing]");
     auto file = k.text("file");
     if (!file || file->empty()) throw InputError(origin + ": [packing] needs file (a packing HDF5 file from mw-pack)");
     s.packing_file = *file;
     k.finish();
   }
   {
-    Keys k(table_or_empty(root, "material", origin), origin + ": [material]");
+    SceneKeys k(table_or_empty(root, "material", origin), origin + ": [material]");
     if (!k.has("E_dem_GPa")) throw InputError(k.where() + " needs E_dem_GPa");
     for (const std::string& key : material_keys())
       if (auto v = k.number(key)) set_material_value(s, key, *v, k.where() + "." + key);
+    s.contact_law = k.text("law", s.contact_law);
+    for (const KeySpec& p : contact_laws().get(s.contact_law, k.where() + ".law").parameters)
+      s.law_parameters[p.key] = require_in_range(k.where() + "." + p.key, k.number(p.key, p.fallback), p.min, p.max, p.unit);
     k.finish();
   }
   {
-    Keys k(table_or_empty(root, "time", origin), origin + ": [time]");
+    SceneKeys k(table_or_empty(root, "time", origin), origin + ": [time]");
     s.dt_s = require_positive(k.where() + ".dt_ns", k.required_number("dt_ns"), "ns") * units::ns;
     s.duration_s = require_positive(k.where() + ".duration_ms", k.required_number("duration_ms"), "ms") * units::ms;
     k.finish();
   }
   {
-    Keys k(table_or_empty(root, "model", origin), origin + ": [model]");
+    SceneKeys k(table_or_empty(root, "model", origin), origin + ": [model]");
     s.model = k.text("choice", "auto");
     if (s.model != "auto" && s.model != "full" && s.model != "linear" && s.model != "chain")
       throw InputError(k.where() + ".choice (\"" + s.model + "\") must be auto, full, linear or chain");
@@ -434,16 +292,12 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
     for (std::size_t i = 0; i < a->size(); ++i) {
       const toml::table* t = (*a)[i].as_table();
       if (!t) throw InputError(origin + ": actuators are [[actuator]] tables");
-      Keys k(*t, origin + ": [[actuator]] " + std::to_string(i + 1));
+      SceneKeys k(*t, origin + ": [[actuator]] " + std::to_string(i + 1));
       ActuatorSpec spec;
       spec.name = k.text("name", "");
       unique_name(spec.name, k.where());
       spec.kind = k.text("kind", "force");
-      if (spec.kind == "wall") {
-        read_wall(k, spec);
-      } else {
-        read_burst_or_platen(k, spec);
-      }
+      actuator_kinds().get(spec.kind, k.where() + ".kind").parse(k, spec);
       k.finish();
       s.actuators.push_back(std::move(spec));
     }
@@ -454,15 +308,14 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
     for (std::size_t i = 0; i < a->size(); ++i) {
       const toml::table* t = (*a)[i].as_table();
       if (!t) throw InputError(origin + ": sensors are [[sensor]] tables");
-      Keys k(*t, origin + ": [[sensor]] " + std::to_string(i + 1));
+      SceneKeys k(*t, origin + ": [[sensor]] " + std::to_string(i + 1));
       SensorSpec spec;
       spec.name = k.text("name", "");
       unique_name(spec.name, k.where());
       const std::string quantity = k.text("quantity", "acceleration");
-      if (quantity == "force") read_force_sensor(k, spec, s.actuators);
-      else if (quantity == "strain") read_extensometer(k, spec);
-      else if (quantity == "broken_bonds") spec.kind = SensorSpec::Kind::broken_bonds;
-      else read_motion_sensor(k, spec, quantity);
+      const SensorKind& kind = sensor_kind_for_quantity(quantity, k.where());
+      spec.kind = kind.name;
+      kind.parse(k, spec, quantity, s.actuators);
       if (auto interval = k.number("sample_interval_ns"))
         spec.sample_interval_s = require_positive(k.where() + ".sample_interval_ns", *interval, "ns") * units::ns;
       k.finish();
@@ -470,12 +323,12 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
     }
   }
   if (root.contains("test")) {
-    Keys k(table_or_empty(root, "test", origin), origin + ": [test]");
+    SceneKeys k(table_or_empty(root, "test", origin), origin + ": [test]");
     s.test = read_test(k, s.sensors);
     k.finish();
   }
   {
-    Keys k(table_or_empty(root, "output", origin), origin + ": [output]");
+    SceneKeys k(table_or_empty(root, "output", origin), origin + ": [output]");
     s.snapshot_interval_s = require_in_range(k.where() + ".snapshot_interval_us", k.number("snapshot_interval_us", 0.0),
                                              0.0, 1e12, "us") * units::us;
     k.finish();

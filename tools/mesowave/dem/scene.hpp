@@ -52,7 +52,7 @@ struct SphereTarget {
 
 struct ActuatorSpec {
   std::string name;
-  std::string kind = "force";       ///< force | displacement | velocity | wall
+  std::string kind = "force";       ///< a registered actuator kind (plugins.hpp): force | displacement | velocity | wall
   SphereTarget target;
   std::string direction = "inward"; ///< inward (needs a face) | line | -line | x | -x | y | -y | z | -z
   double amplitude = 0;             ///< N (force), m (displacement) or m/s (velocity, wall)
@@ -63,7 +63,7 @@ struct ActuatorSpec {
 };
 
 struct SensorSpec {
-  enum class Kind { motion, force, strain, broken_bonds } kind = Kind::motion;
+  std::string kind = "motion";  ///< a registered sensor kind (plugins.hpp): motion | force | strain | broken_bonds
   std::string name;
   std::string actuator;  ///< kind force: the actuator whose force it records
   MotionQuantity quantity = MotionQuantity::acceleration;
@@ -77,7 +77,9 @@ struct Scene {
   std::filesystem::path source;  ///< the file it was read from, if any
   std::string name, description;
   std::filesystem::path packing_file;
+  std::string contact_law = "cohesive_frictional";  ///< a registered contact law (plugins.hpp)
   CohesiveFrictionalMaterial material;
+  LawParameters law_parameters;  ///< the law's own [material] keys, SI
   bool density_given = false;  ///< false: take the packing file's particle density
   double dt_s = 0, duration_s = 0;
   std::string model = "auto";

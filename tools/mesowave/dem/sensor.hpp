@@ -1,6 +1,7 @@
 #pragma once
 // A sensor samples the model after steps; one class per kind, one file each
-// (motion_sensor, actuator_force_sensor, extensometer). The simulation calls
+// (motion_sensor, actuator_force_sensor, extensometer), each kind registered
+// by name with its scene keys and factory (plugins.hpp). The simulation calls
 // record(model, n) after step n; a sensor takes a sample every `interval`
 // steps and says what one sample is.
 #include <cstdint>

@@ -6,15 +6,6 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
-#include "mesowave/dem/actuator_force_sensor.hpp"
-#include "mesowave/dem/axial_chain.hpp"
-#include "mesowave/dem/cohesive_frictional_contact.hpp"
-#include "mesowave/dem/displacement_actuator.hpp"
-#include "mesowave/dem/extensometer.hpp"
-#include "mesowave/dem/force_actuator.hpp"
-#include "mesowave/dem/linear_bonded_network.hpp"
-#include "mesowave/dem/motion_sensor.hpp"
-#include "mesowave/dem/rigid_wall.hpp"
 #include "mesowave/dem/sphere_selection.hpp"
 
 namespace mesowave::dem {
@@ -97,15 +88,13 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     const std::string who = "actuator " + a.name;
     loads.push_back({&a, resolve(a.target, spheres, box, who), direction_vector(a.direction, a.target, who, line)});
   }
-  // Spheres of each sensor: its patch (motion), or its two pads (an extensometer).
-  std::vector<std::vector<std::size_t>> sensor_spheres, sensor_pads;
+  // The sphere groups of each sensor (its patch, an extensometer's two pads), as its kind lists them.
+  std::vector<std::vector<std::vector<std::size_t>>> sensor_groups;
   for (const auto& sensor : scene_.sensors) {
     const std::string who = "sensor " + sensor.name;
-    const bool motion = sensor.kind == SensorSpec::Kind::motion;
-    const bool strain = sensor.kind == SensorSpec::Kind::strain;
-    sensor_spheres.push_back(motion ? resolve(sensor.target, spheres, box, who) : std::vector<std::size_t>{});
-    sensor_pads.push_back(strain ? resolve(sensor.ends[1], spheres, box, who + " (second pad)") : std::vector<std::size_t>{});
-    if (strain) sensor_spheres.back() = resolve(sensor.ends[0], spheres, box, who + " (first pad)");
+    sensor_groups.emplace_back();
+    for (const auto& [target, label] : sensor_kinds().get(sensor.kind, who).targets(sensor))
+      sensor_groups.back().push_back(resolve(*target, spheres, box, who + label));
   }
   const std::string requested = options_.model != "auto" ? options_.model : scene_.model;
   choice_ = choose_model(requested, scene_, spheres, bonds, loads);
@@ -131,81 +120,33 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
                        "bond_factor below (2 d)/(2 R) does)");
   }
 
-  if (choice_.model == "chain") {
-    const Vec3 axis = *line_axis(spheres);
-    model_ = std::make_unique<AxialChain>(std::move(spheres), bonds, m, axis);
-  } else if (choice_.model == "linear") {
-    model_ = std::make_unique<LinearBondedNetwork>(std::move(spheres), std::move(bonds), m);
-  } else {
-    model_ = std::make_unique<CohesiveFrictionalContact>(std::move(spheres), std::move(bonds), m);
-  }
+  model_ = contact_laws()
+               .get(scene_.contact_law, "[material].law")
+               .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line});
 
   const double ratio = scene_.duration_s / scene_.dt_s;
   steps_ = std::int64_t(std::ceil(ratio - 1e-9));
 
-  auto packing_indices = [&](const std::vector<std::size_t>& chosen) {
-    std::vector<std::uint32_t> out;
-    for (std::size_t k : chosen) out.push_back(model_->packing_index(k));
-    std::sort(out.begin(), out.end());
-    return out;
-  };
   for (std::size_t i = 0; i < loads.size(); ++i) {
     const ActuatorSpec& a = *loads[i].spec;
-    actuator_placements_.push_back({a.name, a.kind, packing_indices(loads[i].spheres), loads[i].direction, a.amplitude,
-                                    a.frequency_hz, a.cycles, a.delay_s, {}});
-    if (a.kind == "wall") {
-      actuators_.push_back(std::make_unique<RigidWall>(a.name, *model_, box, a.target.patch.face, m.young_Pa,
-                                                       VelocityRamp{a.amplitude, a.delay_s, a.ramp_s},
-                                                       a.amplitude * scene_.duration_s));
-      continue;
-    }
-    if (a.kind == "velocity") {
-      actuators_.push_back(std::make_unique<DisplacementActuator>(DisplacementActuator::constant_velocity(
-          a.name, loads[i].spheres, loads[i].direction, VelocityRamp{a.amplitude, a.delay_s, a.ramp_s})));
-      continue;
-    }
-    const signal::HannBurst burst(a.frequency_hz, a.cycles, a.amplitude, a.delay_s);
-    if (a.kind == "force") actuators_.push_back(std::make_unique<ForceActuator>(a.name, loads[i].spheres, loads[i].direction, burst));
-    else actuators_.push_back(std::make_unique<DisplacementActuator>(DisplacementActuator::burst(a.name, loads[i].spheres, loads[i].direction, burst)));
+    actuator_placements_.push_back({a.name, a.kind, packing_indices(*model_, loads[i].spheres), loads[i].direction,
+                                    a.amplitude, a.frequency_hz, a.cycles, a.delay_s, {}});
+    actuators_.push_back(actuator_kinds().get(a.kind, "actuator " + a.name).make(
+        ActuatorSite{a, loads[i].spheres, loads[i].direction, *model_, box, m, scene_.duration_s}));
   }
   for (std::size_t i = 0; i < scene_.sensors.size(); ++i) {
     const SensorSpec& sensor = scene_.sensors[i];
     const std::string who = "sensor " + sensor.name;
-    const std::vector<std::size_t>& chosen = sensor_spheres[i];
     const std::int64_t every =
         sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
-    if (sensor.kind == SensorSpec::Kind::force) {
-      const Actuator* source = nullptr;
-      for (const auto& a : actuators_)
-        if (a->name() == sensor.actuator) source = a.get();
-      sensors_.push_back(std::make_unique<ActuatorForceSensor>(sensor.name, *source, every));
-      sensor_placements_.push_back({sensor.name, "force of actuator " + sensor.actuator, {}, {}, 0, 0, 0, 0, {}});
-      continue;
-    }
-    if (sensor.kind == SensorSpec::Kind::broken_bonds) {
-      sensors_.push_back(std::make_unique<BrokenBondCounter>(sensor.name, every));
-      sensor_placements_.push_back({sensor.name, "broken bonds", {}, {}, 0, 0, 0, 0, {}});
-      continue;
-    }
-    if (sensor.kind == SensorSpec::Kind::strain) {
-      const Vec3 axis = direction_vector(sensor.component, sensor.target, who, line);
-      sensor_placements_.push_back(
-          {sensor.name, "strain", packing_indices(chosen), axis, 0, 0, 0, 0, packing_indices(sensor_pads[i])});
-      sensors_.push_back(std::make_unique<Extensometer>(sensor.name, *model_, chosen, sensor_pads[i], axis,
-                                                        sensor.component, every));
-      continue;
-    }
-    const Vec3 component = direction_vector(sensor.component, sensor.target, who, line);
-    sensor_placements_.push_back({sensor.name, to_string(sensor.quantity), packing_indices(chosen), component, 0, 0, 0, 0, {}});
-    Vec3 position{};
-    for (std::size_t k : chosen) position += model_->reference_position(k);
-    position = (1.0 / double(chosen.size())) * position;
-    sensors_.push_back(std::make_unique<MotionSensor>(sensor.name, chosen, sensor.quantity, component, sensor.component,
-                                                      every, position));
+    Placement where{sensor.name, "", {}, {}, 0, 0, 0, 0, {}};
+    sensors_.push_back(sensor_kinds().get(sensor.kind, who).make(
+        SensorSite{sensor, *model_, sensor_groups[i], line, every, actuators_}, where));
+    sensor_placements_.push_back(std::move(where));
   }
   double r_min = model_->radius(0);
   for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
-  dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.young_Pa, m.damping);
+  dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.E_dem_Pa, m.damping);
   // Walls add a contact spring to the spheres they touch: by Weyl's inequality
   // lambda_max(K + D) <= lambda_max(K) + max D, D the largest k_w / m.
   double boundary = 0;
@@ -226,6 +167,8 @@ RunReport Simulation::describe() const {
   r.scene = scene_.name;
   r.choice = choice_;
   r.material = scene_.material;
+  r.contact_law = scene_.contact_law;
+  r.law_parameters = scene_.law_parameters;
   r.actuator_placements = actuator_placements_;
   r.sensor_placements = sensor_placements_;
   r.spheres = model_->sphere_count();

@@ -25,6 +25,7 @@
 #include "mesowave/dem/model.hpp"
 #include "mesowave/dem/model_choice.hpp"
 #include "mesowave/dem/packing.hpp"
+#include "mesowave/dem/plugins.hpp"
 #include "mesowave/dem/scene.hpp"
 #include "mesowave/dem/sensor.hpp"
 #include "mesowave/dem/time_step.hpp"
@@ -41,20 +42,12 @@ struct SimulationOptions {
   std::function<void(const Model& model, double t_s, std::int64_t index)> on_snapshot;
 };
 
-/// Where an actuator or sensor acts, by packing index (what a second code needs to reproduce it).
-struct Placement {
-  std::string name;
-  std::string kind;                      ///< force | displacement | velocity | acceleration | ...
-  std::vector<std::uint32_t> spheres;    ///< packing indices, ascending (an extensometer: its first pad)
-  Vec3 direction;                        ///< load direction or sensor component (zero: magnitude)
-  double amplitude = 0, frequency_hz = 0, cycles = 0, delay_s = 0;  ///< actuators
-  std::vector<std::uint32_t> spheres_b;  ///< an extensometer's second pad
-};
-
 struct RunReport {
   std::string scene;
   ModelChoice choice;
   CohesiveFrictionalMaterial material;
+  std::string contact_law;
+  LawParameters law_parameters;
   std::vector<Placement> actuator_placements, sensor_placements;
   std::size_t spheres = 0, bonds = 0, contacts = 0, broken_bonds = 0, degrees_of_freedom = 0;
   int threads = 1;

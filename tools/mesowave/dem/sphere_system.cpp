@@ -18,9 +18,11 @@ inline double damped(double a, double v, double dt, double alpha) {
 // step): F_j = -K_n (n.dd) n - K_s' [P_t dd - (k_i th_i + k_j th_j) x n],
 // torques -k_i n x F_j and -k_j n x F_j, with Yade's kinematic branches
 // k = r dist0 / (r_i + r_j) and K_s' = K_s (r_i + r_j) / dist0.
+// With a law's rolling and twisting springs k_r, k_tw (0 without) the moment
+// on j is -k_r P_t (th_j - th_i) - k_tw n n.(th_j - th_i), on i its opposite.
 struct LinearBond {
   Vec3 n;
-  double kn, ks, ki, kj;
+  double kn, ks, ki, kj, kr = 0, ktw = 0;
   void forces(const Vec3& di, const Vec3& ti, const Vec3& dj, const Vec3& tj, Vec3& fi, Vec3& mi, Vec3& fj,
               Vec3& mj) const {
     const Vec3 dd = dj - di;
@@ -31,22 +33,34 @@ struct LinearBond {
     const Vec3 c = cross(n, fj);
     mi = -ki * c;
     mj = -kj * c;
+    if (kr != 0 || ktw != 0) {
+      const Vec3 dth = tj - ti;
+      const double twist = dot(n, dth);
+      const Vec3 m = -kr * (dth - twist * n) - (ktw * twist) * n;
+      mi -= m;
+      mj += m;
+    }
   }
 };
 
-LinearBond linear_bond(const SphereSet& s, const BondNetwork& b, const CohesiveFrictionalMaterial& m, std::size_t k) {
+LinearBond linear_bond(const SphereSystem& system, std::size_t k) {
+  const SphereSet& s = system.spheres();
+  const BondNetwork& b = system.bonds();
+  const CohesiveFrictionalMaterial& m = system.material();
   const double ri = s.radius_m[b.first[k]], rj = s.radius_m[b.second[k]];
   const double dist0 = ri + rj - b.overlap0_m[k];
   const double alpha = (ri + rj) / dist0;
-  return {b.normal0[k], normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha, rj / alpha};
+  LinearBond lb{b.normal0[k], normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha, rj / alpha};
+  system.kernel().moment_stiffness(system, k, lb.kr, lb.ktw);
+  return lb;
 }
 
 }  // namespace
 
 SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
-                           bool displacement_state, bool track_rotation)
-    : spheres_(std::move(spheres)), bonds_(std::move(bonds)), material_(material),
-      displacement_state_(displacement_state), track_rotation_(track_rotation) {
+                           std::unique_ptr<ContactKernel> kernel)
+    : spheres_(std::move(spheres)), bonds_(std::move(bonds)), material_(material), kernel_(std::move(kernel)),
+      displacement_state_(kernel_->displacement_state()), track_rotation_(kernel_->track_rotation()) {
   const std::size_t n = spheres_.size();
   x_ = displacement_state_ ? std::vector<Vec3>(n) : spheres_.centre_m;
   v_.assign(n, {});
@@ -81,10 +95,13 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
   sphere_chunk_ = (n + partitions_ - 1) / partitions_;
   first_ = bonds_.first;
   second_ = bonds_.second;
+  kernel_->attach(*this);
 }
 
+SphereSystem::~SphereSystem() = default;
+
 std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
-                                                      const std::vector<std::uint32_t>& second) {
+                                                      const std::vector<std::uint32_t>& second, bool moments) {
   const std::size_t count = first.size(), n = spheres_.size();
   std::vector<std::uint32_t> order;
   order.reserve(count);
@@ -112,6 +129,8 @@ std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uin
   const std::vector<std::uint32_t> cross_second(second_.begin() + std::ptrdiff_t(cross_begin_), second_.end());
   cross_incidence_ = make_incidence(n, cross_first, cross_second);
   out_.assign(count - cross_begin_, ContactOut{});
+  if (moments) out_moment_.assign(count - cross_begin_, Vec3{});
+  else out_moment_.clear();
   cross_blocks_ = (count - cross_begin_ + kContactBlock - 1) / kContactBlock;
   const std::size_t tasks = partitions_ + cross_blocks_;
   // Dissipation is cumulative: keep what the old tasks held.
@@ -160,7 +179,7 @@ void SphereSystem::step(double dt, bool evaluate_energy) {
 
 #pragma omp parallel if (parallel_)
   {
-    contact_forces(dt, evaluate_energy);  // ends with the implicit barrier of its omp for
+    kernel_->contact_forces(*this, dt, evaluate_energy);  // ends with the implicit barrier of its omp for
     integrate(dt, evaluate_energy);
   }
 
@@ -184,7 +203,7 @@ void SphereSystem::step(double dt, bool evaluate_energy) {
     energy_.kinetic_J = kinetic;
     energy_.elastic_J = elastic;
   }
-  after_step(dt);
+  kernel_->after_step(*this, dt);
 }
 
 void SphereSystem::integrate(double dt, bool evaluate_energy) {
@@ -193,6 +212,7 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
   const std::uint32_t* offset = cross_incidence_.offset.data();
   const std::uint32_t* entry = cross_incidence_.entry.data();
   const ContactOut* out = out_.data();
+  const Vec3* moment = out_moment_.empty() ? nullptr : out_moment_.data();
 
 #pragma omp for schedule(static)
   for (std::size_t blk = 0; blk < blocks; ++blk) {
@@ -209,6 +229,7 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
         const double sign = side ? 1.0 : -1.0;
         f += sign * o.f;
         t -= o.arm[side] * o.c;
+        if (moment) t += sign * moment[code >> 1];
       }
       f_acc_[k] = f + f_ext_[k];
       t_acc_[k] = t;
@@ -300,7 +321,7 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
     for (int d = 0; d < 3; ++d) y[6 * k + 3 * part + d] -= s * g[d];  // K x = -(force)
   };
   for (std::size_t b = 0; b < bonds_.size(); ++b) {
-    const LinearBond lb = linear_bond(spheres_, bonds_, material_, b);
+    const LinearBond lb = linear_bond(*this, b);
     const std::size_t i = bonds_.first[b], j = bonds_.second[b];
     Vec3 fi, mi, fj, mj;
     lb.forces(dof(x, i, 0), dof(x, i, 1), dof(x, j, 0), dof(x, j, 1), fi, mi, fj, mj);
@@ -315,7 +336,7 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
   const std::size_t n = spheres_.size();
   std::vector<double> row(6 * n, 0.0);
   for (std::size_t b = 0; b < bonds_.size(); ++b) {
-    const LinearBond lb = linear_bond(spheres_, bonds_, material_, b);
+    const LinearBond lb = linear_bond(*this, b);
     const std::size_t ends[2] = {bonds_.first[b], bonds_.second[b]};
     double scale[12];
     for (int c = 0; c < 12; ++c) {
@@ -341,6 +362,7 @@ std::size_t SphereSystem::memory_bytes() const {
   std::size_t bytes = n * (sizeof(Vec3) * (6 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + 2 * sizeof(double) +
                            sizeof(std::uint32_t) + sizeof(std::int64_t) + 1);
   bytes += bonds_.size() * (2 * sizeof(std::uint32_t) + sizeof(double) + sizeof(Vec3) + 2 * sizeof(std::uint32_t));
+  bytes += kernel_->memory_bytes() + out_moment_.size() * sizeof(Vec3);
   bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +
            first_.size() * 2 * sizeof(std::uint32_t) + 2 * n * sizeof(Vec3);
   return bytes;

@@ -4,10 +4,10 @@
 
 namespace mesowave::dem {
 
-CriticalTimeStep critical_time_step(const Model& model, double min_radius_m, double density, double young_Pa,
+CriticalTimeStep critical_time_step(const Model& model, double min_radius_m, double density, double E_dem_Pa,
                                     double damping) {
   CriticalTimeStep c;
-  c.paper_estimate_s = min_radius_m * std::sqrt(density / young_Pa);
+  c.paper_estimate_s = min_radius_m * std::sqrt(density / E_dem_Pa);
   const double gershgorin = model.scaled_stiffness_row_sum_bound();
   c.stiffness_bound_s = gershgorin > 0 ? 2.0 / std::sqrt(gershgorin) : INFINITY;
   const auto lanczos = largest_eigenvalue(model.degrees_of_freedom(),

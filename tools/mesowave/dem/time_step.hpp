@@ -25,8 +25,8 @@ struct CriticalTimeStep {
   int lanczos_iterations = 0;
 };
 
-/// `min_radius_m`, `density`, `young_Pa` feed the paper's estimate.
-CriticalTimeStep critical_time_step(const Model& model, double min_radius_m, double density_kg_m3, double young_Pa,
+/// `min_radius_m`, `density`, `E_dem_Pa` feed the paper's estimate.
+CriticalTimeStep critical_time_step(const Model& model, double min_radius_m, double density_kg_m3, double E_dem_Pa,
                                     double damping);
 
 /// Largest eigenvalue of the symmetric operator `apply` (size n) by Lanczos

@@ -81,22 +81,22 @@ TheoryReport theory_report(const TheoryRequest& q) {
 DispersionReport lattice_report(const LatticeRequest& q) {
   MassSpringChain chain;
   const bool direct = q.mass_kg || q.stiffness_N_m;
-  const bool dem = q.sphere_radius_mm || q.particle_density_kg_m3 || q.contact_modulus_GPa || q.spacing_R;
+  const bool dem = q.sphere_radius_mm || q.particle_density_kg_m3 || q.E_dem_GPa || q.spacing_R;
   if (direct && dem) throw InputError("give either --mass-kg/--stiffness-N-m or the sphere description, not both");
   if (direct) {
     if (!q.mass_kg || !q.stiffness_N_m || !q.spacing_mm)
       throw InputError("--mass-kg, --stiffness-N-m and --spacing-mm are needed together");
     chain = {*q.mass_kg, *q.stiffness_N_m, *q.spacing_mm * units::mm};
   } else {
-    if (!q.sphere_radius_mm || !q.particle_density_kg_m3 || !q.contact_modulus_GPa)
-      throw InputError("need --sphere-radius-mm, --particle-density-kg-m3 and --contact-modulus-GPa "
+    if (!q.sphere_radius_mm || !q.particle_density_kg_m3 || !q.E_dem_GPa)
+      throw InputError("need --sphere-radius-mm, --particle-density-kg-m3 and --E-dem-GPa "
                        "(or --mass-kg, --stiffness-N-m, --spacing-mm)");
     if (q.spacing_mm.has_value() == q.spacing_R.has_value())
       throw InputError("give exactly one of --spacing-mm and --spacing-R");
     const double R = require_positive("--sphere-radius-mm", *q.sphere_radius_mm, "mm") * units::mm;
     const double d = q.spacing_mm ? *q.spacing_mm * units::mm : require_positive("--spacing-R", *q.spacing_R) * R;
     chain = dem_chain(R, *q.particle_density_kg_m3,
-                      require_positive("--contact-modulus-GPa", *q.contact_modulus_GPa, "GPa") * units::GPa, d);
+                      require_positive("--E-dem-GPa", *q.E_dem_GPa, "GPa") * units::GPa, d);
   }
   validate(chain);
   const auto grid = frequency_grid(q.df_kHz * units::kHz, q.f_max_kHz * units::kHz, q.df_kHz * units::kHz);

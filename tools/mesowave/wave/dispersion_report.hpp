@@ -55,7 +55,7 @@ TheoryReport theory_report(const TheoryRequest& request);
 
 struct LatticeRequest {
   std::optional<double> mass_kg, stiffness_N_m, spacing_mm;                   ///< the chain directly, or
-  std::optional<double> sphere_radius_mm, particle_density_kg_m3, contact_modulus_GPa, spacing_R;  ///< the DEM's
+  std::optional<double> sphere_radius_mm, particle_density_kg_m3, E_dem_GPa, spacing_R;  ///< the DEM's
   double f_max_kHz = 500, df_kHz = 1;
   std::string label = "chain";
 };

@@ -13,13 +13,13 @@ void validate(const MassSpringChain& c) {
   require_positive("chain spacing", c.spacing_m, "m");
 }
 
-MassSpringChain dem_chain(double R, double rho_p, double E_c, double d) {
+MassSpringChain dem_chain(double R, double rho_p, double E_dem, double d) {
   require_positive("sphere radius", R, "m");
   require_positive("particle density", rho_p, "kg/m3");
-  require_positive("contact modulus", E_c, "Pa");
+  require_positive("contact modulus", E_dem, "Pa");
   require_positive("sphere spacing", d, "m");
   const double mass = rho_p * 4.0 / 3.0 * std::numbers::pi * R * R * R;
-  const double K = E_c * 2 * R * R / (R + R);  // rod paper Eq. (8), R_A = R_B = R
+  const double K = E_dem * 2 * R * R / (R + R);  // rod paper Eq. (8), R_A = R_B = R
   return {mass, K, d};
 }
 

@@ -21,9 +21,9 @@ struct MassSpringChain {
 void validate(const MassSpringChain& chain);
 
 /// The rod paper's chain: spheres of radius R and particle density rho_p
-/// (m = rho_p 4/3 pi R^3) with K_n = E_c 2 R_A R_B / (R_A + R_B) = E_c R (rod
+/// (m = rho_p 4/3 pi R^3) with K_n = E_dem 2 R_A R_B / (R_A + R_B) = E_dem R (rod
 /// paper Eq. (8), equal spheres), centres `spacing_m` apart.
-MassSpringChain dem_chain(double sphere_radius_m, double particle_density_kg_m3, double contact_modulus_Pa,
+MassSpringChain dem_chain(double sphere_radius_m, double particle_density_kg_m3, double E_dem_Pa,
                           double spacing_m);
 
 double long_wave_speed(const MassSpringChain& chain);   ///< d sqrt(K/m)
