@@ -77,10 +77,7 @@ void register_displacement_actuators(Plugins& p) {
         return std::make_unique<DisplacementActuator>(DisplacementActuator::constant_velocity(
             a.name, site.spheres, site.direction, VelocityRamp{a.amplitude, a.delay_s, a.ramp_s}));
       },
-      // The travel over the whole run, imposed on the stiffest bond.
-      .peak_sphere_force = [](const ActuatorSpec& a, std::size_t, double stiffest_kn, double duration_s) {
-        return stiffest_kn * (std::abs(a.amplitude) * duration_s);
-      },
+      .peak_sphere_force = platen_peak_force,
       .amplitude_key = "velocity_mm_s",
       .report_key = "velocity_m_s",
       .moving = true,

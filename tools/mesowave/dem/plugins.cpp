@@ -1,6 +1,7 @@
 #include "mesowave/dem/plugins.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "mesowave/core/error.hpp"
@@ -61,6 +62,10 @@ std::unique_ptr<Model> make_model(const std::string& law, const std::string& mod
                                   std::optional<Vec3> line) {
   return contact_laws().get(law, "contact law").make(model, std::move(spheres), std::move(bonds),
                                                      LawInput{material, parameters, line});
+}
+
+double platen_peak_force(const ActuatorSpec& a, std::size_t, double stiffest_kn, double duration_s) {
+  return stiffest_kn * (std::abs(a.amplitude) * duration_s);
 }
 
 std::vector<std::uint32_t> packing_indices(const Model& model, const std::vector<std::size_t>& spheres) {

@@ -186,6 +186,9 @@ void read_actuator_load(SceneKeys& k, ActuatorSpec& spec, double scale, bool bur
 std::unique_ptr<Model> make_model(const std::string& law, const std::string& model, SphereSet spheres, BondNetwork bonds,
                                   const CohesiveFrictionalMaterial& material, const LawParameters& parameters = {},
                                   std::optional<Vec3> line = std::nullopt);
+/// A moving platen's (velocity, wall) largest force on one sphere for the model
+/// choice: the stiffest K_n there times the travel over the whole run.
+double platen_peak_force(const ActuatorSpec& a, std::size_t spheres, double stiffest_kn, double duration_s);
 /// Packing indices of model spheres, ascending (a Placement's spheres).
 std::vector<std::uint32_t> packing_indices(const Model& model, const std::vector<std::size_t>& spheres);
 

@@ -98,9 +98,7 @@ void register_rigid_wall(Plugins& p) {
         return std::make_unique<RigidWall>(a.name, site.model, site.box, a.target.patch.face, site.material.E_dem_Pa,
                                            VelocityRamp{a.amplitude, a.delay_s, a.ramp_s}, a.amplitude * site.duration_s);
       },
-      .peak_sphere_force = [](const ActuatorSpec& a, std::size_t, double stiffest_kn, double duration_s) {
-        return stiffest_kn * (std::abs(a.amplitude) * duration_s);
-      },
+      .peak_sphere_force = platen_peak_force,
       .amplitude_key = "velocity_mm_s",
       .report_key = "velocity_m_s",
       .moving = true,
