@@ -181,6 +181,10 @@ GrayImage read_tiff_page(TIFF* tif, const fs::path& path, int page) {
     throw InputError(origin + ": " + std::to_string(bits) + "-bit samples are not supported (only 1, 8 and 16 bit)");
   if (photometric == PHOTOMETRIC_PALETTE)
     throw InputError(origin + ": palette (indexed-colour) TIFF is not supported; save it as grayscale");
+  // Its samples are not R, G, B, and subsampled chroma packs fewer than
+  // width x 3 samples into a row (the reader would run past the row).
+  if (photometric == PHOTOMETRIC_YCBCR)
+    throw InputError(origin + ": YCbCr TIFF is not supported; save it as grayscale or RGB");
   if (spp != 1 && spp != 3 && spp != 4)
     throw InputError(origin + ": " + std::to_string(spp) + " samples per pixel (expected gray or RGB)");
   if (spp > 1 && planar != PLANARCONFIG_CONTIG)
@@ -215,13 +219,23 @@ GrayImage read_tiff_page(TIFF* tif, const fs::path& path, int page) {
     (void)buf_width;
   };
 
+  // store() reads spp samples of `bits` per pixel: a row buffer libtiff sizes
+  // otherwise (a damaged or exotic layout) is refused, not overrun.
+  auto holds = [&](tmsize_t row_bytes, std::uint32_t pixels) {
+    return row_bytes > 0 && std::uint64_t(row_bytes) >= (std::uint64_t(pixels) * spp * bits + 7) / 8;
+  };
+  const std::string bad_layout = origin + ": rows smaller than their pixels (a damaged or unsupported TIFF layout)";
+
   tiff_last_error.clear();
   if (TIFFIsTiled(tif)) {
     std::uint32_t tw = 0, th = 0;
     TIFFGetField(tif, TIFFTAG_TILEWIDTH, &tw);
     TIFFGetField(tif, TIFFTAG_TILELENGTH, &th);
-    std::vector<std::uint8_t> tile(TIFFTileSize(tif));
-    const std::size_t tile_row_bytes = TIFFTileRowSize(tif);
+    if (tw == 0 || th == 0) throw InputError(origin + ": tiles of " + std::to_string(tw) + " x " + std::to_string(th) + " pixels");
+    const tmsize_t tile_size = TIFFTileSize(tif), tile_row_size = TIFFTileRowSize(tif);
+    if (!holds(tile_row_size, tw) || tile_size / tile_row_size < tmsize_t(th)) throw InputError(bad_layout);
+    std::vector<std::uint8_t> tile(static_cast<std::size_t>(tile_size));
+    const std::size_t tile_row_bytes = std::size_t(tile_row_size);
     for (std::uint32_t ty = 0; ty < height; ty += th)
       for (std::uint32_t tx = 0; tx < width; tx += tw) {
         if (TIFFReadTile(tif, tile.data(), tx, ty, 0, 0) < 0)
@@ -230,7 +244,9 @@ GrayImage read_tiff_page(TIFF* tif, const fs::path& path, int page) {
           store(tile.data() + r * tile_row_bytes, tw, tx, ty + r, std::min(tw, width - tx));
       }
   } else {
-    std::vector<std::uint8_t> row(TIFFScanlineSize(tif));
+    const tmsize_t row_size = TIFFScanlineSize(tif);
+    if (!holds(row_size, width)) throw InputError(bad_layout);
+    std::vector<std::uint8_t> row(static_cast<std::size_t>(row_size));
     for (std::uint32_t y = 0; y < height; ++y) {
       if (TIFFReadScanline(tif, row.data(), y, 0) < 0)
         throw InputError(origin + ": cannot read row " + std::to_string(y) + " (" + tiff_last_error + ")");
