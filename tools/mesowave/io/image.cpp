@@ -18,6 +18,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A header of a few bytes can claim any size; the pixels are allocated before
+// the data is read. Beyond this an image is refused, not allocated (gigabytes
+// for a damaged header): 2^27 pixels, an 11585 x 11585 slice.
+constexpr std::uint64_t kMaxPixels = std::uint64_t(1) << 27;
+
+std::string too_many_pixels(const std::string& origin, std::uint64_t width, std::uint64_t height) {
+  return origin + ": " + std::to_string(width) + " x " + std::to_string(height) +
+         " pixels is more than mesowave reads in one image (2^27); crop or split it";
+}
+
 struct FileCloser {
   void operator()(std::FILE* f) const {
     if (f) std::fclose(f);
@@ -79,6 +89,10 @@ bool png_decode(std::FILE* f, PngDecoded* out, PngMessage* message) {
   png_read_update_info(png, info);
   out->width = png_get_image_width(png, info);
   out->height = png_get_image_height(png, info);
+  if (std::uint64_t(out->width) * out->height > kMaxPixels) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return true;  // the caller refuses it by its size
+  }
   out->bit_depth = png_get_bit_depth(png, info);
   out->channels = png_get_channels(png, info);
   const std::size_t rowbytes = png_get_rowbytes(png, info);
@@ -173,6 +187,7 @@ GrayImage read_tiff_page(TIFF* tif, const fs::path& path, int page) {
   TIFFGetField(tif, TIFFTAG_PHOTOMETRIC, &photometric);
   TIFFGetFieldDefaulted(tif, TIFFTAG_PLANARCONFIG, &planar);
   if (width == 0 || height == 0) throw InputError(origin + ": empty image (0 x 0 pixels)");
+  if (std::uint64_t(width) * height > kMaxPixels) throw InputError(too_many_pixels(origin, width, height));
   if (format == SAMPLEFORMAT_IEEEFP)
     throw InputError(origin + ": floating-point samples are not supported; rescale the slices to 16-bit integers");
   if (format != SAMPLEFORMAT_UINT && format != SAMPLEFORMAT_INT && format != SAMPLEFORMAT_VOID)
@@ -278,6 +293,8 @@ GrayImage read_png_gray(const fs::path& path) {
   if (!png_decode(f.get(), &decoded, &message))
     throw InputError("cannot read PNG " + path.string() + ": " + (message.text[0] ? message.text : "libpng failure"));
   if (decoded.width == 0 || decoded.height == 0) throw InputError(path.string() + ": empty image (0 x 0 pixels)");
+  if (std::uint64_t(decoded.width) * decoded.height > kMaxPixels)
+    throw InputError(too_many_pixels(path.string(), decoded.width, decoded.height));
   GrayImage image;
   image.width = int(decoded.width);
   image.height = int(decoded.height);
