@@ -212,22 +212,24 @@ GrayImage read_tiff_page(TIFF* tif, const fs::path& path, int page) {
   image.bit_depth = bits == 16 ? 16 : 8;
   image.origin = origin;
   image.pixels.assign(std::size_t(width) * height, 0);
-  const double offset = is_signed ? (bits == 16 ? 32768.0 : 128.0) : 0.0;
+  const double offset = is_signed ? (bits == 16 ? 32768.0 : bits == 8 ? 128.0 : 0.0) : 0.0;
   const double bilevel_scale = bits == 1 ? 255.0 : 1.0;
   const double full = double(image.levels() - 1);
 
   auto store = [&](const std::uint8_t* buf, std::uint32_t buf_width, std::uint32_t x0, std::uint32_t y,
                    std::uint32_t count) {
+    // Signed samples are offset before the luma, so every value stays in
+    // 0 .. full (a negative luma would not fit the gray level: found by UBSan).
+    auto sample = [&](std::size_t index) { return tiff_sample(buf, index, bits, is_signed) + offset; };
     for (std::uint32_t i = 0; i < count; ++i) {
       double v;
       if (spp == 1) {
-        v = tiff_sample(buf, i, bits, is_signed);
+        v = sample(i);
       } else {
         const std::size_t base = std::size_t(i) * spp;
-        v = luma(tiff_sample(buf, base, bits, is_signed), tiff_sample(buf, base + 1, bits, is_signed),
-                 tiff_sample(buf, base + 2, bits, is_signed));
+        v = luma(sample(base), sample(base + 1), sample(base + 2));
       }
-      v = (v + offset) * bilevel_scale;
+      v *= bilevel_scale;
       if (photometric == PHOTOMETRIC_MINISWHITE) v = full - v;
       image.pixels[std::size_t(y) * width + x0 + i] = std::uint16_t(v);
     }
