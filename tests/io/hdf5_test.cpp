@@ -90,3 +90,23 @@ TEST(Hdf5Read, AStringDatasetIsNotNumbers) {
   EXPECT_EQ(h5::read_doubles(file.id(), "numbers"), (std::vector<double>{1, 2, 3}));
   EXPECT_EQ(input_error([&] { h5::read_doubles(file.id(), "samples"); }), "HDF5 dataset 'samples' is not numeric");
 }
+
+// Dimensions are header bytes: a dataset that claims far more than it stores
+// is refused before gigabytes are allocated; a small unwritten one reads as its
+// fill values, as HDF5 defines.
+TEST(Hdf5Read, ADatasetMustStoreWhatItClaims) {
+  test::TempDir dir;
+  const auto path = dir.path() / "claims.h5";
+  {
+    auto file = h5::create_file(path);
+    for (const auto& [name, n] : {std::pair{"small", hsize_t(10)}, std::pair{"huge", hsize_t(1) << 24}}) {
+      const hsize_t dims = n;
+      h5::Handle space(H5Screate_simple(1, &dims, nullptr));
+      h5::Handle set(H5Dcreate2(file.id(), name, H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    }
+  }
+  auto file = h5::open_file(path);
+  EXPECT_EQ(h5::read_doubles(file.id(), "small"), std::vector<double>(10, 0.0));
+  EXPECT_EQ(input_error([&] { h5::read_doubles(file.id(), "huge"); }),
+            "HDF5 dataset 'huge' claims 16777216 values but stores 0 bytes (a damaged file)");
+}

@@ -90,6 +90,14 @@ std::vector<T> read_dataset(hid_t parent, const std::string& name, hid_t mem_typ
       throw InputError("HDF5 dataset '" + name + "' is larger than memory can hold");
     count *= std::size_t(d);
   }
+  // The dimensions are a few header bytes and can claim anything (found by
+  // libFuzzer: 2^54 values in a 2 kB file); what is stored bounds what is
+  // read. deflate expands at most 1032:1; beyond 64 MiB a dataset must hold at
+  // least 1/1100 of its size, else it is refused before it is allocated.
+  const std::uint64_t bytes = std::uint64_t(count) * sizeof(T), stored = H5Dget_storage_size(set.id());
+  if (bytes > (std::uint64_t(64) << 20) && bytes / 1100 > stored)
+    throw InputError("HDF5 dataset '" + name + "' claims " + std::to_string(count) + " values but stores " +
+                     std::to_string(stored) + " bytes (a damaged file)");
   std::vector<T> data(count);
   if (count > 0)
     check_read_status(H5Dread(set.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "read dataset " + name);
