@@ -4,6 +4,8 @@
 #   make reproduce-quick  the same rules on small models and short records (results-quick/, report-quick/)
 #   make new-study NAME=my-cube FROM=concrete-cube   a lab's own specimen: lab-data/ and pipeline/ folders
 #   make test             install what is missing, build, run every test (CTest summary at the end)
+#   make test-sanitize    the same suite built with ASan and UBSan (build-sanitize/)
+#   make fuzz             libFuzzer campaign on every parser of user files (build-fuzz/, docs/fuzzing.md)
 #   make bench            benchmarks (bench/), results in docs/benchmarks.md
 #   make clean            remove build/, both result trees, reports and provenance databases
 #
@@ -32,12 +34,12 @@ endif
 QUICK_DB := $(CURDIR)/db/provenance-quick.sqlite
 export MESOWAVE_DB ?= $(if $(filter 1,$(QUICK)),$(QUICK_DB),$(CURDIR)/db/provenance.sqlite)
 
-.PHONY: all help deps build test reproduce reproduce-quick pipeline bench clean
+.PHONY: all help deps build test test-sanitize fuzz reproduce reproduce-quick pipeline bench clean
 
 all: build
 
 help:
-	@sed -n '2,12p' Makefile | sed 's/^# \{0,1\}//'
+	@sed -n '2,14p' Makefile | sed 's/^# \{0,1\}//'
 
 deps:
 	@scripts/install-deps
@@ -51,6 +53,50 @@ build: deps
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The whole suite with AddressSanitizer and UndefinedBehaviorSanitizer: the
+# library, the tools the CLI and pipeline tests run, the tests and the fuzz
+# corpora's replays. Any report fails its test (-fno-sanitize-recover; leaks
+# too). Several times slower than `make test`.
+SANITIZE_BUILD ?= build-sanitize
+test-sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=$(SANITIZE_OPT)" \
+	  "-DCMAKE_C_FLAGS_RELEASE=$(SANITIZE_OPT)" -DMESOWAVE_SANITIZE=ON -DMESOWAVE_BUILD_BENCH=OFF
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=$(SANITIZE_ASAN_OPTIONS) UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j $(JOBS)
+SANITIZE_ASAN_OPTIONS ?= detect_stack_use_after_return=1:strict_string_checks=1
+# -O1: the usual optimisation for sanitizer runs (quick to build, exact reports).
+SANITIZE_OPT ?= -O1 -DNDEBUG
+
+# The libFuzzer campaign (docs/fuzzing.md): every target of tests/fuzz for
+# FUZZ_SECONDS each, one after the other, seeded from tests/fuzz/corpus/<target>/.
+# New inputs go to build-fuzz/corpus/<target>/, crashes to build-fuzz/crashes/<target>/;
+# the run fails if any target crashed. FUZZ_TARGETS picks some
+# (make fuzz FUZZ_TARGETS="scene_toml image" FUZZ_SECONDS=60).
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 300
+FUZZ_TARGETS ?= $(basename $(notdir $(filter-out tests/fuzz/replay_main.cpp,$(wildcard tests/fuzz/*.cpp))))
+FUZZ_FLAGS ?= -timeout=10 -rss_limit_mb=2048
+# libFuzzer's advice: little optimisation (quicker to build, clearer reports),
+# line tables for the stack traces, assertions on.
+FUZZ_OPT ?= -O1 -gline-tables-only
+fuzz:
+	@scripts/install-deps fuzz
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$(FUZZ_OPT)" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$(FUZZ_OPT)" \
+	  -DMESOWAVE_FUZZ=ON -DMESOWAVE_BUILD_TESTS=OFF -DMESOWAVE_BUILD_BENCH=OFF
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz_targets
+	@crashed=; for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(FUZZ_BUILD)/corpus/$$t $(FUZZ_BUILD)/crashes/$$t; \
+	  echo "fuzz: $$t for $(FUZZ_SECONDS) s"; \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/fuzz/lsan.supp $(FUZZ_BUILD)/tests/fuzz/fuzz_$$t $(FUZZ_FLAGS) -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	    -artifact_prefix=$(FUZZ_BUILD)/crashes/$$t/ $(FUZZ_BUILD)/corpus/$$t tests/fuzz/corpus/$$t \
+	    > $(FUZZ_BUILD)/$$t.log 2>&1 || crashed="$$crashed $$t"; \
+	  grep -E '^(stat::number_of_executed_units|stat::new_units_added)' $(FUZZ_BUILD)/$$t.log | tr '\n' ' '; echo; \
+	done; \
+	if [ -n "$$crashed" ]; then echo "fuzz: crashes in$$crashed (inputs in $(FUZZ_BUILD)/crashes/, logs $(FUZZ_BUILD)/*.log)"; exit 1; fi; \
+	echo "fuzz: no crash"
 
 # The pipeline runs in a second make, after the build, so that make compares
 # the results' timestamps with the tools as they are now. The wall time of the
@@ -87,6 +133,6 @@ bench: build
 	bench/run
 
 clean:
-	rm -rf $(BUILD) results report results-quick report-quick
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD) results report results-quick report-quick
 	rm -f db/provenance.sqlite db/provenance.sqlite-wal db/provenance.sqlite-shm \
 	  db/provenance-quick.sqlite db/provenance-quick.sqlite-wal db/provenance-quick.sqlite-shm

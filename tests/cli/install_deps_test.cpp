@@ -46,9 +46,11 @@ public:
     script("sudo", "echo sudo >> " + d + "/calls\nexec env -i PATH=\"$PATH\" \"$@\"\n");
   }
 
-  ToolResult run() const {
+  ToolResult run(const std::vector<std::string>& args = {}) const {
     const fs::path install_deps = fs::path(MESOWAVE_SOURCE_DIR) / "scripts/install-deps";
-    return run_command("/usr/bin/env", {"PATH=" + dir_.path().string() + ":/usr/bin:/bin", "bash", install_deps.string()});
+    std::vector<std::string> command = {"PATH=" + dir_.path().string() + ":/usr/bin:/bin", "bash", install_deps.string()};
+    command.insert(command.end(), args.begin(), args.end());
+    return run_command("/usr/bin/env", command);
   }
 
   std::vector<std::string> lines(const std::string& name) const {
@@ -113,4 +115,17 @@ TEST(InstallDeps, AnOrdinaryUserInstallsThroughSudo) {
   EXPECT_EQ(calls[0], "sudo");
   // sudo resets the environment: apt-get must still run without questions.
   EXPECT_EQ(calls[1], "DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends libcli11-dev");
+}
+
+// `make fuzz` needs clang and libFuzzer (scripts/install-deps fuzz); `make test` must not.
+TEST(InstallDeps, ClangOnlyForTheFuzzBuild) {
+  const Shims shims({"clang", "libclang-rt-14-dev"}, 0);
+  const auto plain = shims.run();
+  ASSERT_EQ(plain.exit_status, 0) << plain.err;
+  EXPECT_TRUE(shims.lines("calls").empty()) << "the normal build asked for clang";
+  const auto fuzz = shims.run({"fuzz"});
+  ASSERT_EQ(fuzz.exit_status, 0) << fuzz.err;
+  const auto calls = shims.lines("calls");
+  ASSERT_EQ(calls.size(), 1u);
+  EXPECT_EQ(calls[0], "DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends clang libclang-rt-14-dev");
 }

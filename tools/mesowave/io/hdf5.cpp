@@ -1,5 +1,6 @@
 #include "mesowave/io/hdf5.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 #include "mesowave/core/error.hpp"
@@ -21,6 +22,29 @@ hid_t check(hid_t id, const std::string& what) {
 
 void check_status(herr_t status, const std::string& what) {
   if (status < 0) throw std::runtime_error("HDF5: cannot " + what);
+}
+
+// Reading a file the user handed over: a failure is a damaged or foreign file
+// (an InputError), not mesowave's fault as a failed write would be.
+hid_t check_read(hid_t id, const std::string& what) {
+  if (id < 0) throw InputError("HDF5: cannot " + what + " (damaged file, or a type mesowave does not read)");
+  return id;
+}
+void check_read_status(herr_t status, const std::string& what) { check_read(status < 0 ? -1 : 0, what); }
+
+// H5Aread/H5Dread convert to the memory type and fill as many values as the
+// object holds: only numbers convert to numbers, and a scalar read needs
+// exactly one value, else HDF5 writes past it (an array where one number was
+// expected, as h5py writes for attrs["dt_s"] = [1e-7, ...]).
+void require_number(hid_t type, const std::string& what) {
+  const H5T_class_t type_class = H5Tget_class(type);
+  if (type_class != H5T_INTEGER && type_class != H5T_FLOAT) throw InputError("HDF5 " + what + " is not numeric");
+}
+void require_one_value(hid_t attr, const std::string& name) {
+  Handle space(check_read(H5Aget_space(attr), "get the dataspace of attribute " + name));
+  const hssize_t n = H5Sget_simple_extent_npoints(space.id());
+  if (n != 1)
+    throw InputError("HDF5 attribute '" + name + "' holds " + std::to_string(n) + " values where one is expected");
 }
 
 std::vector<hsize_t> dims_for(std::size_t size, std::size_t cols) {
@@ -52,23 +76,38 @@ void write_dataset(hid_t parent, const std::string& name, const std::vector<T>& 
 template <typename T>
 std::vector<T> read_dataset(hid_t parent, const std::string& name, hid_t mem_type, std::vector<hsize_t>* shape) {
   if (!has_link(parent, name)) throw InputError("HDF5 dataset '" + name + "' is missing");
-  Handle set(check(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "open dataset " + name));
-  Handle space(check(H5Dget_space(set.id()), "get dataspace of " + name));
+  Handle set(check_read(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "open dataset " + name));
+  Handle type(check_read(H5Dget_type(set.id()), "get the type of dataset " + name));
+  require_number(type.id(), "dataset '" + name + "'");
+  Handle space(check_read(H5Dget_space(set.id()), "get dataspace of " + name));
   const int rank = H5Sget_simple_extent_ndims(space.id());
+  check_read_status(rank, "get the rank of dataset " + name);
   std::vector<hsize_t> dims(std::size_t(std::max(rank, 0)));
   H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr);
   std::size_t count = 1;
-  for (auto d : dims) count *= std::size_t(d);
+  for (auto d : dims) {
+    if (d != 0 && count > std::numeric_limits<std::size_t>::max() / sizeof(T) / std::size_t(d))
+      throw InputError("HDF5 dataset '" + name + "' is larger than memory can hold");
+    count *= std::size_t(d);
+  }
+  // The dimensions are a few header bytes and can claim anything (found by
+  // libFuzzer: 2^54 values in a 2 kB file); what is stored bounds what is
+  // read. deflate expands at most 1032:1; beyond 64 MiB a dataset must hold at
+  // least 1/1100 of its size, else it is refused before it is allocated.
+  const std::uint64_t bytes = std::uint64_t(count) * sizeof(T), stored = H5Dget_storage_size(set.id());
+  if (bytes > (std::uint64_t(64) << 20) && bytes / 1100 > stored)
+    throw InputError("HDF5 dataset '" + name + "' claims " + std::to_string(count) + " values but stores " +
+                     std::to_string(stored) + " bytes (a damaged file)");
   std::vector<T> data(count);
   if (count > 0)
-    check_status(H5Dread(set.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "read dataset " + name);
+    check_read_status(H5Dread(set.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "read dataset " + name);
   if (shape) *shape = dims;
   return data;
 }
 
 Handle open_attribute(hid_t object, const std::string& name) {
   if (H5Aexists(object, name.c_str()) <= 0) throw InputError("HDF5 attribute '" + name + "' is missing");
-  return Handle(check(H5Aopen(object, name.c_str(), H5P_DEFAULT), "open attribute " + name));
+  return Handle(check_read(H5Aopen(object, name.c_str(), H5P_DEFAULT), "open attribute " + name));
 }
 
 void replace_attribute(hid_t object, const std::string& name) {
@@ -125,14 +164,14 @@ Handle create_group(hid_t parent, const std::string& name) {
 
 Handle open_group(hid_t parent, const std::string& name, const std::string& what) {
   if (!has_link(parent, name)) throw InputError(what + ": HDF5 group '" + name + "' is missing");
-  return Handle(check(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), "open group " + name));
+  return Handle(check_read(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), "open group " + name));
 }
 
 bool has_link(hid_t parent, const std::string& name) { return H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0; }
 
 std::vector<std::string> list_links(hid_t group) {
   H5G_info_t info{};
-  check_status(H5Gget_info(group, &info), "list group");
+  check_read_status(H5Gget_info(group, &info), "list group");
   // Creation order if the group tracks it, else names in alphabetical order.
   Handle props(H5Gget_create_plist(group));
   unsigned flags = 0;
@@ -141,7 +180,8 @@ std::vector<std::string> list_links(hid_t group) {
   std::vector<std::string> names;
   for (hsize_t i = 0; i < info.nlinks; ++i) {
     const ssize_t length = H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-    std::string name(std::size_t(std::max<ssize_t>(length, 0)), '\0');
+    if (length < 0) check_read_status(-1, "read the name of link " + std::to_string(i));
+    std::string name(std::size_t(length), '\0');
     H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, name.data(), std::size_t(length) + 1, H5P_DEFAULT);
     names.push_back(name);
   }
@@ -208,38 +248,51 @@ bool has_attribute(hid_t object, const std::string& name) { return H5Aexists(obj
 
 std::string string_attribute(hid_t object, const std::string& name) {
   Handle attr = open_attribute(object, name);
-  Handle type(check(H5Aget_type(attr.id()), "get attribute type"));
+  Handle type(check_read(H5Aget_type(attr.id()), "get attribute type"));
   if (H5Tget_class(type.id()) != H5T_STRING) throw InputError("HDF5 attribute '" + name + "' is not a string");
+  require_one_value(attr.id(), name);
   if (H5Tis_variable_str(type.id()) > 0) {
     Handle mem(H5Tcopy(H5T_C_S1));
     H5Tset_size(mem.id(), H5T_VARIABLE);
     H5Tset_cset(mem.id(), H5Tget_cset(type.id()));  // h5py writes UTF-8; HDF5 converts no character sets
     char* text = nullptr;
-    check_status(H5Aread(attr.id(), mem.id(), &text), "read attribute " + name);
+    check_read_status(H5Aread(attr.id(), mem.id(), &text), "read attribute " + name);
     std::string value = text ? text : "";
     H5free_memory(text);
     return value;
   }
   const std::size_t size = H5Tget_size(type.id());
   std::string value(size, '\0');
-  check_status(H5Aread(attr.id(), type.id(), value.data()), "read attribute " + name);
+  check_read_status(H5Aread(attr.id(), type.id(), value.data()), "read attribute " + name);
   value.resize(std::min(value.find('\0'), value.size()));
   return value;
 }
 
-double double_attribute(hid_t object, const std::string& name) {
+// One number of any numeric type, converted to `mem_type`.
+template <typename T>
+T number_attribute(hid_t object, const std::string& name, hid_t mem_type) {
   Handle attr = open_attribute(object, name);
-  double value = 0;
-  check_status(H5Aread(attr.id(), H5T_NATIVE_DOUBLE, &value), "read attribute " + name);
+  Handle type(check_read(H5Aget_type(attr.id()), "get attribute type"));
+  require_number(type.id(), "attribute '" + name + "'");
+  require_one_value(attr.id(), name);
+  T value = 0;
+  check_read_status(H5Aread(attr.id(), mem_type, &value), "read attribute " + name);
   return value;
+}
+
+double double_attribute(hid_t object, const std::string& name) {
+  return number_attribute<double>(object, name, H5T_NATIVE_DOUBLE);
 }
 
 std::vector<double> doubles_attribute(hid_t object, const std::string& name) {
   Handle attr = open_attribute(object, name);
-  Handle space(H5Aget_space(attr.id()));
+  Handle type(check_read(H5Aget_type(attr.id()), "get attribute type"));
+  require_number(type.id(), "attribute '" + name + "'");
+  Handle space(check_read(H5Aget_space(attr.id()), "get the dataspace of attribute " + name));
   const hssize_t n = H5Sget_simple_extent_npoints(space.id());
   std::vector<double> value(std::size_t(std::max<hssize_t>(n, 0)));
-  if (!value.empty()) check_status(H5Aread(attr.id(), H5T_NATIVE_DOUBLE, value.data()), "read attribute " + name);
+  if (!value.empty())
+    check_read_status(H5Aread(attr.id(), H5T_NATIVE_DOUBLE, value.data()), "read attribute " + name);
   return value;
 }
 

@@ -18,6 +18,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A header of a few bytes can claim any size; the pixels are allocated before
+// the data is read. Beyond this an image is refused, not allocated (gigabytes
+// for a damaged header): 2^27 pixels, an 11585 x 11585 slice.
+constexpr std::uint64_t kMaxPixels = std::uint64_t(1) << 27;
+
+std::string too_many_pixels(const std::string& origin, std::uint64_t width, std::uint64_t height) {
+  return origin + ": " + std::to_string(width) + " x " + std::to_string(height) +
+         " pixels is more than mesowave reads in one image (2^27); crop or split it";
+}
+
 struct FileCloser {
   void operator()(std::FILE* f) const {
     if (f) std::fclose(f);
@@ -79,6 +89,10 @@ bool png_decode(std::FILE* f, PngDecoded* out, PngMessage* message) {
   png_read_update_info(png, info);
   out->width = png_get_image_width(png, info);
   out->height = png_get_image_height(png, info);
+  if (std::uint64_t(out->width) * out->height > kMaxPixels) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return true;  // the caller refuses it by its size
+  }
   out->bit_depth = png_get_bit_depth(png, info);
   out->channels = png_get_channels(png, info);
   const std::size_t rowbytes = png_get_rowbytes(png, info);
@@ -173,6 +187,7 @@ GrayImage read_tiff_page(TIFF* tif, const fs::path& path, int page) {
   TIFFGetField(tif, TIFFTAG_PHOTOMETRIC, &photometric);
   TIFFGetFieldDefaulted(tif, TIFFTAG_PLANARCONFIG, &planar);
   if (width == 0 || height == 0) throw InputError(origin + ": empty image (0 x 0 pixels)");
+  if (std::uint64_t(width) * height > kMaxPixels) throw InputError(too_many_pixels(origin, width, height));
   if (format == SAMPLEFORMAT_IEEEFP)
     throw InputError(origin + ": floating-point samples are not supported; rescale the slices to 16-bit integers");
   if (format != SAMPLEFORMAT_UINT && format != SAMPLEFORMAT_INT && format != SAMPLEFORMAT_VOID)
@@ -181,6 +196,10 @@ GrayImage read_tiff_page(TIFF* tif, const fs::path& path, int page) {
     throw InputError(origin + ": " + std::to_string(bits) + "-bit samples are not supported (only 1, 8 and 16 bit)");
   if (photometric == PHOTOMETRIC_PALETTE)
     throw InputError(origin + ": palette (indexed-colour) TIFF is not supported; save it as grayscale");
+  // Its samples are not R, G, B, and subsampled chroma packs fewer than
+  // width x 3 samples into a row (the reader would run past the row).
+  if (photometric == PHOTOMETRIC_YCBCR)
+    throw InputError(origin + ": YCbCr TIFF is not supported; save it as grayscale or RGB");
   if (spp != 1 && spp != 3 && spp != 4)
     throw InputError(origin + ": " + std::to_string(spp) + " samples per pixel (expected gray or RGB)");
   if (spp > 1 && planar != PLANARCONFIG_CONTIG)
@@ -193,35 +212,47 @@ GrayImage read_tiff_page(TIFF* tif, const fs::path& path, int page) {
   image.bit_depth = bits == 16 ? 16 : 8;
   image.origin = origin;
   image.pixels.assign(std::size_t(width) * height, 0);
-  const double offset = is_signed ? (bits == 16 ? 32768.0 : 128.0) : 0.0;
+  const double offset = is_signed ? (bits == 16 ? 32768.0 : bits == 8 ? 128.0 : 0.0) : 0.0;
   const double bilevel_scale = bits == 1 ? 255.0 : 1.0;
   const double full = double(image.levels() - 1);
 
   auto store = [&](const std::uint8_t* buf, std::uint32_t buf_width, std::uint32_t x0, std::uint32_t y,
                    std::uint32_t count) {
+    // Signed samples are offset before the luma, so every value stays in
+    // 0 .. full (a negative luma would not fit the gray level: found by UBSan).
+    auto sample = [&](std::size_t index) { return tiff_sample(buf, index, bits, is_signed) + offset; };
     for (std::uint32_t i = 0; i < count; ++i) {
       double v;
       if (spp == 1) {
-        v = tiff_sample(buf, i, bits, is_signed);
+        v = sample(i);
       } else {
         const std::size_t base = std::size_t(i) * spp;
-        v = luma(tiff_sample(buf, base, bits, is_signed), tiff_sample(buf, base + 1, bits, is_signed),
-                 tiff_sample(buf, base + 2, bits, is_signed));
+        v = luma(sample(base), sample(base + 1), sample(base + 2));
       }
-      v = (v + offset) * bilevel_scale;
+      v *= bilevel_scale;
       if (photometric == PHOTOMETRIC_MINISWHITE) v = full - v;
       image.pixels[std::size_t(y) * width + x0 + i] = std::uint16_t(v);
     }
     (void)buf_width;
   };
 
+  // store() reads spp samples of `bits` per pixel: a row buffer libtiff sizes
+  // otherwise (a damaged or exotic layout) is refused, not overrun.
+  auto holds = [&](tmsize_t row_bytes, std::uint32_t pixels) {
+    return row_bytes > 0 && std::uint64_t(row_bytes) >= (std::uint64_t(pixels) * spp * bits + 7) / 8;
+  };
+  const std::string bad_layout = origin + ": rows smaller than their pixels (a damaged or unsupported TIFF layout)";
+
   tiff_last_error.clear();
   if (TIFFIsTiled(tif)) {
     std::uint32_t tw = 0, th = 0;
     TIFFGetField(tif, TIFFTAG_TILEWIDTH, &tw);
     TIFFGetField(tif, TIFFTAG_TILELENGTH, &th);
-    std::vector<std::uint8_t> tile(TIFFTileSize(tif));
-    const std::size_t tile_row_bytes = TIFFTileRowSize(tif);
+    if (tw == 0 || th == 0) throw InputError(origin + ": tiles of " + std::to_string(tw) + " x " + std::to_string(th) + " pixels");
+    const tmsize_t tile_size = TIFFTileSize(tif), tile_row_size = TIFFTileRowSize(tif);
+    if (!holds(tile_row_size, tw) || tile_size / tile_row_size < tmsize_t(th)) throw InputError(bad_layout);
+    std::vector<std::uint8_t> tile(static_cast<std::size_t>(tile_size));
+    const std::size_t tile_row_bytes = std::size_t(tile_row_size);
     for (std::uint32_t ty = 0; ty < height; ty += th)
       for (std::uint32_t tx = 0; tx < width; tx += tw) {
         if (TIFFReadTile(tif, tile.data(), tx, ty, 0, 0) < 0)
@@ -230,7 +261,9 @@ GrayImage read_tiff_page(TIFF* tif, const fs::path& path, int page) {
           store(tile.data() + r * tile_row_bytes, tw, tx, ty + r, std::min(tw, width - tx));
       }
   } else {
-    std::vector<std::uint8_t> row(TIFFScanlineSize(tif));
+    const tmsize_t row_size = TIFFScanlineSize(tif);
+    if (!holds(row_size, width)) throw InputError(bad_layout);
+    std::vector<std::uint8_t> row(static_cast<std::size_t>(row_size));
     for (std::uint32_t y = 0; y < height; ++y) {
       if (TIFFReadScanline(tif, row.data(), y, 0) < 0)
         throw InputError(origin + ": cannot read row " + std::to_string(y) + " (" + tiff_last_error + ")");
@@ -262,6 +295,8 @@ GrayImage read_png_gray(const fs::path& path) {
   if (!png_decode(f.get(), &decoded, &message))
     throw InputError("cannot read PNG " + path.string() + ": " + (message.text[0] ? message.text : "libpng failure"));
   if (decoded.width == 0 || decoded.height == 0) throw InputError(path.string() + ": empty image (0 x 0 pixels)");
+  if (std::uint64_t(decoded.width) * decoded.height > kMaxPixels)
+    throw InputError(too_many_pixels(path.string(), decoded.width, decoded.height));
   GrayImage image;
   image.width = int(decoded.width);
   image.height = int(decoded.height);

@@ -40,7 +40,8 @@ struct RgbImage {
 
 /// Every image in `path`: one for a PNG, one per page (directory) for a TIFF.
 /// The format is chosen by the file's signature, not its name. InputError for
-/// unreadable, empty (0 x 0), floating-point or otherwise unsupported files.
+/// unreadable, empty (0 x 0), floating-point or otherwise unsupported files,
+/// and for images over 2^27 pixels (a damaged header would claim gigabytes).
 std::vector<GrayImage> read_gray_images(const std::filesystem::path& path);
 
 GrayImage read_png_gray(const std::filesystem::path& path);

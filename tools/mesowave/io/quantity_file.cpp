@@ -91,7 +91,7 @@ QuantityFile parse_json(const std::string& text, const std::string& origin) {
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number beyond double
     throw InputError(origin + ": not valid JSON (" + std::string(e.what()) + ")");
   }
   if (!root.is_object()) throw InputError(origin + ": expected a JSON object");

@@ -1,0 +1,15 @@
+// Fuzz target: signal CSV (io/signal_csv.hpp: a time column, one column per
+// signal, "# signal" metadata comments), as mw-signal reads it.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "mesowave/io/signal_csv.hpp"
+#include "fuzz_support.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text = mesowave::fuzz::as_text(data, size);
+  mesowave::fuzz::accept_input_error([&] { mesowave::io::parse_signal_csv(text, "fuzz.csv"); });
+  mesowave::fuzz::accept_input_error([&] { mesowave::io::parse_signal_csv(text, "fuzz.csv", {"V", "voltage"}); });
+  return 0;
+}
