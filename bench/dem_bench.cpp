@@ -11,10 +11,10 @@
 #include <memory>
 
 #include "mesowave/core/threads.hpp"
-#include "mesowave/dem/cohesive_frictional_contact.hpp"
-#include "mesowave/dem/linear_bonded_network.hpp"
-#include "mesowave/dem/packing_file.hpp"
-#include "mesowave/dem/simulation.hpp"
+#include "mesowave/dem/contact/cohesive_frictional_contact.hpp"
+#include "mesowave/dem/contact/linear_bonded_network.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
+#include "mesowave/dem/engine/simulation.hpp"
 
 using namespace mesowave::dem;
 

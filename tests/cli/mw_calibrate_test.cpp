@@ -90,7 +90,7 @@ TEST(MwCalibrate, CubeRecoversTheParametersThatMadeItsTargets) {
   // 24.4, 24.8, 25.2 MPa give 43.4, 43.6, 45.9, 46.4, 46.1 MPa (measured; the
   // failure path changes with every change of the run), so a 2 % match of the
   // strength pins T down only to about 10 % (the synthetic-response unit test,
-  // tests/dem/calibration_test.cpp, recovers T to 1e-4 where the response is smooth).
+  // tests/dem/calibration/calibration_test.cpp, recovers T to 1e-4 where the response is smooth).
   EXPECT_NEAR(c["T_MPa"].get<double>() / 18.0, 1.0, 0.10);
   EXPECT_EQ(c["C_MPa"], c["T_MPa"]);
   EXPECT_LE(std::abs(c["sigma_error_pct"].get<double>()), 2.0);

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mesowave/dem/packing_file.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
 #include "mesowave/io/signal_file.hpp"
 #include "support/run_tool.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "mesowave/dem/packing_file.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "mesowave/dem/packing.hpp"
-#include "mesowave/dem/scene.hpp"
+#include "mesowave/dem/packing/packing.hpp"
+#include "mesowave/dem/scene/scene.hpp"
 
 namespace mesowave::dem::testing {
 

@@ -1,10 +1,10 @@
-// Fuzz target: packings made elsewhere as CSV (dem/packing_import.hpp: x, y, z,
+// Fuzz target: packings made elsewhere as CSV (dem/packing/packing_import.hpp: x, y, z,
 // r or d columns with units, optional id), as mw-pack import reads them.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
-#include "mesowave/dem/packing_import.hpp"
+#include "mesowave/dem/packing/packing_import.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

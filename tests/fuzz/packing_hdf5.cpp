@@ -1,9 +1,9 @@
-// Fuzz target: packing files (HDF5, dem/packing_file.hpp) as mw-dem reads them:
+// Fuzz target: packing files (HDF5, dem/packing/packing_file.hpp) as mw-dem reads them:
 // the spheres and the /origin record.
 #include <cstddef>
 #include <cstdint>
 
-#include "mesowave/dem/packing_file.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

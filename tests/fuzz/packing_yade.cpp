@@ -1,10 +1,10 @@
-// Fuzz target: packings in Yade's textExt layout (dem/packing_import.hpp:
+// Fuzz target: packings in Yade's textExt layout (dem/packing/packing_import.hpp:
 // "#format ..." line, whitespace-separated columns), as mw-pack import reads them.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
-#include "mesowave/dem/packing_import.hpp"
+#include "mesowave/dem/packing/packing_import.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,9 +1,9 @@
-// Fuzz target: DEM scene files (TOML, dem/scene.hpp), as mw-dem reads them.
+// Fuzz target: DEM scene files (TOML, dem/scene/scene.hpp), as mw-dem reads them.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
-#include "mesowave/dem/scene.hpp"
+#include "mesowave/dem/scene/scene.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "mesowave/core/error.hpp"
-#include "mesowave/lab/compression_test.hpp"
+#include "mesowave/lab/compression_analysis.hpp"
 #include "mesowave/lab/synthetic_compression.hpp"
 #include "support/run_tool.hpp"
 

@@ -1,7 +1,7 @@
 // mw-calibrate - flowchart step 6: the DEM micro-parameters from the lab's
 // macro-parameters, found with virtual tests, each one `mw-dem run` of a test
-// scene; dem/calibration.hpp decides what to run next (CompressionCalibration,
-// RodCalibration), dem/calibration_report.hpp what the trials and the result say.
+// scene; dem/calibration/calibration.hpp decides what to run next (CompressionCalibration,
+// RodCalibration), dem/calibration/calibration_report.hpp what the trials and the result say.
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -11,10 +11,10 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/core/units.hpp"
-#include "mesowave/dem/calibration.hpp"
-#include "mesowave/dem/calibration_report.hpp"
-#include "mesowave/dem/packing_file.hpp"
-#include "mesowave/dem/scene.hpp"
+#include "mesowave/dem/calibration/calibration.hpp"
+#include "mesowave/dem/calibration/calibration_report.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
+#include "mesowave/dem/scene/scene.hpp"
 #include "mesowave/io/gnuplot.hpp"
 
 using namespace mesowave;

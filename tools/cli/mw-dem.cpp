@@ -12,12 +12,12 @@
 #include "mesowave/app/progress.hpp"
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/threads.hpp"
-#include "mesowave/dem/packing_file.hpp"
-#include "mesowave/dem/run_report.hpp"
-#include "mesowave/dem/scene.hpp"
-#include "mesowave/dem/scene_overrides.hpp"
-#include "mesowave/dem/simulation.hpp"
-#include "mesowave/dem/snapshot.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
+#include "mesowave/dem/engine/run_report.hpp"
+#include "mesowave/dem/scene/scene.hpp"
+#include "mesowave/dem/scene/scene_overrides.hpp"
+#include "mesowave/dem/engine/simulation.hpp"
+#include "mesowave/dem/engine/snapshot.hpp"
 #include "mesowave/io/signal_file.hpp"
 
 using namespace mesowave;

@@ -14,7 +14,7 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/units.hpp"
 #include "mesowave/io/signal_file.hpp"
-#include "mesowave/wave/fem_case.hpp"
+#include "mesowave/fem/case.hpp"
 
 using namespace mesowave;
 namespace fs = std::filesystem;
@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
   box->add_option("--source-mm", source_text, "Where the force acts, a point on a face X,Y,Z [mm]")->required();
 
   return tool.run(argc, argv, [&](app::Run& run) {
-    wave::FemCase c;
+    fem::FemCase c;
     c.material = {require_positive("--E-GPa", E_GPa, "GPa") * units::GPa, nu, rho};
     c.mesh_m = require_positive("--mesh-mm", mesh_mm, "mm") * units::mm;
     c.frequency_hz = require_positive("--frequency-kHz", f_kHz, "kHz") * units::kHz;
@@ -106,8 +106,8 @@ int main(int argc, char** argv) {
     c.duration_s = require_positive("--duration-ms", duration_ms, "ms") * units::ms;
     c.sample_dt_s = sample_dt_us * units::us;
     if (dt_us) c.dt_s = *dt_us * units::us;
-    c.quantity = wave::parse_quantity(quantity);
-    for (const auto& s : sensors) c.sensors.push_back(wave::parse_sensor_spec(s));
+    c.quantity = fem::parse_quantity(quantity);
+    for (const auto& s : sensors) c.sensors.push_back(fem::parse_sensor_spec(s));
     c.threads = threads;
     if (rod->parsed()) {
       c.radius_m = require_positive("--radius-mm", radius_mm, "mm") * units::mm;
@@ -115,21 +115,21 @@ int main(int argc, char** argv) {
       c.rod_model = model_kind;
       if (!spacetime_path.empty()) c.spacetime_step_m = st_step_mm * units::mm;
     } else {
-      c.body = wave::FemCase::Body::box;
+      c.body = fem::FemCase::Body::box;
       if (size_text.find(',') == std::string::npos) c.size_m.fill(std::stod(size_text) * units::mm);
-      else c.size_m = wave::parse_point_mm(size_text, "--size-mm");
-      c.source_m = wave::parse_point_mm(source_text, "--source-mm");
+      else c.size_m = fem::parse_point_mm(size_text, "--size-mm");
+      c.source_m = fem::parse_point_mm(source_text, "--source-mm");
     }
-    const wave::FemSetup setup = wave::assemble_fem_case(c);
+    const fem::FemSetup setup = fem::assemble_fem_case(c);
     app::Progress progress("mw-fem " + setup.model.description, setup.stepping.steps, "steps", !quiet);
-    const wave::FemRun fem = wave::run_fem_case(setup, [&](std::int64_t n) { progress.update(n); });
+    const fem::FemRun fem = fem::run_fem_case(setup, [&](std::int64_t n) { progress.update(n); });
     progress.finish();
 
     io::write_signal_file(run.output(signals_path), fem.result.signals, fem.attributes);
     if (setup.spacetime)
-      wave::write_spacetime_file(run.output(spacetime_path), fem.result.spacetime, *setup.spacetime,
+      fem::write_spacetime_file(run.output(spacetime_path), fem.result.spacetime, *setup.spacetime,
                                  setup.stepping.sample_dt_s, "z", fem.attributes);
-    const auto j = wave::fem_report(setup, fem, double(app::resource_usage().peak_rss_kib) / 1024.0, signals_path);
+    const auto j = fem::fem_report(setup, fem, double(app::resource_usage().peak_rss_kib) / 1024.0, signals_path);
     run.metric("wall", fem.result.wall_s, "s");
     run.metric("steps per second", j["steps_per_s"], "1/s");
     run.metric("stable dt", j["stable_dt_us"], "us");

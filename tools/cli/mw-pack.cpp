@@ -1,5 +1,5 @@
 // mw-pack - flowchart step 5 (concrete paper, Section 4.2): the DEM model's
-// packing of spheres, written as a packing HDF5 file (dem/packing_file.hpp)
+// packing of spheres, written as a packing HDF5 file (dem/packing/packing_file.hpp)
 // with a flat JSON summary.
 //
 //   mw-pack box --cube-side-mm 50 --porosity-pct 7 --d-min-mm 1.6 --d-max-mm 2
@@ -9,16 +9,16 @@
 //   mw-pack import yade-spheres.txt --lower-mm 0 0 0 --upper-mm 50 50 50 --packing same.h5
 //
 // The work (the container, the sizes, the mass, the summary) lives in
-// dem/packing_request.hpp; the packing method in dem/packing_generator.hpp.
+// dem/packing/packing_request.hpp; the packing method in dem/packing/packing_generator.hpp.
 #include <chrono>
 #include <optional>
 
 #include "mesowave/app/progress.hpp"
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/units.hpp"
-#include "mesowave/dem/packing_file.hpp"
-#include "mesowave/dem/packing_import.hpp"
-#include "mesowave/dem/packing_request.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
+#include "mesowave/dem/packing/packing_import.hpp"
+#include "mesowave/dem/packing/packing_request.hpp"
 
 using namespace mesowave;
 namespace fs = std::filesystem;

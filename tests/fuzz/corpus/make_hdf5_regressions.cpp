@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 #include <vector>
-#include "mesowave/dem/packing_file.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
 #include "mesowave/io/signal_file.hpp"
 using namespace mesowave;
 namespace fs = std::filesystem;

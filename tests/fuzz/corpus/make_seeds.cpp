@@ -5,8 +5,8 @@
 #include <fstream>
 #include <string>
 #include <vector>
-#include "mesowave/dem/packing_file.hpp"
-#include "mesowave/dem/packing_import.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
+#include "mesowave/dem/packing/packing_import.hpp"
 #include "mesowave/io/image.hpp"
 #include "mesowave/io/signal_csv.hpp"
 #include "mesowave/io/signal_file.hpp"

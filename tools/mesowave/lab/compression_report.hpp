@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "mesowave/lab/compression_test.hpp"
+#include "mesowave/lab/compression_analysis.hpp"
 
 namespace mesowave::lab {
 

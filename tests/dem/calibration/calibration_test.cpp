@@ -1,0 +1,205 @@
+// The calibration algorithm (dem/calibration/calibration.hpp) on a synthetic packing
+// response whose parameters are known: does it recover them, in few trials,
+// and does it refuse targets no packing reaches?
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <vector>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/dem/calibration/calibration.hpp"
+
+using namespace mesowave;
+using namespace mesowave::dem;
+
+namespace {
+
+// A packing's response with the structure of a real one: E_glob proportional
+// to E_dem with a factor g(nu_dem), nu_glob = h(nu_dem) falling, the peak
+// stress proportional-ish to T and independent of E_dem; failure trials read
+// a slightly softer modulus (the microcracking below 1/3 of the peak).
+struct SyntheticPacking {
+  std::function<double(double)> strength = [](double T) { return 2.7 * T; };
+  double g(double a) const { return 1.20 - 0.45 * a + 0.20 * a * a; }
+  double h(double a) const { return 0.245 - 0.32 * a + 0.09 * a * a; }
+
+  CalibrationTrial run(CalibrationTrial t) const {
+    const auto& p = t.parameters;
+    const bool failure = t.kind == CalibrationTrial::Kind::failure;
+    t.E_glob_Pa = p.E_dem_Pa * g(p.nu_dem) * (failure ? 0.995 : 1.0);
+    t.nu_glob = h(p.nu_dem) + (failure ? 0.002 : 0.0);
+    t.peak_Pa = failure ? strength(p.T_Pa) * (1 + 0.2 * p.nu_dem) : 0;
+    t.peak_reached = failure;
+    return t;
+  }
+  CalibrationTargets targets_of(const DemParameters& truth) const {
+    CalibrationTrial t;
+    t.kind = CalibrationTrial::Kind::failure;
+    t.parameters = truth;
+    t = run(t);
+    return {t.E_glob_Pa, t.nu_glob, t.peak_Pa};
+  }
+};
+
+const DemParameters kPoorStart{10e9, 0.1, 10e6, 1.0};
+
+int calibrate(CompressionCalibration& c, const SyntheticPacking& packing) {
+  int trials = 0;
+  while (auto t = c.next()) {
+    c.record(packing.run(*t));
+    ++trials;
+  }
+  return trials;
+}
+
+}  // namespace
+
+TEST(CompressionCalibration, RecoversTheParametersThatMadeTheTargets) {
+  const SyntheticPacking packing;
+  const DemParameters truth{23.31e9, 0.32, 24.4e6, 1.0};
+  const CalibrationTolerances tight{1e-5, 1e-5, 1e-5};
+  CompressionCalibration c(packing.targets_of(truth), tight, kPoorStart, 30);
+  const int trials = calibrate(c, packing);
+  ASSERT_TRUE(c.converged());
+  const DemParameters& found = c.result().parameters;
+  EXPECT_NEAR(found.E_dem_Pa / truth.E_dem_Pa, 1.0, 1e-4);
+  EXPECT_NEAR(found.nu_dem, truth.nu_dem, 1e-4);
+  EXPECT_NEAR(found.T_Pa / truth.T_Pa, 1.0, 1e-4);
+  EXPECT_LE(trials, 12);
+}
+
+TEST(CompressionCalibration, MeetsTheDefaultTolerancesInAFewTrials) {
+  // The tolerances (1 % on E, 0.01 on nu, 2 % on strength) from the
+  // poor start it names: a handful of runs, not a grid.
+  const SyntheticPacking packing;
+  CompressionCalibration c({27.42e9, 0.16, 66.0e6}, {}, kPoorStart, 12);
+  const int trials = calibrate(c, packing);
+  ASSERT_TRUE(c.converged());
+  const CalibrationTrial& r = c.result();
+  EXPECT_EQ(r.kind, CalibrationTrial::Kind::failure);
+  EXPECT_LE(std::abs(r.E_glob_Pa / 27.42e9 - 1), 0.01);
+  EXPECT_LE(std::abs(r.nu_glob - 0.16), 0.01);
+  EXPECT_LE(std::abs(r.peak_Pa / 66e6 - 1), 0.02);
+  EXPECT_LE(trials, 7);
+}
+
+TEST(CompressionCalibration, RefusesTargetsNoPackingReaches) {
+  const CalibrationTolerances tol;
+  auto message = [&](const CalibrationTargets& t) -> std::string {
+    try {
+      CompressionCalibration c(t, tol, kPoorStart, 12);
+      calibrate(c, SyntheticPacking{});
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  EXPECT_NE(message({27e9, 0.5, 66e6}).find("must lie in (0, 0.5)"), std::string::npos);
+  EXPECT_NE(message({27e9, 0.62, 66e6}).find("must lie in (0, 0.5)"), std::string::npos);
+  EXPECT_NE(message({27e9, -0.1, 66e6}).find("must lie in (0, 0.5)"), std::string::npos);
+  EXPECT_NE(message({-27e9, 0.16, 66e6}).find("E_st"), std::string::npos);
+  EXPECT_NE(message({27e9, 0.16, 0}).find("sigma_max"), std::string::npos);
+  EXPECT_NE(message({27e9, 0.16, 2e9}).find("peak strain"), std::string::npos);
+  // nu_glob of this packing is 0.245 at nu_dem = 0: 0.3 is out of reach.
+  EXPECT_NE(message({27e9, 0.30, 66e6}).find("unreachable"), std::string::npos) << message({27e9, 0.30, 66e6});
+}
+
+TEST(CompressionCalibration, RefusesAStrengthTheBondsCannotGive) {
+  // A packing whose strength saturates (every bond broken in the same way):
+  // the secant asks for ever larger T until the bonds would strain by 5 %.
+  SyntheticPacking packing;
+  packing.strength = [](double T) { return 2.7 * T / (1 + T / 50e6); };
+  CompressionCalibration c({27.42e9, 0.16, 400e6}, {}, kPoorStart, 30);
+  try {
+    calibrate(c, packing);
+    FAIL() << "an unreachable strength was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unreachable"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CompressionCalibration, GivesUpAfterItsTrialBudget) {
+  SyntheticPacking packing;
+  packing.strength = [](double T) { return 2.7 * T * (1 + 0.3 * std::sin(T / 1e6)); };  // not monotonic
+  CompressionCalibration c({27.42e9, 0.16, 66e6}, {1e-9, 1e-9, 1e-9}, kPoorStart, 6);
+  try {
+    calibrate(c, packing);
+    FAIL() << "ran past its budget";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("within 6 trials"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(c.trials().size(), 6u);
+}
+
+namespace {
+
+// A chain of equal spheres in tension (rod paper, Section 3): K_n = E_dem R
+// (Eq. 3) and E_DEM = K_n d / (pi R^2) = E_dem d / (pi R), linear in E_dem.
+double chain_modulus(double E_dem_GPa, double spacing_R) { return E_dem_GPa * spacing_R / std::numbers::pi; }
+
+std::vector<RodTrial> calibrate_rod(RodCalibration& c, const std::function<double(double)>& response) {
+  while (auto t = c.next()) {
+    t->E_DEM_GPa = response(t->E_dem_GPa);
+    c.record(*t);
+  }
+  return c.trials();
+}
+
+}  // namespace
+
+TEST(RodCalibration, TheSecantThroughTheOriginConvergesInOneStep) {
+  const double E = 208.72, spacing_R = 1.03;
+  RodCalibration c(E, 0.005, 100.0, 12);
+  const auto trials = calibrate_rod(c, [&](double E_dem) { return chain_modulus(E_dem, spacing_R); });
+  ASSERT_TRUE(c.converged());
+  ASSERT_EQ(trials.size(), 2u);  // the start, then the rescaled trial that meets the target
+  EXPECT_EQ(trials[0].E_dem_GPa, 100.0);
+  EXPECT_NEAR(trials[0].E_DEM_GPa, 100.0 * 1.03 / std::numbers::pi, 1e-12);
+  // The closed form E_dem = E pi R / d:
+  EXPECT_NEAR(trials[1].E_dem_GPa, E * std::numbers::pi / spacing_R, 1e-9);
+  EXPECT_NEAR(c.result().E_DEM_GPa, E, 1e-9);
+  EXPECT_EQ(c.result().number, 2);
+  EXPECT_FALSE(c.next());  // done stays done
+}
+
+TEST(RodCalibration, AStartThatMeetsTheTargetIsOneTrial) {
+  const double start = 208.72 * std::numbers::pi / 0.95;
+  RodCalibration c(208.72, 0.005, start, 12);
+  EXPECT_EQ(calibrate_rod(c, [](double E_dem) { return chain_modulus(E_dem, 0.95); }).size(), 1u);
+  EXPECT_EQ(c.result().E_dem_GPa, start);
+}
+
+TEST(RodCalibration, AnAffineResponseTakesAFewRescalings) {
+  // E_DEM = 2 E_dem + 30 (not through the origin): the rescaling converges
+  // geometrically (the error shrinks by 30 / E each step), within tolerance.
+  RodCalibration c(200.0, 1e-4, 10.0, 12);
+  const auto trials = calibrate_rod(c, [](double E_dem) { return 2 * E_dem + 30; });
+  ASSERT_TRUE(c.converged());
+  EXPECT_GT(trials.size(), 2u);
+  EXPECT_LE(trials.size(), 9u);  // 7: 10, 40, 72.7, 82.9, 84.7, 84.95, 84.99 GPa
+  // The fixed point of 2 E_dem + 30 = 200; E_DEM within 1e-4 puts E_dem within 1e-4 / (170 / 200).
+  EXPECT_NEAR(c.result().E_dem_GPa, 85.0, 85.0 * 1.18e-4);
+  for (std::size_t k = 1; k < trials.size(); ++k)
+    EXPECT_LT(std::abs(trials[k].E_DEM_GPa - 200.0), std::abs(trials[k - 1].E_DEM_GPa - 200.0));
+}
+
+TEST(RodCalibration, RefusesWhatItCannotReach) {
+  EXPECT_THROW(RodCalibration(0, 0.005, 100, 12), InputError);
+  EXPECT_THROW(RodCalibration(208, 0, 100, 12), InputError);
+  EXPECT_THROW(RodCalibration(208, 0.005, -1, 12), InputError);
+  EXPECT_THROW(RodCalibration(208, 0.005, 100, 0), InputError);
+  // A chain that saturates below the target: max_trials trials, then an error.
+  RodCalibration c(208.72, 0.005, 100, 4);
+  EXPECT_THROW(calibrate_rod(c, [](double E_dem) { return std::min(E_dem, 150.0); }), InputError);
+  EXPECT_EQ(c.trials().size(), 4u);
+  // A trial without a modulus, and the protocol.
+  RodCalibration d(208.72, 0.005, 100, 4);
+  auto t = d.next();
+  ASSERT_TRUE(t);
+  EXPECT_THROW(d.next(), std::logic_error);
+  t->E_DEM_GPa = 0;
+  EXPECT_THROW(d.record(*t), InputError);
+}

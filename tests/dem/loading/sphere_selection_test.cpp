@@ -1,0 +1,99 @@
+// Which spheres a patch, a point or a line's end selects (sphere_selection.hpp),
+// checked on hand-placed spheres whose answer is known by construction.
+#include <gtest/gtest.h>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/dem/loading/sphere_selection.hpp"
+#include "dem/test_packings.hpp"
+
+using namespace mesowave::dem;
+
+namespace {
+
+// A 4 x 4 x 2 grid of 1 mm spheres, centres 2 mm apart from (1, 1, 1) mm, and
+// one small sphere (0.5 mm) sunk 0.8 mm below the top layer's surface plane.
+SphereSet grid() {
+  Packing p;
+  std::int64_t id = 0;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) {
+        p.centres_m.push_back({1e-3 + 2e-3 * i, 1e-3 + 2e-3 * j, 1e-3 + 2e-3 * k});
+        p.radii_m.push_back(1e-3);
+        p.ids.push_back(id++);
+      }
+  p.centres_m.push_back({4e-3, 4e-3, 4e-3 - 0.8e-3 - 0.5e-3});
+  p.radii_m.push_back(0.5e-3);
+  p.ids.push_back(id++);
+  return make_sphere_set(p, 2000);
+}
+
+std::vector<std::int64_t> ids(const SphereSet& s, const std::vector<std::size_t>& chosen) {
+  std::vector<std::int64_t> out;
+  for (std::size_t k : chosen) out.push_back(std::int64_t(s.packing_index[k]));
+  return out;
+}
+
+}  // namespace
+
+TEST(SphereSelection, FacesParseNameAndPointOutward) {
+  for (const char* text : {"x-", "x+", "y-", "y+", "z-", "z+"}) EXPECT_EQ(Face::parse(text).name(), text);
+  const Face f = Face::parse("y+");
+  EXPECT_EQ(f.axis, 1);
+  EXPECT_TRUE(f.upper);
+  EXPECT_EQ(f.outward_normal().y, 1.0);
+  EXPECT_EQ(Face::parse("z-").outward_normal().z, -1.0);
+  EXPECT_EQ(f.in_plane(0), 0);
+  EXPECT_EQ(f.in_plane(1), 2);
+  EXPECT_EQ(Face::parse("x-").in_plane(0), 1);
+  EXPECT_EQ(Face::parse("x-").in_plane(1), 2);
+  for (const char* bad : {"x", "w+", "x+-", "X+", ""}) EXPECT_THROW(Face::parse(bad), mesowave::InputError) << bad;
+}
+
+TEST(SphereSelection, BoundingBoxHoldsTheSurfaces) {
+  const SphereSet s = grid();
+  const Box b = bounding_box(s);
+  EXPECT_DOUBLE_EQ(b.lower.x, 0.0);
+  EXPECT_DOUBLE_EQ(b.upper.x, 8e-3);
+  EXPECT_DOUBLE_EQ(b.upper.y, 8e-3);
+  EXPECT_DOUBLE_EQ(b.upper.z, 4e-3);
+  EXPECT_DOUBLE_EQ(b.lower.z, 0.0);
+}
+
+TEST(SphereSelection, PatchTakesTheSpheresUnderItWithinItsDepth) {
+  const SphereSet s = grid();
+  const Box box = bounding_box(s);
+  Patch p;
+  p.face = Face::parse("z+");
+  p.centre_m = {4e-3, 4e-3, 0};  // the coordinate along the normal is ignored
+  p.size_m[0] = p.size_m[1] = 4.5e-3;  // centres within 2.25 mm: x, y in {3, 5} mm
+  // Depth: the smallest radius (0.5 mm) - the sunk sphere (0.8 mm down) is out.
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, p, "t")), (std::vector<std::int64_t>{21, 22, 25, 26}));
+  p.depth_m = 0.9e-3;
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, p, "t")), (std::vector<std::int64_t>{21, 22, 25, 26, 32}));
+  // The same patch as fractions of the box.
+  p.depth_m = -1;
+  p.relative = true;
+  p.centre_rel = {0.5, 0.5, 1.0};
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, p, "t")), (std::vector<std::int64_t>{21, 22, 25, 26}));
+  EXPECT_DOUBLE_EQ(patch_centre(p, box).x, 4e-3);
+  // The lower x face: the first column (x = 1 mm), y and z within the patch.
+  Patch side;
+  side.face = Face::parse("x-");
+  side.centre_m = {0, 1e-3, 1e-3};
+  side.size_m[0] = side.size_m[1] = 1e-3;
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, side, "t")), (std::vector<std::int64_t>{0}));
+  side.centre_m = {0, 20e-3, 1e-3};
+  EXPECT_THROW(spheres_under_patch(s, box, side, "actuator a"), mesowave::InputError);
+}
+
+TEST(SphereSelection, NearestSphereAndLineEnds) {
+  const SphereSet s = grid();
+  EXPECT_EQ(s.packing_index[sphere_nearest(s, {5.1e-3, 2.9e-3, 3.2e-3})], 22u);  // (5, 3, 3) mm
+  EXPECT_EQ(s.packing_index[sphere_nearest(s, {4e-3, 4e-3, 2.5e-3})], 32u);      // the sunk sphere
+  // Equidistant from spheres 0 and 1: the lower packing index.
+  EXPECT_EQ(s.packing_index[sphere_nearest(s, {2e-3, 1e-3, 1e-3})], 0u);
+  const SphereSet line = make_sphere_set(mesowave::dem::testing::line_packing(7, 1e-3, 2e-3, 2000), 2000);
+  EXPECT_EQ(line.packing_index[sphere_at_end(line, false)], 0u);
+  EXPECT_EQ(line.packing_index[sphere_at_end(line, true)], 6u);
+}

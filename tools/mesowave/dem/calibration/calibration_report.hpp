@@ -1,0 +1,81 @@
+#pragma once
+// What mw-calibrate asks of each trial and writes about a calibration: the
+// mw-dem options of a trial and the results read back from its summary, a
+// line per trial, the calibrated parameters as the JSON that `mw-dem run
+// --from` reads, the trial log (CSV) and two figures (gnuplot scripts,
+// rendered by io::run_gnuplot): the trajectory of the trials against the
+// targets, and the stress-strain curves of the calibrated test with the
+// target and calibrated moduli drawn.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "mesowave/dem/calibration/calibration.hpp"
+#include "mesowave/dem/contact/material.hpp"
+#include "mesowave/dem/packing/packing.hpp"
+
+namespace mesowave::dem {
+
+/// The `mw-dem run` command of a trial: the scene's virtual test with the
+/// trial's options, its summary, curves and signals trial-NN.json/.csv/.h5 in
+/// `work_dir` (mw-dem records the run in the provenance database itself).
+struct TrialCommand {
+  std::filesystem::path mw_dem, scene, packing, work_dir;  ///< packing: "" for the scene's
+  std::string db;                                          ///< "" for mw-dem's default
+  int threads = 0;                                         ///< 0: mw-dem's choice
+  /// trial-01.json, trial-02.csv, ... in work_dir.
+  std::filesystem::path file(int trial, const std::string& extension) const;
+  std::vector<std::string> argv(int trial, const std::vector<std::string>& options) const;
+};
+
+/// The `mw-dem run` options of a cube trial. An elastic trial reads the
+/// response where the lab reads it, between 10 % and 1/3 of the target
+/// strength (EN 12390-13), on unbreakable linearised bonds, the run ending
+/// just above; a failure trial runs the full law with T and C = (C/T) T.
+std::vector<std::string> compression_trial_options(const CalibrationTrial& trial, const CalibrationTargets& targets,
+                                                   double friction_angle_deg);
+/// The trial with the results of its mw-dem summary (the JSON file `summary_file`).
+CalibrationTrial with_results(CalibrationTrial trial, const std::filesystem::path& summary_file);
+/// The rod trial with the results of its mw-dem summary (E_fit_GPa, wall_s).
+RodTrial with_results(RodTrial trial, const std::filesystem::path& summary_file);
+/// "trial 3 (elastic): E_dem 23.3 GPa, nu_dem 0.32 -> E_glob ..., nu_glob ... (linear model, 4.2 s)".
+std::string describe(const CalibrationTrial& trial);
+
+/// The calibrated cube: the flat keys that `mw-dem run --from` reads (E_dem_GPa,
+/// nu_dem, T_MPa, C_MPa, friction_angle_deg), then the results against the targets.
+nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_angle_deg);
+/// The calibrated rod: the chain (spheres, R, d, rho_p), E_dem and K_n = E_dem R
+/// (Eq. 3), E_DEM against the target, and the trials. `material` is the
+/// scene's (all but E_dem).
+nlohmann::ordered_json rod_calibration_summary(const RodCalibration& c, const Packing& chain,
+                                               const CohesiveFrictionalMaterial& material);
+
+/// One row per trial: trial, kind, model, parameters, results (six significant digits), wall
+/// time (0.1 s), summary file (which has the numbers in full).
+std::string calibration_trials_csv(const std::vector<CalibrationTrial>& trials);
+
+/// Three panels against the trial number: E_glob / E_st, nu_glob, sigma_peak /
+/// sigma_max, with the tolerance bands.
+std::string calibration_trajectory_script(const CompressionCalibration& c, const std::filesystem::path& png,
+                                          const std::string& title);
+
+struct StressStrainCurve {
+  std::vector<double> axial, lateral, stress_Pa;  ///< compression positive, lateral extension positive
+  double E_glob_Pa = 0, nu_glob = 0;
+  double sigma_b_Pa = 0, sigma_a_Pa = 0, eps_b = 0, eps_a = 0;  ///< the secant's two readings
+};
+
+/// The curves of a trial: its --curves CSV (stress_MPa, axial_strain,
+/// lateral_strain; the summary's name with .csv) and the secant readings of
+/// its summary's "test".
+StressStrainCurve read_trial_curve(const std::filesystem::path& summary_file);
+
+/// Stress against axial strain (right) and lateral strain (left, as negative
+/// numbers, the usual drawing of concrete tests), with lines of the target
+/// modulus E_st and of the calibrated E_glob through the lower reading.
+std::string stress_strain_script(const StressStrainCurve& curve, double E_target_Pa, double nu_target,
+                                 const std::filesystem::path& png, const std::string& title);
+
+}  // namespace mesowave::dem

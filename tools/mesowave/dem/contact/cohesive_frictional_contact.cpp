@@ -1,0 +1,152 @@
+#include "mesowave/dem/contact/cohesive_frictional_contact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <tuple>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
+#include "mesowave/dem/contact/axial_chain.hpp"
+#include "mesowave/dem/contact/linear_bonded_network.hpp"
+#include "mesowave/dem/engine/neighbour_search.hpp"
+#include "mesowave/dem/scene/plugins.hpp"
+
+namespace mesowave::dem {
+
+void CohesiveFrictionalContact::attach(SphereSystem& system) {
+  const SphereSet& spheres = system.spheres();
+  const auto stray = unbonded_overlaps(spheres, system.bonds());
+  if (!stray.empty()) {
+    double worst = 0;
+    for (auto [i, j] : stray)
+      worst = std::max(worst, spheres.radius_m[i] + spheres.radius_m[j] - norm(spheres.centre_m[j] - spheres.centre_m[i]));
+    throw InputError(std::to_string(stray.size()) + " pairs of spheres overlap at step 0 without a bond (bond factor C_f " +
+                     format_number(system.material().bond_factor) + " < 1; largest overlap " + format_number(worst) +
+                     " m): the full law would start them as contacts pushing with K_n u; raise C_f to bond them, or "
+                     "run --model linear/chain, which never adds contacts");
+  }
+  const double r_min = *std::min_element(spheres.radius_m.begin(), spheres.radius_m.end());
+  margin_ = 0.1 * r_min;
+  detect_contacts(system);
+}
+
+CohesiveFrictionalContact::Slot CohesiveFrictionalContact::slot(std::size_t s) const {
+  return {{nx_[s], ny_[s], nz_[s]}, {sx_[s], sy_[s], sz_[s]}, overlap0_[s], bond_[s],
+          cohesive_[s] != 0 ? kCohesive : kFrictional};
+}
+
+void CohesiveFrictionalContact::set_slots(const std::vector<Slot>& slots) {
+  const std::size_t m = slots.size();
+  nx_.resize(m), ny_.resize(m), nz_.resize(m), sx_.resize(m), sy_.resize(m), sz_.resize(m);
+  overlap0_.resize(m), bond_.resize(m), cohesive_.resize(m);
+  for (std::size_t s = 0; s < m; ++s) {
+    nx_[s] = slots[s].normal.x, ny_[s] = slots[s].normal.y, nz_[s] = slots[s].normal.z;
+    sx_[s] = slots[s].shear.x, sy_[s] = slots[s].shear.y, sz_[s] = slots[s].shear.z;
+    overlap0_[s] = slots[s].overlap0;
+    bond_[s] = slots[s].bond;
+    cohesive_[s] = slots[s].status == kCohesive ? 1.0 : 0.0;
+  }
+}
+
+std::size_t CohesiveFrictionalContact::broken_bond_count() const {
+  std::size_t broken = 0;
+  for (std::size_t s = 0; s < bond_.size(); ++s) broken += bond_[s] != kNoBond && cohesive_[s] == 0;
+  return broken;
+}
+
+void CohesiveFrictionalContact::contact_forces(SphereSystem& system, double dt, bool evaluate_energy) {
+  kernel(system, dt, evaluate_energy);
+}
+
+// Compiled for AVX-512, AVX2 and baseline x86-64, picked at load time. No FMA
+// contraction (ISO C++ mode), so every version gives the same bits.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+void CohesiveFrictionalContact::kernel(SphereSystem& system, double dt, bool evaluate_energy) {
+  NoExtension none;
+  run<SphereSystem::ContactResult>(system, dt, evaluate_energy, none);
+}
+
+void CohesiveFrictionalContact::after_step(SphereSystem& system, double dt) {
+  travelled_ += system.max_speed() * dt;
+  // Two spheres close in by at most twice the distance the fastest one moved.
+  if (2.0 * travelled_ > margin_) detect_contacts(system);
+}
+
+void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
+  travelled_ = 0;
+  ++detection_passes_;
+  const SphereSet& spheres = system.spheres();
+  const BondNetwork& bonds = system.bonds();
+  const Vec3* x = system.positions();
+  const std::size_t n = spheres.size(), nb = bonds.size();
+  std::vector<std::array<double, 3>> pos(n);
+  for (std::size_t k = 0; k < n; ++k) pos[k] = {x[k].x, x[k].y, x[k].z};
+  const double r_min = *std::min_element(spheres.radius_m.begin(), spheres.radius_m.end());
+  const auto pairs = find_pairs_within(pos, spheres.radius_m, 1.0 + margin_ / (2.0 * r_min));
+
+  // Where each bond and each detected pair lives now.
+  std::vector<std::uint32_t> slot_of_bond(nb, kNoBond);
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> old_pairs;
+  for (std::size_t s = 0; s < bond_.size(); ++s) {
+    if (bond_[s] != kNoBond) slot_of_bond[bond_[s]] = std::uint32_t(s);
+    else old_pairs.emplace_back(system.first(s), system.second(s), std::uint32_t(s));
+  }
+  std::sort(old_pairs.begin(), old_pairs.end());
+
+  std::vector<std::uint32_t> first(bonds.first), second(bonds.second);
+  std::vector<Slot> natural(nb);
+  for (std::size_t b = 0; b < nb; ++b)
+    natural[b] = slot_of_bond[b] != kNoBond ? slot(slot_of_bond[b])
+                                            : Slot{bonds.normal0[b], {}, bonds.overlap0_m[b], std::uint32_t(b), kCohesive};
+  std::size_t b = 0;  // bonds and pairs are both sorted by (first, second)
+  for (const auto& p : pairs) {
+    const double reach = spheres.radius_m[p.i] + spheres.radius_m[p.j] + margin_;
+    const Vec3 d = x[p.j] - x[p.i];
+    if (norm2(d) > reach * reach) continue;
+    while (b < nb && (bonds.first[b] < p.i || (bonds.first[b] == p.i && bonds.second[b] < p.j))) ++b;
+    if (b < nb && bonds.first[b] == p.i && bonds.second[b] == p.j) continue;  // bonded
+    const auto known = std::lower_bound(old_pairs.begin(), old_pairs.end(), std::make_tuple(p.i, p.j, 0u));
+    first.push_back(p.i);
+    second.push_back(p.j);
+    if (known != old_pairs.end() && std::get<0>(*known) == p.i && std::get<1>(*known) == p.j)
+      natural.push_back(slot(std::get<2>(*known)));
+    else
+      natural.push_back(Slot{(1.0 / norm(d)) * d, {}, 0.0, kNoBond, kFrictional});
+  }
+  // Same contacts as before (the usual case for waves: bonds only): keep the layout.
+  if (detection_passes_ > 1 && natural.size() == nb && bond_.size() == nb) return;
+  before_relayout(system);
+  const auto order = system.set_contacts(first, second, moments());
+  std::vector<Slot> slots(order.size());
+  for (std::size_t s = 0; s < order.size(); ++s) slots[s] = natural[order[s]];
+  set_slots(slots);
+  after_relayout(system);
+}
+
+// The law of both papers, with its two shortcuts: the linearised network and
+// the axial chain model the same law where the scene lets them (model_choice.hpp).
+void register_cohesive_frictional_law(Plugins& p) {
+  p.laws.add({
+      .name = "cohesive_frictional",
+      .summary = "Yade's CohFrictMat / CohFrictPhys with Law2_ScGeom6D_CohFrictPhys_CohesionMoment, momentRotationLaw "
+                 "off: F_n = K_n (u - u_0) (Eq. 1), incremental shear (Eq. 2), K_n = E_dem 2 R_A R_B/(R_A + R_B), "
+                 "K_s = nu_dem K_n (Eq. 3), Mohr-Coulomb with strengths T R^2, C R^2 (Eqs. 4-6)",
+      .parameters = {},
+      .models = {"full", "linear", "chain"},
+      .make = [](const std::string& model, SphereSet spheres, BondNetwork bonds,
+                 const LawInput& in) -> std::unique_ptr<Model> {
+        if (model == "chain") return std::make_unique<AxialChain>(std::move(spheres), bonds, in.material, *in.line);
+        if (model == "linear")
+          return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
+                                                std::make_unique<LinearBondedNetwork>());
+        return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
+                                              std::make_unique<CohesiveFrictionalContact>());
+      },
+      .shortcut_obstacle = [](const std::string&, const Scene&) { return std::string(); },
+      .describe = [](const LawParameters&) { return nlohmann::ordered_json::object(); },
+  });
+}
+
+}  // namespace mesowave::dem

@@ -1,0 +1,67 @@
+#include "mesowave/dem/contact/linear_bonded_network.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mesowave::dem {
+
+void LinearBondedNetwork::attach(SphereSystem& system) {
+  const BondNetwork& bonds = system.bonds();
+  const auto order = system.set_contacts(bonds.first, bonds.second);
+  const std::size_t m = order.size();
+  nx_.resize(m), ny_.resize(m), nz_.resize(m), overlap0_.resize(m);
+  for (std::size_t s = 0; s < m; ++s) {
+    const Vec3 n = bonds.normal0[order[s]];
+    nx_[s] = n.x, ny_[s] = n.y, nz_[s] = n.z;
+    overlap0_[s] = bonds.overlap0_m[order[s]];
+  }
+}
+
+void LinearBondedNetwork::contact_forces(SphereSystem& system, double /*dt*/, bool evaluate_energy) {
+  kernel(system, evaluate_energy);
+}
+
+// Compiled for AVX-512, AVX2 and baseline x86-64, picked at load time. No FMA
+// contraction (ISO C++ mode), so every version gives the same bits.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
+  const CohesiveFrictionalMaterial& material = system.material();
+  const double two_E_dem = 2.0 * material.E_dem_Pa, ratio = material.stiffness_ratio;
+  const double T = material.tensile_strength_Pa, C = material.cohesion_Pa;
+  const bool finite_T = std::isfinite(T), finite_C = std::isfinite(C);
+  const double* radius = system.spheres().radius_m.data();
+  const Vec3* d = system.positions();
+  const Vec3* theta = system.rotations();
+  const double *nx = nx_.data(), *ny = ny_.data(), *nz = nz_.data(), *overlap0 = overlap0_.data();
+  const std::uint32_t* first = system.first();
+  const std::uint32_t* second = system.second();
+
+  system.for_each_contact([&](std::size_t b, SphereSystem::ContactResult& r) __attribute__((always_inline)) {
+    const std::uint32_t i = first[b], j = second[b];
+    const double ri = radius[i], rj = radius[j], sum = ri + rj;
+    const double u0 = overlap0[b], dist0 = sum - u0;
+    const double inv = 1.0 / (sum * dist0);  // one division for K_n and a0
+    const double kn = two_E_dem * ri * rj * dist0 * inv, ks = ratio * kn;
+    const double a0 = sum * sum * inv;
+    const Vec3 n{nx[b], ny[b], nz[b]};
+    const Vec3 dd = d[j] - d[i];
+    const double dn = dot(n, dd);
+    const Vec3 st = a0 * (dd - dn * n) - cross(ri * theta[i] + rj * theta[j], n);
+    const double fn = -kn * dn;
+    const Vec3 fs = -ks * st;
+    r.f = fn * n + fs;
+    r.c = cross(n, fs);
+    r.arm[0] = ri - 0.5 * u0;
+    r.arm[1] = rj - 0.5 * u0;
+    const double fs2 = norm2(fs);
+    // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
+    const double r_min = std::min(ri, rj);
+    const double sn = finite_T ? T * r_min * r_min : kn * r_min, ss = finite_C ? C * r_min * r_min : kn * r_min;
+    r.ratio2 = std::max(fn * fn / (sn * sn), fs2 / (ss * ss));
+    r.plastic = 0;
+    // The shear spring acting on a0 P_t dd is a0 K_s (Yade's incident-velocity factor).
+    r.elastic = evaluate_energy ? 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 / (a0 * ks) : 0.0) : 0.0;
+  });
+}
+
+}  // namespace mesowave::dem

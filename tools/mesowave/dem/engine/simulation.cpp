@@ -1,0 +1,289 @@
+#include "mesowave/dem/engine/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
+#include "mesowave/dem/loading/sphere_selection.hpp"
+
+namespace mesowave::dem {
+namespace {
+
+std::vector<std::size_t> resolve(const SphereTarget& target, const SphereSet& s, const Box& box, const std::string& who) {
+  switch (target.kind) {
+    case SphereTarget::Kind::patch: return spheres_under_patch(s, box, target.patch, who);
+    case SphereTarget::Kind::point: return {sphere_nearest(s, target.point_m)};
+    case SphereTarget::Kind::end: return {sphere_at_end(s, target.last)};
+  }
+  return {};
+}
+
+std::string ns_text(double seconds) { return format_number(seconds * 1e9) + " ns"; }
+
+std::int64_t whole_steps(double interval, double dt, const std::string& what) {
+  const double ratio = interval / dt;
+  const auto steps = std::int64_t(std::llround(ratio));
+  if (steps < 1 || std::abs(ratio - double(steps)) > 1e-6 * ratio)
+    throw InputError(what + " (" + ns_text(interval) + ") must be a whole number of time steps of " + ns_text(dt));
+  return steps;
+}
+
+void add_boundary_stiffness(CriticalTimeStep& c, double stiffness_per_mass, double damping) {
+  c.boundary_lambda = stiffness_per_mass;
+  c.lambda_max += stiffness_per_mass;
+  c.eigenvalue_s = 2.0 / std::sqrt(c.lambda_max);
+  c.limit_s = c.eigenvalue_s / std::sqrt(1.0 + damping);
+  const double gershgorin = 4.0 / (c.stiffness_bound_s * c.stiffness_bound_s) + stiffness_per_mass;
+  c.stiffness_bound_s = 2.0 / std::sqrt(gershgorin);
+}
+
+// The loaded area (the bounding box across the load axis, or pi r^2 for a
+// line of spheres), the mean sphere diameter and the particle density.
+UniaxialTestSpecimen describe_specimen(const Model& model, const Box& box, const std::optional<Vec3>& line,
+                                       const CohesiveFrictionalMaterial& m, const Scene& scene) {
+  UniaxialTestSpecimen s;
+  double r_sum = 0;
+  for (std::size_t k = 0; k < model.sphere_count(); ++k) r_sum += model.radius(k);
+  const double r_mean = r_sum / double(model.sphere_count());
+  s.grain_diameter_m = 2 * r_mean;
+  s.particle_density_kg_m3 = m.density_kg_m3;
+  s.area_m2 = scene.test.area_m2;
+  if (s.area_m2 > 0) return s;
+  if (line) {
+    s.area_m2 = std::numbers::pi * r_mean * r_mean;
+    return s;
+  }
+  const SensorSpec* axial = nullptr;
+  for (const auto& sensor : scene.sensors)
+    if (sensor.name == scene.test.axial.front()) axial = &sensor;
+  if (axial->component == "line") throw InputError("[test]: an extensometer along \"line\" needs a line of spheres");
+  const int a = axial->component[0] - 'x';
+  const int p = (a + 1) % 3, q = (a + 2) % 3;
+  s.area_m2 = (box.upper[p] - box.lower[p]) * (box.upper[q] - box.lower[q]);
+  return s;
+}
+
+}  // namespace
+
+Simulation::~Simulation() = default;
+
+Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOptions options)
+    : scene_(scene), options_(std::move(options)) {
+  const auto start = std::chrono::steady_clock::now();
+  CohesiveFrictionalMaterial& m = scene_.material;
+  if (!scene_.density_given) {
+    if (!(packing.particle_density_kg_m3 > 0))
+      throw InputError("no particle density: the packing file has none, so set [material] density_kg_m3 in the scene");
+    m.density_kg_m3 = packing.particle_density_kg_m3;
+  }
+  SphereSet spheres = make_sphere_set(packing, m.density_kg_m3);
+  BondNetwork bonds = make_bond_network(spheres, m.bond_factor);
+  const Box box = bounding_box(spheres);
+
+  const std::optional<Vec3> line = line_axis(spheres);
+  std::vector<ResolvedLoad> loads;
+  for (const auto& a : scene_.actuators) {
+    const std::string who = "actuator " + a.name;
+    loads.push_back({&a, resolve(a.target, spheres, box, who), direction_vector(a.direction, a.target, who, line)});
+  }
+  // The sphere groups of each sensor (its patch, an extensometer's two pads), as its kind lists them.
+  std::vector<std::vector<std::vector<std::size_t>>> sensor_groups;
+  for (const auto& sensor : scene_.sensors) {
+    const std::string who = "sensor " + sensor.name;
+    sensor_groups.emplace_back();
+    for (const auto& [target, label] : sensor_kinds().get(sensor.kind, who).targets(sensor))
+      sensor_groups.back().push_back(resolve(*target, spheres, box, who + label));
+  }
+  const std::string requested = options_.model != "auto" ? options_.model : scene_.model;
+  choice_ = choose_model(requested, scene_, spheres, bonds, loads);
+
+  // Notes a user should see: second-neighbour bonds on a line (the rod at d < C_f R).
+  if (auto axis = line_axis(spheres)) {
+    std::size_t far = 0;
+    const auto order_along = [&](std::size_t k) { return dot(spheres.centre_m[k], *axis); };
+    std::vector<std::size_t> rank(spheres.size());
+    {
+      std::vector<std::size_t> idx(spheres.size());
+      for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
+      std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return order_along(a) < order_along(b); });
+      for (std::size_t r = 0; r < idx.size(); ++r) rank[idx[r]] = r;
+    }
+    for (std::size_t b = 0; b < bonds.size(); ++b)
+      if (std::llabs(std::int64_t(rank[bonds.first[b]]) - std::int64_t(rank[bonds.second[b]])) > 1) ++far;
+    if (far > 0)
+      notes_.push_back(std::to_string(far) + " of " + std::to_string(bonds.size()) +
+                       " bonds link spheres that are not neighbours on the line: at this spacing a sphere reaches its "
+                       "second neighbours within C_f (r_i + r_j) = " + format_number(m.bond_factor) +
+                       " (r_i + r_j), so they are bonded too (the rod paper's L_int < 2d would exclude them; a "
+                       "bond_factor below (2 d)/(2 R) does)");
+  }
+
+  model_ = contact_laws()
+               .get(scene_.contact_law, "[material].law")
+               .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line});
+
+  const double ratio = scene_.duration_s / scene_.dt_s;
+  steps_ = std::int64_t(std::ceil(ratio - 1e-9));
+
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    const ActuatorSpec& a = *loads[i].spec;
+    actuator_placements_.push_back({a.name, a.kind, packing_indices(*model_, loads[i].spheres), loads[i].direction,
+                                    a.amplitude, a.frequency_hz, a.cycles, a.delay_s, {}});
+    actuators_.push_back(actuator_kinds().get(a.kind, "actuator " + a.name).make(
+        ActuatorSite{a, loads[i].spheres, loads[i].direction, *model_, box, m, scene_.duration_s}));
+  }
+  for (std::size_t i = 0; i < scene_.sensors.size(); ++i) {
+    const SensorSpec& sensor = scene_.sensors[i];
+    const std::string who = "sensor " + sensor.name;
+    const std::int64_t every =
+        sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
+    Placement where{sensor.name, "", {}, {}, 0, 0, 0, 0, {}};
+    sensors_.push_back(sensor_kinds().get(sensor.kind, who).make(
+        SensorSite{sensor, *model_, sensor_groups[i], line, every, actuators_}, where));
+    sensor_placements_.push_back(std::move(where));
+  }
+  double r_min = model_->radius(0);
+  for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
+  dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.E_dem_Pa, m.damping);
+  // Walls add a contact spring to the spheres they touch: by Weyl's inequality
+  // lambda_max(K + D) <= lambda_max(K) + max D, D the largest k_w / m.
+  double boundary = 0;
+  for (const auto& a : actuators_) boundary = std::max(boundary, a->added_stiffness_per_mass());
+  if (boundary > 0) add_boundary_stiffness(dt_cr_, boundary, m.damping);
+  if (options_.refuse_unstable_dt && !(scene_.dt_s <= dt_cr_.limit_s))
+    throw InputError("time step dt = " + ns_text(scene_.dt_s) + " exceeds the stable limit of this packing, " +
+                     ns_text(dt_cr_.limit_s) + " = 2/sqrt((1 + alpha_d) lambda_max) with lambda_max of the bonded "
+                     "network (the paper's estimate min R sqrt(rho/E) is " + ns_text(dt_cr_.paper_estimate_s) +
+                     "); choose dt_ns <= " + format_number(std::floor(dt_cr_.limit_s * 1e9 * 1000) / 1000));
+
+  if (scene_.test.active()) test_specimen_ = describe_specimen(*model_, box, line, m, scene_);
+  setup_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+RunReport Simulation::describe() const {
+  RunReport r;
+  r.scene = scene_.name;
+  r.choice = choice_;
+  r.material = scene_.material;
+  r.contact_law = scene_.contact_law;
+  r.law_parameters = scene_.law_parameters;
+  r.actuator_placements = actuator_placements_;
+  r.sensor_placements = sensor_placements_;
+  r.spheres = model_->sphere_count();
+  r.bonds = model_->bond_count();
+  r.contacts = model_->contact_count();
+  r.broken_bonds = model_->broken_bond_count();
+  r.degrees_of_freedom = model_->degrees_of_freedom();
+  r.threads = model_->threads();
+  r.dt_s = scene_.dt_s;
+  r.duration_s = double(steps_) * scene_.dt_s;
+  r.steps = steps_;
+  r.dt_cr = dt_cr_;
+  std::size_t sensor_bytes = 0;
+  for (std::size_t i = 0; i < sensors_.size(); ++i) sensor_bytes += std::size_t(steps_ + 1) * sizeof(double);
+  r.memory_bytes = model_->memory_bytes() + sensor_bytes;
+  for (const auto& a : actuators_) r.actuators.push_back(a->name() + ": " + a->description());
+  for (const auto& s : sensors_) r.sensors.push_back(s->name() + ": " + s->description());
+  r.notes = notes_;
+  r.setup_s = setup_s_;
+  return r;
+}
+
+RunReport Simulation::run() {
+  Model& model = *model_;
+  const double dt = scene_.dt_s;
+  for (auto& s : sensors_) s->prepare(steps_);
+  const std::int64_t energy_every = scene_.energy_check_steps;
+  const std::int64_t snapshot_every =
+      scene_.snapshot_interval_s > 0 && options_.on_snapshot
+          ? whole_steps(scene_.snapshot_interval_s, dt, "snapshot interval")
+          : 0;
+  std::int64_t snapshot_index = 0;
+  if (snapshot_every > 0) options_.on_snapshot(model, 0.0, snapshot_index++);
+
+  // A test's stop rule reads the load sensors whenever they have a new sample.
+  std::optional<UniaxialTestMonitor> monitor;
+  std::vector<const Sensor*> loads;
+  if (test_specimen_) {
+    monitor.emplace(scene_.test, test_specimen_->area_m2);
+    for (const auto& name : scene_.test.load)
+      for (const auto& s : sensors_)
+        if (s->name() == name) loads.push_back(s.get());
+  }
+  std::vector<double> latest(loads.size());
+  std::size_t seen = 0;
+  std::string stop_reason;
+
+  double initial_stored = 0, max_work = 0, peak_stored = 0;
+  std::int64_t done = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (std::int64_t n = 0; n < steps_; ++n) {
+    const double t = double(n) * dt;
+    for (auto& a : actuators_) a->before_step(model, t, dt);
+    const bool energy_step = n % energy_every == 0 || n + 1 == steps_;
+    model.step(dt, energy_step);
+    for (auto& a : actuators_) a->after_step(model, t, dt);
+    for (auto& s : sensors_) s->record(model, n);
+    if (energy_step) {
+      const EnergyAccount e = model.energy();
+      const double stored = e.stored();
+      if (!std::isfinite(stored) || model.has_non_finite_state())
+        throw InputError("the state became non-finite at step " + std::to_string(n) + " (t = " +
+                         format_number(t * 1e6) + " us): the run is unstable; nothing was written");
+      if (n == 0) initial_stored = std::max(stored, 0.0);
+      max_work = std::max(max_work, e.external_work_J);
+      peak_stored = std::max(peak_stored, stored);
+      const double allowed = 4.0 * (initial_stored + max_work);
+      if (stored > allowed && stored > 1e-300)
+        throw InputError("energy blow-up at step " + std::to_string(n) + " (t = " + format_number(t * 1e6) +
+                         " us): stored energy " + format_number(stored) + " J exceeds 4x the energy put in (" +
+                         format_number(initial_stored + max_work) + " J); the time step " + ns_text(dt) +
+                         " is too large for this packing (stable limit " + ns_text(dt_cr_.limit_s) +
+                         ") or the model is unstable; nothing was written");
+    }
+    if (snapshot_every > 0 && (n + 1) % snapshot_every == 0) options_.on_snapshot(model, double(n + 1) * dt, snapshot_index++);
+    if (options_.on_progress) options_.on_progress(n + 1, steps_);
+    done = n + 1;
+    if (monitor && loads.front()->samples().size() > seen) {
+      seen = loads.front()->samples().size();
+      for (std::size_t i = 0; i < loads.size(); ++i) latest[i] = loads[i]->samples().back();
+      if (monitor->stop_after(latest)) {
+        stop_reason = monitor->reason();
+        break;
+      }
+    }
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  RunReport r = describe();
+  r.ran = true;
+  r.steps = done;
+  r.duration_s = double(done) * dt;
+  r.stop_reason = stop_reason;
+  r.wall_s = wall;
+  r.steps_per_s = wall > 0 ? double(done) / wall : 0;
+  r.ns_per_contact_step = done > 0 && r.contacts > 0 ? wall * 1e9 / (double(done) * double(r.contacts)) : 0;
+  r.energy = model.energy();
+  r.peak_stored_J = peak_stored;
+  r.peak_force_ratio = model.peak_force_ratio();
+  r.broken_bonds = model.broken_bond_count();
+  if (choice_.model == "linear") {
+    r.validity_bound = scene_.linear_validity_bound;
+    if (!(r.peak_force_ratio < r.validity_bound))
+      throw InputError("the linearised network is not valid for this run: the peak bond force / strength reached " +
+                       format_number(r.peak_force_ratio) + ", above the validity bound " +
+                       format_number(r.validity_bound) + " (linear_validity_bound); rerun with --model full");
+  } else if (choice_.model == "chain" && scene_.material.breakable()) {
+    r.validity_bound = 1.0;
+    if (!(r.peak_force_ratio < 1.0))
+      throw InputError("the chain model is not valid for this run: a bond reached its strength (peak bond force / "
+                       "strength " + format_number(r.peak_force_ratio) + " >= 1) and would break; rerun with --model full");
+  }
+  for (const auto& s : sensors_) r.signals.push_back(s->signal(dt));
+  if (test_specimen_) r.test = analyse_uniaxial_test(r.signals, scene_.test, *test_specimen_);
+  return r;
+}
+
+}  // namespace mesowave::dem

@@ -1,0 +1,102 @@
+#pragma once
+// One DEM run from a scene: builds the spheres (Morton order) and the step-0
+// bonds, chooses the model (model_choice.hpp), computes the critical time
+// step and refuses a larger one, places actuators and sensors, and steps:
+//
+//   for n = 0 .. steps-1 (t_n = n dt):
+//     actuators.before_step(t_n)    external forces of step n
+//     model.step(dt)                contact forces at x_n, then leapfrog
+//     actuators.after_step(t_n)     constraints at t_{n+1}
+//     sensors.record(n)
+//     every energy_check_steps: energies; a non-finite state or stored energy
+//       above 4x (initial + work put in) stops the run with an error;
+//     a [test]'s stop rule (a drop after the peak, a stress reached) ends it early.
+//
+// After the run the linear model's measured peak bond force / strength is
+// checked against the scene's bound (the chain's against 1: no breakage), and
+// a [test] is analysed (uniaxial_test.hpp).
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mesowave/dem/loading/actuator.hpp"
+#include "mesowave/dem/engine/model.hpp"
+#include "mesowave/dem/scene/model_choice.hpp"
+#include "mesowave/dem/packing/packing.hpp"
+#include "mesowave/dem/scene/plugins.hpp"
+#include "mesowave/dem/scene/scene.hpp"
+#include "mesowave/dem/loading/sensor.hpp"
+#include "mesowave/dem/engine/time_step.hpp"
+#include "mesowave/dem/calibration/uniaxial_analysis.hpp"
+#include "mesowave/signal/signal.hpp"
+
+namespace mesowave::dem {
+
+struct SimulationOptions {
+  std::string model = "auto";     ///< overrides the scene's [model] choice unless auto
+  bool refuse_unstable_dt = true; ///< tests switch it off to watch the blow-up detection work
+  std::function<void(std::int64_t done, std::int64_t total)> on_progress;
+  /// Called at t = 0 and every scene.snapshot_interval_s (if > 0).
+  std::function<void(const Model& model, double t_s, std::int64_t index)> on_snapshot;
+};
+
+struct RunReport {
+  std::string scene;
+  ModelChoice choice;
+  CohesiveFrictionalMaterial material;
+  std::string contact_law;
+  LawParameters law_parameters;
+  std::vector<Placement> actuator_placements, sensor_placements;
+  std::size_t spheres = 0, bonds = 0, contacts = 0, broken_bonds = 0, degrees_of_freedom = 0;
+  int threads = 1;
+  double dt_s = 0, duration_s = 0;
+  std::int64_t steps = 0;
+  CriticalTimeStep dt_cr;
+  std::size_t memory_bytes = 0;
+  std::vector<std::string> actuators, sensors, notes;
+  // After a run:
+  bool ran = false;
+  double setup_s = 0, wall_s = 0, steps_per_s = 0, ns_per_contact_step = 0;
+  EnergyAccount energy;
+  std::string stop_reason;  ///< why the run ended before its duration (a test's stop rule); empty otherwise
+  std::optional<UniaxialTestResult> test;  ///< the [test] analysis
+  double peak_stored_J = 0;
+  double peak_force_ratio = 0;
+  double validity_bound = 0;  ///< the bound the peak ratio was checked against (0: none)
+  std::vector<signal::Signal> signals;
+};
+
+class Simulation {
+public:
+  /// InputError for anything the user can fix (scene, packing, dt above the limit...).
+  Simulation(const Scene& scene, const Packing& packing, SimulationOptions options = {});
+  ~Simulation();
+
+  const ModelChoice& choice() const { return choice_; }
+  const CriticalTimeStep& time_step() const { return dt_cr_; }
+  Model& model() { return *model_; }
+  const Model& model() const { return *model_; }
+  std::int64_t steps() const { return steps_; }
+  /// Everything known before running (what `mw-dem info` prints).
+  RunReport describe() const;
+  /// Runs every step. InputError on a blow-up or a violated validity check.
+  RunReport run();
+
+private:
+  Scene scene_;
+  SimulationOptions options_;
+  ModelChoice choice_;
+  CriticalTimeStep dt_cr_;
+  std::unique_ptr<Model> model_;
+  std::vector<std::unique_ptr<Actuator>> actuators_;
+  std::vector<std::unique_ptr<Sensor>> sensors_;
+  std::int64_t steps_ = 0;
+  double setup_s_ = 0;
+  std::vector<std::string> notes_;
+  std::vector<Placement> actuator_placements_, sensor_placements_;
+  std::optional<UniaxialTestSpecimen> test_specimen_;
+};
+
+}  // namespace mesowave::dem

@@ -1,0 +1,371 @@
+#include "mesowave/dem/engine/sphere_system.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mesowave::dem {
+namespace {
+
+// Eq. (7) as Yade's NewtonIntegrator::cundallDamp2nd applies it.
+inline double damped(double a, double v, double dt, double alpha) {
+  const double p = a * (v + 0.5 * dt * a);
+  return a * (1.0 - alpha * double((p > 0) - (p < 0)));
+}
+
+// The symmetric linearisation of a bond at step 0 (for the critical time
+// step): F_j = -K_n (n.dd) n - K_s' [P_t dd - (k_i th_i + k_j th_j) x n],
+// torques -k_i n x F_j and -k_j n x F_j, with Yade's kinematic branches
+// k = r dist0 / (r_i + r_j) and K_s' = K_s (r_i + r_j) / dist0.
+// With a law's rolling and twisting springs k_r, k_tw (0 without) the moment
+// on j is -k_r P_t (th_j - th_i) - k_tw n n.(th_j - th_i), on i its opposite.
+struct LinearBond {
+  Vec3 n;
+  double kn, ks, ki, kj, kr = 0, ktw = 0;
+  void forces(const Vec3& di, const Vec3& ti, const Vec3& dj, const Vec3& tj, Vec3& fi, Vec3& mi, Vec3& fj,
+              Vec3& mj) const {
+    const Vec3 dd = dj - di;
+    const double dn = dot(n, dd);
+    const Vec3 st = (dd - dn * n) - cross(ki * ti + kj * tj, n);
+    fj = -(kn * dn) * n - ks * st;
+    fi = -fj;
+    const Vec3 c = cross(n, fj);
+    mi = -ki * c;
+    mj = -kj * c;
+    if (kr != 0 || ktw != 0) {
+      const Vec3 dth = tj - ti;
+      const double twist = dot(n, dth);
+      const Vec3 m = -kr * (dth - twist * n) - (ktw * twist) * n;
+      mi -= m;
+      mj += m;
+    }
+  }
+};
+
+LinearBond linear_bond(const SphereSystem& system, std::size_t k) {
+  const SphereSet& s = system.spheres();
+  const BondNetwork& b = system.bonds();
+  const CohesiveFrictionalMaterial& m = system.material();
+  const double ri = s.radius_m[b.first[k]], rj = s.radius_m[b.second[k]];
+  const double dist0 = ri + rj - b.overlap0_m[k];
+  const double alpha = (ri + rj) / dist0;
+  LinearBond lb{b.normal0[k], normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha, rj / alpha};
+  system.kernel().moment_stiffness(system, k, lb.kr, lb.ktw);
+  return lb;
+}
+
+}  // namespace
+
+SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
+                           std::unique_ptr<ContactKernel> kernel)
+    : spheres_(std::move(spheres)), bonds_(std::move(bonds)), material_(material), kernel_(std::move(kernel)),
+      displacement_state_(kernel_->displacement_state()), track_rotation_(kernel_->track_rotation()) {
+  const std::size_t n = spheres_.size();
+  x_ = displacement_state_ ? std::vector<Vec3>(n) : spheres_.centre_m;
+  v_.assign(n, {});
+  w_.assign(n, {});
+  a_.assign(n, {});
+  f_ext_.assign(n, {});
+  if (track_rotation_) theta_.assign(n, {});
+  inv_mass_.resize(n);
+  inv_inertia_.resize(n);
+  inv_mass3_.resize(3 * n);
+  inv_inertia3_.resize(3 * n);
+  for (std::size_t k = 0; k < n; ++k) {
+    inv_mass_[k] = 1.0 / spheres_.mass_kg[k];
+    inv_inertia_[k] = 1.0 / spheres_.inertia_kg_m2[k];
+    for (int d = 0; d < 3; ++d) {
+      inv_mass3_[3 * k + std::size_t(d)] = inv_mass_[k];
+      inv_inertia3_[3 * k + std::size_t(d)] = inv_inertia_[k];
+    }
+  }
+  is_forced_.assign(n, 0);
+  a_undamped_.assign(n, {});
+  const std::size_t sphere_blocks = (n + kSphereBlock - 1) / kSphereBlock;
+  sphere_block_kinetic_.assign(sphere_blocks, 0);
+  sphere_block_damping_.assign(sphere_blocks, 0);
+  sphere_block_vmax2_.assign(sphere_blocks, 0);
+  f_acc_.assign(n, {});
+  t_acc_.assign(n, {});
+  threads_ = omp_get_max_threads();
+  // A fixed number of Morton ranges, set by the sphere count alone (never by
+  // the thread count, which must not change the bits): ~4000 spheres each.
+  partitions_ = std::clamp<std::size_t>(n / kSpheresPerPartition, 1, 64);
+  sphere_chunk_ = (n + partitions_ - 1) / partitions_;
+  first_ = bonds_.first;
+  second_ = bonds_.second;
+  kernel_->attach(*this);
+}
+
+SphereSystem::~SphereSystem() = default;
+
+std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
+                                                      const std::vector<std::uint32_t>& second, bool moments) {
+  const std::size_t count = first.size(), n = spheres_.size();
+  std::vector<std::uint32_t> order;
+  order.reserve(count);
+  interior_start_.assign(partitions_ + 1, 0);
+  for (std::size_t c = 0; c < count; ++c) {
+    const std::size_t p = first[c] / sphere_chunk_;
+    if (p == second[c] / sphere_chunk_) ++interior_start_[p + 1];
+  }
+  for (std::size_t p = 0; p < partitions_; ++p) interior_start_[p + 1] += interior_start_[p];
+  order.resize(count);
+  std::vector<std::uint32_t> fill(interior_start_.begin(), interior_start_.end() - 1);
+  cross_begin_ = interior_start_[partitions_];
+  std::size_t cross = cross_begin_;
+  for (std::size_t c = 0; c < count; ++c) {
+    const std::size_t p = first[c] / sphere_chunk_;
+    order[p == second[c] / sphere_chunk_ ? fill[p]++ : cross++] = std::uint32_t(c);
+  }
+  first_.resize(count);
+  second_.resize(count);
+  for (std::size_t s = 0; s < count; ++s) {
+    first_[s] = first[order[s]];
+    second_[s] = second[order[s]];
+  }
+  const std::vector<std::uint32_t> cross_first(first_.begin() + std::ptrdiff_t(cross_begin_), first_.end());
+  const std::vector<std::uint32_t> cross_second(second_.begin() + std::ptrdiff_t(cross_begin_), second_.end());
+  cross_incidence_ = make_incidence(n, cross_first, cross_second);
+  out_.assign(count - cross_begin_, ContactOut{});
+  if (moments) out_moment_.assign(count - cross_begin_, Vec3{});
+  else out_moment_.clear();
+  cross_blocks_ = (count - cross_begin_ + kContactBlock - 1) / kContactBlock;
+  const std::size_t tasks = partitions_ + cross_blocks_;
+  // Dissipation is cumulative: keep what the old tasks held.
+  double plastic = 0;
+  for (double p : task_plastic_) plastic += p;
+  task_elastic_.assign(tasks, 0);
+  task_plastic_.assign(tasks, 0);
+  task_plastic_[0] = plastic;
+  task_peak2_.assign(tasks, 0);
+  // A parallel region costs a few microseconds: worth it only for big systems.
+  parallel_ = threads_ > 1 && count >= 8 * kContactBlock && partitions_ > 1;
+  return order;
+}
+
+Vec3 SphereSystem::displacement(std::size_t k) const {
+  return displacement_state_ ? x_[k] : x_[k] - spheres_.centre_m[k];
+}
+
+void SphereSystem::add_external_force(std::size_t k, const Vec3& force) {
+  if (!is_forced_[k]) {
+    is_forced_[k] = 1;
+    forced_.push_back(std::uint32_t(k));
+  }
+  f_ext_[k] += force;
+}
+
+double SphereSystem::impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) {
+  const double v_imposed = (u_next - u_now) / dt;
+  const double v_before = dot(v_[k], e) - dt * dot(a_[k], e);  // v_{n-1/2} along e
+  // A constrained degree of freedom is not damped (Yade: blocked DOFs skip the
+  // integrator); its force balance uses the undamped F/m of this step.
+  const double a_free = dot(a_undamped_[k], e);
+  const double a_imposed = (v_imposed - v_before) / dt;
+  x_[k] += (u_next - dot(displacement(k), e)) * e;
+  v_[k] += (v_imposed - dot(v_[k], e)) * e;
+  a_[k] += (a_imposed - a_free) * e;
+  // The constraint force m (a_imposed - a_free) does work over the step.
+  const double force = spheres_.mass_kg[k] * (a_imposed - a_free);
+  energy_.external_work_J += force * (v_before + v_imposed) * 0.5 * dt;
+  return force;
+}
+
+void SphereSystem::step(double dt, bool evaluate_energy) {
+  forced_v_before_.resize(forced_.size());
+  for (std::size_t i = 0; i < forced_.size(); ++i) forced_v_before_[i] = v_[forced_[i]];
+
+#pragma omp parallel if (parallel_)
+  {
+    kernel_->contact_forces(*this, dt, evaluate_energy);  // ends with the implicit barrier of its omp for
+    integrate(dt, evaluate_energy);
+  }
+
+  for (std::size_t i = 0; i < forced_.size(); ++i) {
+    const std::uint32_t k = forced_[i];
+    energy_.external_work_J += dot(f_ext_[k], forced_v_before_[i] + v_[k]) * 0.5 * dt;
+    f_ext_[k] = {};
+    is_forced_[k] = 0;
+  }
+  forced_.clear();
+
+  double peak2 = 0, vmax2 = 0;
+  for (double p : task_peak2_) peak2 = std::max(peak2, p);
+  for (double v2 : sphere_block_vmax2_) vmax2 = std::max(vmax2, v2);
+  peak_ratio_ = std::max(peak_ratio_, std::sqrt(peak2));
+  max_speed_ = std::sqrt(vmax2);
+  if (evaluate_energy) {
+    double kinetic = 0, elastic = 0;
+    for (double e : sphere_block_kinetic_) kinetic += e;
+    for (double e : task_elastic_) elastic += e;
+    energy_.kinetic_J = kinetic;
+    energy_.elastic_J = elastic;
+  }
+  kernel_->after_step(*this, dt);
+}
+
+void SphereSystem::integrate(double dt, bool evaluate_energy) {
+  const std::size_t n = spheres_.size();
+  const std::size_t blocks = (n + kSphereBlock - 1) / kSphereBlock;
+  const std::uint32_t* offset = cross_incidence_.offset.data();
+  const std::uint32_t* entry = cross_incidence_.entry.data();
+  const ContactOut* out = out_.data();
+  const Vec3* moment = out_moment_.empty() ? nullptr : out_moment_.data();
+
+#pragma omp for schedule(static)
+  for (std::size_t blk = 0; blk < blocks; ++blk) {
+    const std::size_t begin = blk * kSphereBlock, end = std::min(n, begin + kSphereBlock);
+    // Total force and torque, in a fixed order: contacts inside the partition
+    // (summed in slot order by for_each_contact), those across partitions,
+    // then external loads.
+    for (std::size_t k = begin; k < end; ++k) {
+      Vec3 f = f_acc_[k], t = t_acc_[k];
+      for (std::uint32_t e = offset[k]; e < offset[k + 1]; ++e) {
+        const std::uint32_t code = entry[e];
+        const ContactOut& o = out[code >> 1];
+        const unsigned side = code & 1u;
+        const double sign = side ? 1.0 : -1.0;
+        f += sign * o.f;
+        t -= o.arm[side] * o.c;
+        if (moment) t += sign * moment[code >> 1];
+      }
+      f_acc_[k] = f + f_ext_[k];
+      t_acc_[k] = t;
+    }
+    update_motion(begin, end, blk, dt, evaluate_energy);
+  }
+}
+
+// Eq. (7) and leapfrog, per Cartesian component, over the flat arrays of one
+// block: one vector loop for the translations, one for the rotations. The
+// per-component energy terms go through a small buffer and are added in
+// component order, so the sums do not depend on the vector width.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t blk, double dt, bool evaluate_energy) {
+  const double alpha = material_.damping, half_dt = 0.5 * dt;
+  const std::size_t m = 3 * (end - begin);
+  double terms[2][3 * kSphereBlock];
+  double vmax2 = 0, kinetic = 0, damping = 0;
+  for (int part = 0; part < 2; ++part) {
+    const bool rotation = part == 1;
+    double* f = &(rotation ? t_acc_ : f_acc_)[begin].x;
+    double* v = &(rotation ? w_ : v_)[begin].x;
+    double* a_out = &a_[begin].x;
+    double* a_free_out = &a_undamped_[begin].x;
+    double* x = rotation ? (track_rotation_ ? &theta_[begin].x : nullptr) : &x_[begin].x;
+    const double* inv_m = &(rotation ? inv_inertia3_ : inv_mass3_)[3 * begin];
+    double* kin = terms[0];
+    double* dmp = terms[1];
+    double part_vmax2 = 0;
+#pragma omp simd reduction(max : part_vmax2)
+    for (std::size_t c = 0; c < m; ++c) {
+      const double a_free = f[c] * inv_m[c];
+      const double v0 = v[c];
+      const double p = a_free * (v0 + half_dt * a_free);
+      const double sign = p > 0.0 ? 1.0 : (p < 0.0 ? -1.0 : 0.0);
+      const double a = a_free * (1.0 - alpha * sign);
+      const double v1 = v0 + dt * a;
+      const double mass = 1.0 / inv_m[c];
+      kin[c] = 0.5 * mass * v0 * v1;
+      dmp[c] = mass * (a_free - a) * (v0 + v1) * half_dt;
+      v[c] = v1;
+      f[c] = 0.0;
+      if (!rotation) {
+        a_out[c] = a;
+        a_free_out[c] = a_free;
+        x[c] += dt * v1;
+        part_vmax2 = std::max(part_vmax2, v1 * v1);
+      }
+    }
+    if (rotation && x)
+#pragma omp simd
+      for (std::size_t c = 0; c < m; ++c) x[c] += dt * v[c];
+    if (!rotation) vmax2 = part_vmax2;
+    if (evaluate_energy)
+      for (std::size_t c = 0; c < m; ++c) kinetic += kin[c];
+    if (alpha != 0)
+      for (std::size_t c = 0; c < m; ++c) damping += dmp[c];
+  }
+  sphere_block_kinetic_[blk] = kinetic;
+  sphere_block_damping_[blk] += damping;
+  sphere_block_vmax2_[blk] = 3.0 * vmax2;  // |v|^2 <= 3 max_k v_k^2: a safe bound for contact detection
+}
+
+EnergyAccount SphereSystem::energy() const {
+  EnergyAccount e = energy_;
+  e.damping_J = 0;
+  for (double d : sphere_block_damping_) e.damping_J += d;
+  e.plastic_J = 0;
+  for (double p : task_plastic_) e.plastic_J += p;
+  return e;
+}
+
+bool SphereSystem::has_non_finite_state() const {
+  for (std::size_t k = 0; k < x_.size(); ++k)
+    if (!std::isfinite(x_[k].x + x_[k].y + x_[k].z + v_[k].x + v_[k].y + v_[k].z + w_[k].x + w_[k].y + w_[k].z))
+      return true;
+  return false;
+}
+
+void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
+  const std::size_t n = spheres_.size();
+  std::fill(y, y + 6 * n, 0.0);
+  auto dof = [&](const double* v, std::size_t k, int part) {
+    const double s = 1.0 / std::sqrt(part == 0 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
+    return Vec3{s * v[6 * k + 3 * part], s * v[6 * k + 3 * part + 1], s * v[6 * k + 3 * part + 2]};
+  };
+  auto add = [&](std::size_t k, int part, const Vec3& g) {
+    const double s = 1.0 / std::sqrt(part == 0 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
+    for (int d = 0; d < 3; ++d) y[6 * k + 3 * part + d] -= s * g[d];  // K x = -(force)
+  };
+  for (std::size_t b = 0; b < bonds_.size(); ++b) {
+    const LinearBond lb = linear_bond(*this, b);
+    const std::size_t i = bonds_.first[b], j = bonds_.second[b];
+    Vec3 fi, mi, fj, mj;
+    lb.forces(dof(x, i, 0), dof(x, i, 1), dof(x, j, 0), dof(x, j, 1), fi, mi, fj, mj);
+    add(i, 0, fi);
+    add(i, 1, mi);
+    add(j, 0, fj);
+    add(j, 1, mj);
+  }
+}
+
+double SphereSystem::scaled_stiffness_row_sum_bound() const {
+  const std::size_t n = spheres_.size();
+  std::vector<double> row(6 * n, 0.0);
+  for (std::size_t b = 0; b < bonds_.size(); ++b) {
+    const LinearBond lb = linear_bond(*this, b);
+    const std::size_t ends[2] = {bonds_.first[b], bonds_.second[b]};
+    double scale[12];
+    for (int c = 0; c < 12; ++c) {
+      const std::size_t k = ends[c / 6];
+      scale[c] = 1.0 / std::sqrt((c % 6) < 3 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
+    }
+    for (int c = 0; c < 12; ++c) {  // column c of the bond's 12 x 12 block
+      Vec3 u[4] = {};
+      u[c / 3][c % 3] = 1.0;
+      Vec3 g[4];
+      lb.forces(u[0], u[1], u[2], u[3], g[0], g[1], g[2], g[3]);
+      for (int r = 0; r < 12; ++r) {
+        const double entry = -g[r / 3][r % 3];
+        row[6 * ends[r / 6] + (r % 6)] += std::abs(entry) * scale[r] * scale[c];
+      }
+    }
+  }
+  return row.empty() ? 0.0 : *std::max_element(row.begin(), row.end());
+}
+
+std::size_t SphereSystem::memory_bytes() const {
+  const std::size_t n = spheres_.size();
+  std::size_t bytes = n * (sizeof(Vec3) * (6 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + 2 * sizeof(double) +
+                           sizeof(std::uint32_t) + sizeof(std::int64_t) + 1);
+  bytes += bonds_.size() * (2 * sizeof(std::uint32_t) + sizeof(double) + sizeof(Vec3) + 2 * sizeof(std::uint32_t));
+  bytes += kernel_->memory_bytes() + out_moment_.size() * sizeof(Vec3);
+  bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +
+           first_.size() * 2 * sizeof(std::uint32_t) + 2 * n * sizeof(Vec3);
+  return bytes;
+}
+
+}  // namespace mesowave::dem

@@ -1,0 +1,259 @@
+#pragma once
+// Spheres with six degrees of freedom, the state both 3-D models share, and
+// the leapfrog integrator in the order of Yade's NewtonIntegrator:
+//   a = F/m;  a_k <- a_k (1 - alpha_d sgn(a_k (v_k + a_k dt/2)))   (Eq. 7, per component)
+//   v += dt a;  x += dt v;   the same for the angular velocity with the torque.
+//
+// A contact law is a kernel the integrator composes (ContactKernel below, one
+// class and file per law, registered in contact_law.hpp): it computes one
+// contact at a time - the force on its second sphere, the torque factors and,
+// for laws with rolling/twisting springs, a moment (for_each_contact below).
+// The integrator knows no law. Contacts are laid out so that a step gives the same bits on any
+// number of threads, with no atomics and no per-thread buffers: the spheres
+// are cut into a fixed number of Morton ranges; contacts inside a range add
+// their forces in place (one thread owns a range), contacts between ranges
+// leave a record that each sphere gathers, in a fixed order, in the pass that
+// also updates its motion. Sums over spheres or contacts (energies) are taken
+// per fixed task and added in task order, for the same reason.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include <memory>
+#include <string>
+#include <type_traits>
+
+#include "mesowave/dem/contact/bond_network.hpp"
+#include "mesowave/dem/contact/material.hpp"
+#include "mesowave/dem/engine/model.hpp"
+#include "mesowave/dem/engine/sphere_set.hpp"
+
+namespace mesowave::dem {
+
+class SphereSystem;
+
+/// A contact law as the integrator sees it. The system calls attach() once
+/// (the law sets its contacts with set_contacts and keeps its per-contact
+/// arrays in slot order), contact_forces() every step inside the step's
+/// parallel region (the law runs for_each_contact there) and after_step()
+/// serially after the motion update (contact detection).
+class ContactKernel {
+public:
+  virtual ~ContactKernel() = default;
+  virtual std::string name() const = 0;  ///< the model's name: full | linear
+  /// The integrated position is the displacement from step 0 (linearised
+  /// network, best precision for tiny amplitudes) instead of the absolute position.
+  virtual bool displacement_state() const = 0;
+  /// Integrate the rotation vector theta (small rotations; the linearised network needs it).
+  virtual bool track_rotation() const = 0;
+  virtual void attach(SphereSystem& system) = 0;
+  virtual void contact_forces(SphereSystem& system, double dt, bool evaluate_energy) = 0;
+  virtual void after_step(SphereSystem& /*system*/, double /*dt*/) {}
+  /// Interactions evaluated each step (0: the bonds).
+  virtual std::size_t contact_count() const { return 0; }
+  virtual std::size_t broken_bond_count() const { return 0; }
+  virtual std::size_t memory_bytes() const = 0;
+  /// Rolling and twisting stiffness of bond b at step 0 (moment = -k_r theta_bend - k_tw theta_twist),
+  /// for the critical time step; 0 for laws without moments.
+  virtual void moment_stiffness(const SphereSystem& /*system*/, std::size_t /*bond*/, double& k_r, double& k_tw) const {
+    k_r = k_tw = 0;
+  }
+};
+
+/// The integrator: spheres, their motion and a contact kernel.
+class SphereSystem final : public Model {
+public:
+  SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
+               std::unique_ptr<ContactKernel> kernel);
+  ~SphereSystem() override;
+
+  std::string name() const override { return kernel_->name(); }
+  std::size_t contact_count() const override {
+    const std::size_t c = kernel_->contact_count();
+    return c > 0 ? c : bond_count();
+  }
+  std::size_t broken_bond_count() const override { return kernel_->broken_bond_count(); }
+  std::size_t sphere_count() const override { return spheres_.size(); }
+  std::size_t bond_count() const override { return bonds_.size(); }
+  std::size_t degrees_of_freedom() const override { return 6 * spheres_.size(); }
+  Vec3 reference_position(std::size_t k) const override { return spheres_.centre_m[k]; }
+  double radius(std::size_t k) const override { return spheres_.radius_m[k]; }
+  double mass(std::size_t k) const override { return spheres_.mass_kg[k]; }
+  std::uint32_t packing_index(std::size_t k) const override { return spheres_.packing_index[k]; }
+  Vec3 displacement(std::size_t k) const override;
+  Vec3 velocity(std::size_t k) const override { return v_[k]; }
+  Vec3 acceleration(std::size_t k) const override { return a_[k]; }
+  void add_external_force(std::size_t k, const Vec3& force) override;
+  double impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) override;
+  void set_velocity(std::size_t k, const Vec3& v) override { v_[k] = v; }
+  void step(double dt, bool evaluate_energy) override;
+  EnergyAccount energy() const override;
+  double peak_force_ratio() const override { return peak_ratio_; }
+  bool has_non_finite_state() const override;
+  void scaled_stiffness_action(const double* x, double* y) const override;
+  double scaled_stiffness_row_sum_bound() const override;
+  std::size_t memory_bytes() const override;
+  int threads() const override { return parallel_ ? threads_ : 1; }
+
+  const SphereSet& spheres() const { return spheres_; }
+  const BondNetwork& bonds() const { return bonds_; }
+  const CohesiveFrictionalMaterial& material() const { return material_; }
+  const ContactKernel& kernel() const { return *kernel_; }
+  /// Angular velocity w_{n+1/2} of sphere k (and its initial value, for tests).
+  Vec3 angular_velocity(std::size_t k) const { return w_[k]; }
+  void set_angular_velocity(std::size_t k, const Vec3& w) { w_[k] = w; }
+
+  // What a contact kernel reads (model numbering, slot order for contacts).
+  const Vec3* positions() const { return x_.data(); }  ///< x (absolute, or the displacement: displacement_state)
+  const Vec3* velocities() const { return v_.data(); }
+  const Vec3* angular_velocities() const { return w_.data(); }
+  const Vec3* rotations() const { return theta_.data(); }  ///< theta (track_rotation only)
+  const std::uint32_t* first() const { return first_.data(); }
+  const std::uint32_t* second() const { return second_.data(); }
+  std::size_t slot_count() const { return first_.size(); }
+  std::uint32_t first(std::size_t slot) const { return first_[slot]; }
+  std::uint32_t second(std::size_t slot) const { return second_[slot]; }
+  Vec3 position(std::size_t k) const { return x_[k]; }
+  /// Largest |v| after the last step.
+  double max_speed() const { return max_speed_; }
+
+  /// Per contact: force on the second sphere (the first gets -f), c = n x f,
+  /// and the lever arms: the torque on the first sphere is -arm[0] c, on the
+  /// second -arm[1] c (Yade's applyForceAtContactPoint at the contact point).
+  struct alignas(64) ContactOut {
+    Vec3 f;
+    Vec3 c;
+    double arm[2];
+  };
+  /// What a law computes for one contact: the record above plus what the
+  /// simulation adds up (summed in slot order, never inside a vector loop, so
+  /// the sums do not depend on the vector width either).
+  struct ContactResult {
+    Vec3 f;
+    Vec3 c;
+    double arm[2];
+    double elastic;  ///< spring energy (only when evaluate_energy)
+    double plastic;  ///< dissipated by sliding this step
+    double ratio2;   ///< (bond force / strength)^2, 0 for contacts without cohesion
+  };
+  /// For laws with rolling/twisting springs: also a moment m on the second
+  /// sphere, -m on the first (Yade's addTorque(id2, m), addTorque(id1, -m)).
+  struct MomentContactResult : ContactResult {
+    Vec3 m;
+  };
+
+  /// Sets the contacts (pairs first < second) and lays them out in slots:
+  /// the spheres are cut into a fixed number of Morton ranges (partitions,
+  /// set by the sphere count alone); contacts inside one partition come
+  /// first, grouped by partition, then the contacts between partitions.
+  /// Returns the order: slot s holds the contact given at position order[s].
+  /// A law keeps its per-contact arrays in slot order.
+  std::vector<std::uint32_t> set_contacts(const std::vector<std::uint32_t>& first,
+                                          const std::vector<std::uint32_t>& second, bool moments = false);
+
+  /// Runs kernel(slot, result) for every contact; call it from contact_forces
+  /// (inside the step's parallel region). The kernel runs on chunks of
+  /// kChunk contacts as one vector loop (`omp simd`: it must not depend on
+  /// other contacts of the chunk); the results are then applied one by one in
+  /// slot order: contacts inside a partition add their force to its spheres
+  /// directly (one thread owns a partition, so no races and no atomics),
+  /// contacts between partitions leave a record that each sphere gathers in
+  /// slot order. Either way every sphere sums the same terms in the same
+  /// order on any number of threads.
+  /// `Result` is ContactResult, or MomentContactResult for a law with moments
+  /// (set_contacts(..., true) then keeps room for them).
+  template <class Result = ContactResult, class Kernel>
+  void for_each_contact(Kernel&& kernel) __attribute__((always_inline));
+
+  /// The integrator's blocking (kernels size their chunks by it).
+  static constexpr std::size_t kContactBlock = 2048;
+  static constexpr std::size_t kChunk = 32;
+  static constexpr std::size_t kSphereBlock = 256;
+  static constexpr std::size_t kSpheresPerPartition = 4096;
+
+private:
+  SphereSet spheres_;
+  BondNetwork bonds_;
+  CohesiveFrictionalMaterial material_;
+  std::unique_ptr<ContactKernel> kernel_;
+  bool displacement_state_, track_rotation_;
+  int threads_ = 1;
+  bool parallel_ = false;
+
+  std::vector<Vec3> x_, v_, w_, a_, theta_, f_ext_;
+  std::vector<double> inv_mass_, inv_inertia_;
+  std::vector<double> inv_mass3_, inv_inertia3_;  ///< the same, once per Cartesian component
+  std::vector<std::uint32_t> first_, second_;  ///< contacts in slot order
+  double peak_ratio_ = 0;
+  double max_speed_ = 0;  ///< largest |v| after the last step
+  EnergyAccount energy_;
+
+  void integrate(double dt, bool evaluate_energy);
+  void update_motion(std::size_t begin, std::size_t end, std::size_t block, double dt, bool evaluate_energy);
+
+  std::size_t partitions_ = 1, sphere_chunk_ = 1, cross_begin_ = 0, cross_blocks_ = 0;
+  std::vector<std::uint32_t> interior_start_;  ///< partitions + 1
+  Incidence cross_incidence_;                  ///< entries index out_ (slot - cross_begin_)
+  std::vector<ContactOut> out_;
+  std::vector<Vec3> out_moment_;  ///< moment of each contact between partitions (laws with moments only)
+  std::vector<Vec3> f_acc_, t_acc_;
+  std::vector<double> task_elastic_, task_plastic_, task_peak2_;
+  std::vector<double> sphere_block_kinetic_, sphere_block_damping_, sphere_block_vmax2_;
+  std::vector<Vec3> a_undamped_;           ///< F/m before damping (a constrained DOF is not damped)
+  std::vector<std::uint32_t> forced_;  ///< spheres with an external force this step
+  std::vector<Vec3> forced_v_before_;
+  std::vector<std::uint8_t> is_forced_;
+};
+
+template <class Result, class Kernel>
+inline void SphereSystem::for_each_contact(Kernel&& kernel) {
+  constexpr bool moments = std::is_same_v<Result, MomentContactResult>;
+  const std::size_t tasks = partitions_ + cross_blocks_;
+  const std::size_t count = first_.size();
+#pragma omp for schedule(dynamic, 1)
+  for (std::size_t task = 0; task < tasks; ++task) {
+    const bool interior = task < partitions_;
+    const std::size_t begin =
+        interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
+    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+    double elastic = 0, plastic = 0, peak2 = 0;
+    Vec3* f = f_acc_.data();
+    Vec3* t = t_acc_.data();
+    Result results[kChunk];
+    for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
+      const std::size_t m = std::min(kChunk, end - chunk);
+#pragma omp simd
+      for (std::size_t q = 0; q < m; ++q) kernel(chunk + q, results[q]);
+      for (std::size_t q = 0; q < m; ++q) {
+        const Result& r = results[q];
+        elastic += r.elastic;
+        plastic += r.plastic;
+        peak2 = std::max(peak2, r.ratio2);
+        const std::size_t b = chunk + q;
+        if (interior) {
+          const std::uint32_t i = first_[b], j = second_[b];
+          f[i] -= r.f;
+          f[j] += r.f;
+          t[i] -= r.arm[0] * r.c;
+          t[j] -= r.arm[1] * r.c;
+          if constexpr (moments) {
+            t[i] -= r.m;
+            t[j] += r.m;
+          }
+        } else {
+          ContactOut& o = out_[b - cross_begin_];
+          o.f = r.f;
+          o.c = r.c;
+          o.arm[0] = r.arm[0];
+          o.arm[1] = r.arm[1];
+          if constexpr (moments) out_moment_[b - cross_begin_] = r.m;
+        }
+      }
+    }
+    task_elastic_[task] = elastic;
+    task_plastic_[task] += plastic;
+    task_peak2_[task] = peak2;
+  }
+}
+
+}  // namespace mesowave::dem

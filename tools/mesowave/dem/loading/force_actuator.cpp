@@ -1,0 +1,56 @@
+#include "mesowave/dem/loading/force_actuator.hpp"
+
+#include <cmath>
+
+#include "mesowave/core/format.hpp"
+#include "mesowave/dem/scene/plugins.hpp"
+
+namespace mesowave::dem {
+
+ForceActuator::ForceActuator(std::string name, std::vector<std::size_t> spheres, const Vec3& direction,
+                             signal::HannBurst force_N)
+    : name_(std::move(name)), spheres_(std::move(spheres)), direction_((1.0 / norm(direction)) * direction),
+      force_(force_N) {}
+
+void ForceActuator::before_step(Model& model, double t_s, double /*dt_s*/) {
+  last_force_ = 0;
+  if (t_s < force_.delay_s() || t_s > force_.end_s()) return;
+  last_force_ = force_(t_s);
+  const Vec3 share = (last_force_ / double(spheres_.size())) * direction_;
+  for (std::size_t k : spheres_) model.add_external_force(k, share);
+}
+
+std::string ForceActuator::description() const {
+  return "force " + format_number(force_.amplitude()) + " N, " + format_number(force_.centre_frequency_hz() / 1e3) +
+         " kHz " + format_number(force_.cycles()) + "-cycle Hann burst along (" + format_number(direction_.x + 0.0) + ", " +
+         format_number(direction_.y + 0.0) + ", " + format_number(direction_.z + 0.0) + ") shared by " +
+         std::to_string(spheres_.size()) + " spheres";
+}
+
+}  // namespace mesowave::dem
+
+namespace mesowave::dem {
+
+void register_force_actuator(Plugins& p) {
+  p.actuators.add({
+      .name = "force",
+      .summary = "a Hann-windowed force burst shared by the spheres under a patch (a PZT driven in force)",
+      .keys = {{"amplitude_N", "N", -1e12, 1e12, "peak force"},
+               {"frequency_kHz", "kHz", 0, 1e9, "centre frequency"},
+               {"cycles", "", 0, 1e9, "cycles of the burst (5)"},
+               {"delay_us", "us", 0, 1e9, "start"}},
+      .parse = [](SceneKeys& k, ActuatorSpec& spec) { read_actuator_load(k, spec, 1.0, true); },
+      .make = [](const ActuatorSite& site) -> std::unique_ptr<Actuator> {
+        const ActuatorSpec& a = site.spec;
+        return std::make_unique<ForceActuator>(a.name, site.spheres, site.direction,
+                                               signal::HannBurst(a.frequency_hz, a.cycles, a.amplitude, a.delay_s));
+      },
+      .peak_sphere_force = [](const ActuatorSpec& a, std::size_t spheres, double, double) {
+        return std::abs(a.amplitude) / double(spheres);
+      },
+      .amplitude_key = "amplitude_N",
+      .report_key = "amplitude_N",
+  });
+}
+
+}  // namespace mesowave::dem

@@ -1,0 +1,26 @@
+#pragma once
+// A force F(t) e shared equally by the spheres under an actuator (the PZT of
+// both papers pushing normal to the face), F(t) a Hann-windowed sine burst.
+#include "mesowave/dem/loading/actuator.hpp"
+#include "mesowave/signal/hann_burst.hpp"
+
+namespace mesowave::dem {
+
+class ForceActuator : public Actuator {
+public:
+  ForceActuator(std::string name, std::vector<std::size_t> spheres, const Vec3& direction, signal::HannBurst force_N);
+  const std::string& name() const override { return name_; }
+  void before_step(Model& model, double t_s, double dt_s) override;
+  const std::vector<std::size_t>& spheres() const override { return spheres_; }
+  std::string description() const override;
+  double applied_force() const override { return last_force_; }
+
+private:
+  double last_force_ = 0;
+  std::string name_;
+  std::vector<std::size_t> spheres_;
+  Vec3 direction_;
+  signal::HannBurst force_;
+};
+
+}  // namespace mesowave::dem

@@ -1,0 +1,106 @@
+#include "mesowave/dem/loading/sphere_selection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
+
+namespace mesowave::dem {
+
+Face Face::parse(const std::string& text) {
+  if (text.size() == 2 && (text[0] == 'x' || text[0] == 'y' || text[0] == 'z') && (text[1] == '-' || text[1] == '+'))
+    return Face{text[0] - 'x', text[1] == '+'};
+  throw InputError("face \"" + text + "\" must be one of x-, x+, y-, y+, z-, z+");
+}
+
+std::string Face::name() const { return std::string(1, char('x' + axis)) + (upper ? "+" : "-"); }
+
+Vec3 Face::outward_normal() const {
+  Vec3 n;
+  n[axis] = upper ? 1.0 : -1.0;
+  return n;
+}
+
+Box bounding_box(const SphereSet& s) {
+  Box b;
+  const double inf = std::numeric_limits<double>::infinity();
+  b.lower = {inf, inf, inf};
+  b.upper = {-inf, -inf, -inf};
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const Vec3 c = s.centre_m[k];
+    const double r = s.radius_m[k];
+    for (int d = 0; d < 3; ++d) {
+      b.lower[d] = std::min(b.lower[d], c[d] - r);
+      b.upper[d] = std::max(b.upper[d], c[d] + r);
+    }
+  }
+  return b;
+}
+
+Vec3 patch_centre(const Patch& patch, const Box& box) {
+  if (!patch.relative) return patch.centre_m;
+  Vec3 c;
+  for (int d = 0; d < 3; ++d) c[d] = box.lower[d] + patch.centre_rel[d] * (box.upper[d] - box.lower[d]);
+  return c;
+}
+
+std::vector<std::size_t> spheres_under_patch(const SphereSet& s, const Box& box, const Patch& patch,
+                                             const std::string& who) {
+  const Vec3 centre = patch_centre(patch, box);
+  double depth = patch.depth_m;
+  if (depth < 0) {
+    depth = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < s.size(); ++k) depth = std::min(depth, s.radius_m[k]);
+  }
+  const int a = patch.face.axis, p = patch.face.in_plane(0), q = patch.face.in_plane(1);
+  const double plane = patch.face.upper ? box.upper[a] : box.lower[a];
+  std::vector<std::size_t> chosen;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const Vec3 c = s.centre_m[k];
+    const double r = s.radius_m[k];
+    const double gap = patch.face.upper ? plane - (c[a] + r) : (c[a] - r) - plane;
+    if (gap > depth) continue;
+    if (std::abs(c[p] - centre[p]) > 0.5 * patch.size_m[0]) continue;
+    if (std::abs(c[q] - centre[q]) > 0.5 * patch.size_m[1]) continue;
+    chosen.push_back(k);
+  }
+  if (chosen.empty())
+    throw InputError(who + ": no sphere under its " + format_number(patch.size_m[0] * 1e3) + " x " +
+                     format_number(patch.size_m[1] * 1e3) + " mm patch on face " + patch.face.name() + " at (" +
+                     format_number(centre.x * 1e3) + ", " + format_number(centre.y * 1e3) + ", " +
+                     format_number(centre.z * 1e3) + ") mm; enlarge the patch or its depth");
+  // Order by packing index so the average is summed the same way whatever the numbering.
+  std::sort(chosen.begin(), chosen.end(),
+            [&](std::size_t i, std::size_t j) { return s.packing_index[i] < s.packing_index[j]; });
+  return chosen;
+}
+
+std::size_t sphere_nearest(const SphereSet& s, const Vec3& point) {
+  std::size_t best = 0;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double d2 = norm2(s.centre_m[k] - point);
+    if (d2 < best_d2 || (d2 == best_d2 && s.packing_index[k] < s.packing_index[best])) {
+      best = k;
+      best_d2 = d2;
+    }
+  }
+  return best;
+}
+
+std::size_t sphere_at_end(const SphereSet& s, bool last) {
+  const Box b = bounding_box(s);
+  int axis = 0;
+  for (int d = 1; d < 3; ++d)
+    if (b.upper[d] - b.lower[d] > b.upper[axis] - b.lower[axis]) axis = d;
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < s.size(); ++k) {
+    const double c = s.centre_m[k][axis], c_best = s.centre_m[best][axis];
+    if (last ? c > c_best : c < c_best) best = k;
+  }
+  return best;
+}
+
+}  // namespace mesowave::dem

@@ -1,0 +1,52 @@
+#pragma once
+// Which spheres an actuator drives or a sensor reads: those under a
+// rectangular patch on a face of the specimen (a PZT glued on the surface),
+// the one nearest to a point, or the first/last sphere of a line.
+#include <string>
+#include <vector>
+
+#include "mesowave/dem/engine/sphere_set.hpp"
+#include "mesowave/dem/engine/vec3.hpp"
+
+namespace mesowave::dem {
+
+/// Faces of an axis-aligned box: "x-" is the plane x = x_min, "x+" x = x_max, ...
+struct Face {
+  int axis = 0;       ///< 0, 1, 2
+  bool upper = false; ///< the + face
+  static Face parse(const std::string& text);  ///< InputError for anything but x-, x+, y-, y+, z-, z+
+  std::string name() const;
+  Vec3 outward_normal() const;
+  /// The two in-plane axes in increasing order (for x faces: y, z).
+  int in_plane(int which) const { return which == 0 ? (axis == 0 ? 1 : 0) : (axis == 2 ? 1 : 2); }
+};
+
+struct Box {
+  Vec3 lower, upper;
+};
+
+/// The box the sphere surfaces fill: min(x - r) to max(x + r) per axis.
+Box bounding_box(const SphereSet& spheres);
+
+struct Patch {
+  Face face;
+  Vec3 centre_m;               ///< a point on the face (its coordinate along the face normal is ignored) ...
+  bool relative = false;       ///< ... or, if set, centre_rel: fractions of the bounding box (0 lower, 1 upper face)
+  Vec3 centre_rel;
+  double size_m[2] = {0, 0};   ///< extent along the face's two in-plane axes (in_plane(0), in_plane(1))
+  double depth_m = -1;         ///< spheres whose surface comes within this of the face plane; < 0: the smallest radius
+};
+
+/// The patch centre in metres (resolves centre_rel against the box).
+Vec3 patch_centre(const Patch& patch, const Box& box);
+
+/// Spheres whose centre projects inside the patch and whose surface lies
+/// within the patch depth of the face plane; InputError naming `who` if none.
+std::vector<std::size_t> spheres_under_patch(const SphereSet& spheres, const Box& box, const Patch& patch,
+                                             const std::string& who);
+/// The sphere whose centre is nearest to `point` (ties: lowest packing index).
+std::size_t sphere_nearest(const SphereSet& spheres, const Vec3& point);
+/// The first or last sphere along the longest extent of the packing (a rod's ends).
+std::size_t sphere_at_end(const SphereSet& spheres, bool last);
+
+}  // namespace mesowave::dem
