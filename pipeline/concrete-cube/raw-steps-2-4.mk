@@ -31,7 +31,7 @@ $(CC_OUT)/raw-porosity-faces.json $(CC_OUT)/raw-porosity-faces.csv $(CC_OUT)/raw
 # transducer frequencies, the 2 us transducer delay of upv-truth.toml subtracted).
 $(CC_OUT)/raw-upv.json $(CC_OUT)/raw-upv-fig7.png &: $(CC_RAW)/upv-p.csv $(CC_RAW)/upv-s.csv \
     $(CC_RAW)/upv-truth.toml $(CC_OUT)/density.json $(BIN)/mw-upv
-	$(BIN)/mw-upv --from $(CC_OUT)/density.json $(CC_DENSITY_UNTAKEN) --from $(CC_RAW)/upv-truth.toml \
+	$(BIN)/mw-upv --from $(CC_OUT)/density.json --from $(CC_RAW)/upv-truth.toml \
 	  --p-wave $(CC_RAW)/upv-p.csv --s-wave $(CC_RAW)/upv-s.csv --lowpass-kHz 216 --s-lowpass-kHz 160 \
 	  --plot $(CC_OUT)/raw-upv-fig7.png --title 'Synthetic UPV records (lab-data/concrete-cube/raw)' \
 	  --out $(CC_OUT)/raw-upv.json > /dev/null

@@ -15,7 +15,7 @@ CC_SPEED_RUNS := linear-50ns-1t linear-50ns-2t linear-25ns-1t full-50ns-1t $(CC_
 cc_speed_word = $(word $2,$(subst -, ,$1))
 
 $(CC_OUT)/speed-%.h5 $(CC_OUT)/speed-%.json: $(CC_SCENE) $(CC_OUT)/packing.h5 $(CC_MATERIAL) $(BIN)/mw-dem
-	$(BIN)/mw-dem --from $(CC_MATERIAL) $(CC_CALIBRATION_UNTAKEN) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $(CC_SPEED_F) \
+	$(BIN)/mw-dem --from $(CC_MATERIAL) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $(CC_SPEED_F) \
 	  $(CC_SPEED_RECORD) --model $(call cc_speed_word,$*,1) --dt-ns $(patsubst %ns,%,$(call cc_speed_word,$*,2)) \
 	  --threads $(patsubst %t,%,$(call cc_speed_word,$*,3)) --quiet \
 	  --signals $(CC_OUT)/speed-$*.h5 --summary $(CC_OUT)/speed-$*.json > /dev/null

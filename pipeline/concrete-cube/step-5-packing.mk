@@ -16,7 +16,7 @@ endif
 $(CC_OUT)/packing.h5 $(CC_OUT)/packing.json &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
     $(CC_OUT)/density.json $(BIN)/mw-pack
 	$(BIN)/mw-pack box --from $(CC_LAB)/porosity.toml --from $(CC_LAB)/dem-packing.toml --from $(CC_OUT)/density.json \
-	  $(CC_DENSITY_UNTAKEN) $(CC_PACK_SIZE) --quiet --packing $(CC_OUT)/packing.h5 --out $(CC_OUT)/packing.json > /dev/null
+	  $(CC_PACK_SIZE) --quiet --packing $(CC_OUT)/packing.h5 --out $(CC_OUT)/packing.json > /dev/null
 
 $(CC_OUT)/packing-vs-paper.txt $(CC_OUT)/packing-vs-paper.csv &: $(CC_OUT)/packing.json \
     $(CC_LAB)/paper/dem-model.toml $(BIN)/mw-compare

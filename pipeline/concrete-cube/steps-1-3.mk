@@ -8,17 +8,17 @@ $(CC_OUT)/density.json: $(CC_LAB)/specimen.toml $(BIN)/mw-specimen
 
 # Step 3, dynamic route: v_p, v_s, nu_d (Eq. 10), E_d (Eq. 9).
 $(CC_OUT)/upv.json: $(CC_LAB)/upv.toml $(CC_OUT)/density.json $(BIN)/mw-upv
-	$(BIN)/mw-upv --from $(CC_OUT)/density.json $(CC_DENSITY_UNTAKEN) --from $(CC_LAB)/upv.toml --out $@ > /dev/null
+	$(BIN)/mw-upv --from $(CC_OUT)/density.json --from $(CC_LAB)/upv.toml --out $@ > /dev/null
 
 # Step 3: Table 1 from the E_d computed exactly from the paper's inputs...
 $(CC_OUT)/table1.csv $(CC_OUT)/table1.json &: $(CC_OUT)/upv.json $(CC_LAB)/static-test.toml $(BIN)/mw-estatic
-	$(BIN)/mw-estatic --from $(CC_OUT)/upv.json $(CC_UPV_UNTAKEN_BY_ESTATIC) --from $(CC_LAB)/static-test.toml \
+	$(BIN)/mw-estatic --from $(CC_OUT)/upv.json --from $(CC_LAB)/static-test.toml \
 	  --table $(CC_OUT)/table1.csv --out $(CC_OUT)/table1.json > /dev/null
 
 # ...and from the rounded E_d = 36.68 GPa the paper printed and used.
 $(CC_OUT)/table1-printed-Ed.csv $(CC_OUT)/table1-printed-Ed.json &: $(CC_OUT)/density.json \
     $(CC_LAB)/paper/printed-results.toml $(CC_LAB)/static-test.toml $(BIN)/mw-estatic
-	$(BIN)/mw-estatic --from $(CC_OUT)/density.json $(CC_DENSITY_UNTAKEN) --from $(CC_LAB)/paper/printed-results.toml \
+	$(BIN)/mw-estatic --from $(CC_OUT)/density.json --from $(CC_LAB)/paper/printed-results.toml \
 	  --from $(CC_LAB)/static-test.toml \
 	  --table $(CC_OUT)/table1-printed-Ed.csv --out $(CC_OUT)/table1-printed-Ed.json > /dev/null
 

@@ -19,16 +19,10 @@ CC_LAB := lab-data/concrete-cube
 CC_OUT := $(RESULTS)/concrete-cube
 CC_NOTES := pipeline/concrete-cube
 
-# The --from contract (app/tool.hpp): every entry of a --from file fills an option,
-# or the file declares it foreign, or the reader names it in --from-ignore. A tool's
-# JSON carries its inputs and side results for the reader beside the value the next
-# step takes; these lists are those entries, per reader (a renamed entry is then an
-# error, not a value left silently at its default).
-CC_DENSITY_UNTAKEN := --from-ignore shape,mass_g,side_mm,mass_resolution_g,length_resolution_mm,volume_m3,u_density_kg_m3
-CC_UPV_UNTAKEN_BY_FEM := --from-ignore G_d_GPa,method,nu_d_source,path_mm,t_p_us,t_s_us,v_p_m_s,v_s_m_s
-CC_UPV_UNTAKEN_BY_ESTATIC := $(CC_UPV_UNTAKEN_BY_FEM),nu_d
-CC_CALIBRATION_UNTAKEN := --from-ignore E_glob_GPa,nu_glob,sigma_dem_MPa,E_st_target_GPa,nu_st_target,sigma_max_target_MPa \
-  --from-ignore E_error_pct,nu_error,sigma_error_pct,calibrated_by_trial,trial_count,trials_wall_s
+# The --from contract (docs/formats.md): every entry of a --from file fills an option of the
+# reader, or the file declares it foreign. The tools' results declare all but their products
+# (density.json: density_kg_m3; upv.json: E_d_GPa, density_kg_m3; calibration.json: the five
+# calibrated values), so a renamed product is an error in the next step, never a default.
 
 include pipeline/concrete-cube/steps-1-3.mk
 include pipeline/concrete-cube/raw-steps-2-4.mk

@@ -42,16 +42,16 @@ CC_FEM_INPUTS := $(CC_OUT)/upv.json $(CC_LAB)/sensors.toml $(CC_LAB)/porosity.to
   $(BIN)/mw-fem
 
 $(CC_OUT)/dem-%kHz.h5 $(CC_OUT)/dem-%kHz.json: $(CC_SCENE) $(CC_OUT)/packing.h5 $(CC_MATERIAL) $(BIN)/mw-dem
-	$(BIN)/mw-dem --from $(CC_MATERIAL) $(CC_CALIBRATION_UNTAKEN) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $* $(CC_RECORD) \
+	$(BIN)/mw-dem --from $(CC_MATERIAL) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $* $(CC_RECORD) \
 	  --quiet --signals $(CC_OUT)/dem-$*kHz.h5 --summary $(CC_OUT)/dem-$*kHz.json > /dev/null
 
 $(CC_OUT)/fem-%kHz.h5 $(CC_OUT)/fem-%kHz.json: $(CC_FEM_INPUTS)
-	$(BIN)/mw-fem --from $(CC_OUT)/upv.json $(CC_UPV_UNTAKEN_BY_FEM) box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_mesh,$*) \
+	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_mesh,$*) \
 	  --force-N $(CC_FORCE_N) --frequency-kHz $* $(CC_RECORD) \
 	  --quiet --signals $(CC_OUT)/fem-$*kHz.h5 --out $(CC_OUT)/fem-$*kHz.json > /dev/null
 
 $(CC_OUT)/fem-early-%kHz.h5 $(CC_OUT)/fem-early-%kHz.json: $(CC_FEM_INPUTS)
-	$(BIN)/mw-fem --from $(CC_OUT)/upv.json $(CC_UPV_UNTAKEN_BY_FEM) box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_early_mesh,$*) \
+	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_early_mesh,$*) \
 	  --force-N $(CC_FORCE_N) --frequency-kHz $* $(CC_EARLY_RECORD) \
 	  --quiet --signals $(CC_OUT)/fem-early-$*kHz.h5 --out $(CC_OUT)/fem-early-$*kHz.json > /dev/null
 
