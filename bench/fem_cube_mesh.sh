@@ -17,9 +17,7 @@ lab=$here/lab-data/concrete-cube
 mkdir -p "$out"
 [ -f "$out/upv.json" ] || {
   "$bin/mw-specimen" --from "$lab/specimen.toml" --out "$out/density.json" > /dev/null
-  # The entries no option takes, as in pipeline/concrete-cube/study.mk (the --from contract).
-  "$bin/mw-upv" --from "$out/density.json" --from "$lab/upv.toml" --out "$out/upv.json" \
-    --from-ignore shape,mass_g,side_mm,mass_resolution_g,length_resolution_mm,volume_m3,u_density_kg_m3 > /dev/null
+  "$bin/mw-upv" --from "$out/density.json" --from "$lab/upv.toml" --out "$out/upv.json" > /dev/null
 }
 # shellcheck disable=SC2046
 transducers=$("$here/pipeline/concrete-cube/fem-transducers.py" "$lab/sensors.toml" "$lab/porosity.toml")
@@ -28,8 +26,7 @@ for h in $meshes; do
   [ -f "$run.json" ] && continue
   load=$(cut -d' ' -f1 /proc/loadavg)
   # shellcheck disable=SC2086
-  "$bin/mw-fem" --from "$out/upv.json" --from-ignore G_d_GPa,method,nu_d_source,path_mm,t_p_us,t_s_us,v_p_m_s,v_s_m_s \
-    box $transducers --mesh-mm "$h" --force-N 0.01 --frequency-kHz "$f" \
+  "$bin/mw-fem" --from "$out/upv.json" box $transducers --mesh-mm "$h" --force-N 0.01 --frequency-kHz "$f" \
     --duration-ms "$duration" --quiet --signals "$run.h5" --out "$run.json" > /dev/null
   jq --arg l "$load" '. + {load: ($l | tonumber)}' "$run.json" > "$run.tmp" && mv "$run.tmp" "$run.json"
 done

@@ -141,6 +141,9 @@ int main(int argc, char** argv) {
       io::run_gnuplot(dem::stress_strain_script(dem::read_trial_curve(best.summary_file), targets.E_Pa, targets.nu,
                                                 run.output(plot_curves), "Virtual compression test, calibrated parameters"));
     }
-    run.emit_json(dem::calibration_summary(calibration, mu_deg), out);
+    auto summary = dem::calibration_summary(calibration, mu_deg);
+    // The five values the wave runs take (mw-dem --from calibration.json); the rest is the record.
+    app::declare_products(summary, {"E_dem_GPa", "nu_dem", "T_MPa", "C_MPa", "friction_angle_deg"});
+    run.emit_json(summary, out);
   });
 }

@@ -41,8 +41,9 @@ int main(int argc, char** argv) {
   return tool.run(argc, argv, [&](app::Run& run) {
     if (!table.empty() && csv.empty()) throw InputError("--table needs a batch (--csv)");
     if (csv.empty()) {
-      const auto summary = lab::specimen_density_summary(o);
+      auto summary = lab::specimen_density_summary(o);
       run.metric("density", summary["density_kg_m3"].get<double>(), "kg/m3");
+      app::declare_products(summary, {"density_kg_m3"});  // what mw-upv, mw-estatic and mw-pack read
       run.emit_json(summary, out);
       return;
     }

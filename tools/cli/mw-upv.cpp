@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
       if (!record->empty()) run.input(*record);
     const auto report = lab::upv_report(m);
     for (const auto& w : report.warnings) std::cerr << "warning: " << w << "\n";
-    const auto& j = report.summary;
+    auto j = report.summary;
     if (j.contains("E_d_GPa")) run.metric("E_d", j["E_d_GPa"].get<double>(), "GPa");
     run.metric("v_p", j["v_p_m_s"].get<double>(), "m/s");
     if (j.contains("t_s_us")) run.metric("v_s", j["v_s_m_s"].get<double>(), "m/s");
@@ -101,6 +101,9 @@ int main(int argc, char** argv) {
       if (report.traces().empty()) throw InputError("--plot needs a recorded waveform (--p-wave or --s-wave)");
       io::run_gnuplot(lab::upv_figure_script(report.traces(), run.output(plot), title));
     }
+    // What the next steps read (mw-estatic, mw-fem); the rest is there for the reader.
+    app::declare_products(j, j.contains("E_d_GPa") ? std::vector<std::string>{"E_d_GPa", "density_kg_m3"}
+                                                   : std::vector<std::string>{"density_kg_m3"});
     run.emit_json(j, out);
   });
 }

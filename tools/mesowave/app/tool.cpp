@@ -338,6 +338,15 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
   return record.exit_status;
 }
 
+void declare_products(nlohmann::ordered_json& object, const std::vector<std::string>& products) {
+  for (const auto& p : products)
+    if (!object.contains(p)) throw std::logic_error("declare_products: '" + p + "' is not an entry of the result");
+  nlohmann::ordered_json foreign = nlohmann::ordered_json::array();
+  for (const auto& [key, value] : object.items())
+    if (key != "foreign_keys" && std::find(products.begin(), products.end(), key) == products.end()) foreign.push_back(key);
+  object["foreign_keys"] = foreign;
+}
+
 CLI::Option* add_out_option(CLI::App& app, fs::path& out, const std::string& what) {
   return app.add_option("--out", out, "Also write " + what + " to FILE")->type_name("FILE");
 }

@@ -81,6 +81,13 @@ private:
   bool records_runs_ = true;
 };
 
+/// The --from contract on the producer's side: declares every entry of `object` but `products`
+/// foreign (a "foreign_keys" array at its end, docs/formats.md). A reader of the file may leave
+/// the inputs echoed and the side results, and must take each product or name it in
+/// --from-ignore: a product renamed here is then an error in the reader, not a value left at its
+/// default. A product missing from `object` is a programming error (std::logic_error).
+void declare_products(nlohmann::ordered_json& object, const std::vector<std::string>& products);
+
 /// Adds the usual `--out FILE` option (JSON result also written to FILE).
 CLI::Option* add_out_option(CLI::App& app, std::filesystem::path& out, const std::string& what = "the JSON result");
 

@@ -1,0 +1,67 @@
+# Included by pipeline/concrete-cube/study.mk (its variables CC_*), in the flowchart's order.
+# ==== Step 6: calibration (E_dem, nu_dem, T, C, friction) =====================
+# The virtual compression test of the step-5 packing (scenes/cube-compression.toml:
+# frictionless walls, the upper one at 25 mm/s with the inertial number checked
+# below 1e-4, extensometers at mid-height) and mw-calibrate cube, which varies
+# E_dem, nu_dem and T = C (friction angle 18 deg, given) from the paper's values
+# (the scene's material) until E_glob, nu_glob and the peak stress meet the static
+# tests (static-test.toml) within 1 % on E, 0.01 on nu and 2 % on strength
+# (docs/calibration.md). Every trial is a recorded mw-dem run; calibration.json
+# is the material of the wave runs (CC_MATERIAL, read by `mw-dem --from`).
+#
+# Table 2 sets four rows side by side: the static tests, the paper's calibrated
+# Yade model, the paper's parameters on mesowave's packing (one more compression
+# run: why mesowave calibrates its own), and mesowave's calibration.
+CC_COMPRESSION_SCENE := $(CC_NOTES)/scenes/cube-compression.toml
+CC_CALIBRATION_TRIALS := $(CC_OUT)/calibration
+
+$(CC_OUT)/calibration.json $(CC_OUT)/calibration-trials.csv $(CC_OUT)/calibration-trajectory.png \
+    $(CC_OUT)/calibration-stress-strain.png &: $(CC_COMPRESSION_SCENE) $(CC_OUT)/packing.h5 \
+    $(CC_LAB)/static-test.toml $(BIN)/mw-calibrate $(BIN)/mw-dem
+	rm -rf $(CC_CALIBRATION_TRIALS)
+	$(BIN)/mw-calibrate --from $(CC_LAB)/static-test.toml cube --scene $(CC_COMPRESSION_SCENE) \
+	  --packing $(CC_OUT)/packing.h5 --work-dir $(CC_CALIBRATION_TRIALS) --trials $(CC_OUT)/calibration-trials.csv \
+	  --plot-trajectory $(CC_OUT)/calibration-trajectory.png --plot-curves $(CC_OUT)/calibration-stress-strain.png \
+	  --out $(CC_OUT)/calibration.json > /dev/null
+
+$(CC_OUT)/compression-paper-parameters.json $(CC_OUT)/compression-paper-parameters.csv \
+    $(CC_OUT)/compression-paper-parameters.h5 &: $(CC_COMPRESSION_SCENE) $(CC_OUT)/packing.h5 \
+    $(CC_LAB)/dem-calibration-paper.toml $(BIN)/mw-dem
+	$(BIN)/mw-dem --from $(CC_LAB)/dem-calibration-paper.toml run $(CC_COMPRESSION_SCENE) --packing $(CC_OUT)/packing.h5 \
+	  --quiet --signals $(CC_OUT)/compression-paper-parameters.h5 --curves $(CC_OUT)/compression-paper-parameters.csv \
+	  --summary $(CC_OUT)/compression-paper-parameters.json > /dev/null
+
+# One quantity, three names: calibration.json's (E_glob_GPa), mw-dem's summary
+# (test.E_glob_GPa, test.peak_stress_MPa) and the lab-data entries' ([E_glob], unit GPa).
+$(CC_OUT)/table2.csv: $(CC_LAB)/paper/table2-experiment.toml $(CC_LAB)/paper/table2-dem.toml \
+    $(CC_OUT)/compression-paper-parameters.json $(CC_OUT)/calibration.json $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name model \
+	  --row "experiment (static tests; paper Table 2)=$(CC_LAB)/paper/table2-experiment.toml" \
+	  --row "paper: Yade with its calibration (Table 2)=$(CC_LAB)/paper/table2-dem.toml" \
+	  --row "mesowave with the paper's parameters=$(CC_OUT)/compression-paper-parameters.json" \
+	  --row "mesowave calibrated (calibration.json)=$(CC_OUT)/calibration.json" \
+	  --column "E_glob_GPa=E_glob_GPa|test.E_glob_GPa|E_glob" --column "nu_glob=nu_glob|test.nu_glob" \
+	  --column "sigma_dem_MPa=sigma_dem_MPa|test.peak_stress_MPa|sigma_dem" --significant-digits 4 --csv $@ > /dev/null
+
+$(CC_OUT)/table2-vs-paper.txt $(CC_OUT)/table2-vs-paper.csv &: $(CC_OUT)/calibration.json \
+    $(CC_LAB)/paper/table2-dem.toml $(BIN)/mw-compare
+	$(BIN)/mw-compare --ours $(CC_OUT)/calibration.json --paper $(CC_LAB)/paper/table2-dem.toml \
+	  --title "Step 6, Table 2: mesowave's calibrated model against the paper's calibrated Yade model" \
+	  --csv $(CC_OUT)/table2-vs-paper.csv --text $(CC_OUT)/table2-vs-paper.txt > /dev/null
+
+CC_MATERIAL := $(CC_OUT)/calibration.json
+CC_CALIBRATION_RESULTS := $(CC_OUT)/calibration.json $(CC_OUT)/calibration-trajectory.png \
+  $(CC_OUT)/calibration-stress-strain.png $(CC_OUT)/table2.csv $(CC_OUT)/table2-vs-paper.txt
+
+.PHONY: concrete-cube-calibration concrete-cube-calibration-summary
+concrete-cube-calibration: $(CC_CALIBRATION_RESULTS)
+
+concrete-cube-calibration-summary: concrete-cube-calibration
+	@echo
+	@echo "== Concrete cube, step 6: calibration ($(CC_OUT)/calibration.json; trials: $(CC_OUT)/calibration-trials.csv) =="
+	@$(CC_PRINT_CSV) $(CC_OUT)/calibration-trials.csv
+	@echo
+	@echo "Table 2:"
+	@$(CC_PRINT_CSV) $(CC_OUT)/table2.csv
+	@echo
+	@cat $(CC_OUT)/table2-vs-paper.txt

@@ -1,0 +1,137 @@
+# Included by pipeline/concrete-cube/study.mk (its variables CC_*), in the flowchart's order.
+# ==== Waves: 100-500 kHz, sensors B-G (Sections 4.1-4.3) =====================
+# DEM: the scene cube-wave.toml (linearised bonded network, 1.5 ms at 50 ns) on
+# the step-5 packing with the CC_MATERIAL parameters, one run per frequency.
+# Continuum reference: mw-fem box with the dynamic moduli of step 3 (E_d, nu_d,
+# rho from mw-upv), the same actuator A and sensors B-G (sensors.toml, scaled to
+# the cube; fem-transducers.py), the same burst. No measured cube signals ship,
+# so Table 3 here is DEM against this continuum reference; files dropped into
+# lab-data/concrete-cube/measured/ (docs/formats.md) are compared with the DEM too.
+#
+# Two FEM runs per frequency (docs/benchmarks.md, "Concrete cube: the continuum
+# reference"): the FEM's phase error grows with the distance travelled, so no
+# affordable mesh is converged over the whole 1.5 ms (hundreds of wavelengths);
+# over the first 50 us (the direct waves and their first reflections) a mesh of
+# h = 156.25 mm / f[kHz] (1.5625 mm at 100 kHz, 0.3125 mm at 500 kHz: a fixed
+# number of elements per wavelength) is, at a cost of seconds to minutes.
+#   fem-early-FkHz  55 us, h(f): the converged reference of the first packets;
+#   fem-FkHz        the whole record at 2 mm (<= 200 kHz) or 1 mm, for the signal
+#                   and spectrum figures and the PCC over the record, as the
+#                   paper's Table 3 - not a converged reference after the first
+#                   packets (said so in the report).
+
+CC_SCENE := $(CC_NOTES)/scenes/cube-wave.toml
+CC_MEASURED_DIR ?= $(CC_LAB)/measured
+CC_EARLY_US := 50
+CC_EARLY_RECORD := --duration-ms 0.055
+cc_fem_early_mesh = $(shell awk 'BEGIN { printf "%.6g", 156.25 / $1 }')
+ifeq ($(QUICK),1)
+CC_FREQS := 100 300 500
+CC_RECORD := --duration-ms 0.3
+cc_fem_mesh = 1
+else
+CC_FREQS := 100 150 200 250 300 350 400 450 500
+CC_RECORD :=
+cc_fem_mesh = $(if $(filter 100 150 200,$1),2,1)
+endif
+CC_FIGURE_FREQS := 100 300 500
+# The force of the scene's actuator A (amplitude_N): the FEM gets the same burst.
+CC_FORCE_N := 0.01
+CC_TRANSDUCERS = $$($(CC_NOTES)/fem-transducers.py $(CC_LAB)/sensors.toml $(CC_LAB)/porosity.toml $(CC_SIDE_MM))
+CC_FEM_INPUTS := $(CC_OUT)/upv.json $(CC_LAB)/sensors.toml $(CC_LAB)/porosity.toml $(CC_NOTES)/fem-transducers.py \
+  $(BIN)/mw-fem
+
+$(CC_OUT)/dem-%kHz.h5 $(CC_OUT)/dem-%kHz.json: $(CC_SCENE) $(CC_OUT)/packing.h5 $(CC_MATERIAL) $(BIN)/mw-dem
+	$(BIN)/mw-dem --from $(CC_MATERIAL) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $* $(CC_RECORD) \
+	  --quiet --signals $(CC_OUT)/dem-$*kHz.h5 --summary $(CC_OUT)/dem-$*kHz.json > /dev/null
+
+$(CC_OUT)/fem-%kHz.h5 $(CC_OUT)/fem-%kHz.json: $(CC_FEM_INPUTS)
+	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_mesh,$*) \
+	  --force-N $(CC_FORCE_N) --frequency-kHz $* $(CC_RECORD) \
+	  --quiet --signals $(CC_OUT)/fem-$*kHz.h5 --out $(CC_OUT)/fem-$*kHz.json > /dev/null
+
+$(CC_OUT)/fem-early-%kHz.h5 $(CC_OUT)/fem-early-%kHz.json: $(CC_FEM_INPUTS)
+	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_early_mesh,$*) \
+	  --force-N $(CC_FORCE_N) --frequency-kHz $* $(CC_EARLY_RECORD) \
+	  --quiet --signals $(CC_OUT)/fem-early-$*kHz.h5 --out $(CC_OUT)/fem-early-$*kHz.json > /dev/null
+
+# PCC of DEM against FEM per sensor, the DEM record interpolated onto the FEM's
+# 0.1 us samples: over the first 50 us against the converged early reference, with
+# the first packets' signals and envelopes (the paper's Fig. 14); over the whole
+# record, with the signals (Figs. 12-13) and spectra (Fig. 15). The envelopes are
+# computed zero-padded to twice the record (--pad double), so that the end of a
+# record does not wrap onto its start.
+$(CC_OUT)/pcc-early-%kHz.csv $(CC_OUT)/pcc-early-%kHz.json $(CC_OUT)/signals-early-%kHz.png \
+    $(CC_OUT)/envelopes-early-%kHz.png: $(CC_OUT)/fem-early-%kHz.h5 $(CC_OUT)/dem-%kHz.h5 $(BIN)/mw-pcc
+	$(BIN)/mw-pcc --a $(CC_OUT)/fem-early-$*kHz.h5 --b $(CC_OUT)/dem-$*kHz.h5 --resample linear --pad double \
+	  --window-end-us $(CC_EARLY_US) --csv $(CC_OUT)/pcc-early-$*kHz.csv --out $(CC_OUT)/pcc-early-$*kHz.json \
+	  --labels FEM,DEM --title "Concrete cube, $* kHz burst, first $(CC_EARLY_US) us: DEM against the continuum reference (FEM)" \
+	  --plot-window-us 0,$(CC_EARLY_US) --plot-signals $(CC_OUT)/signals-early-$*kHz.png \
+	  --plot-envelopes $(CC_OUT)/envelopes-early-$*kHz.png > /dev/null
+
+$(CC_OUT)/pcc-%kHz.csv $(CC_OUT)/pcc-%kHz.json $(CC_OUT)/spectra-%kHz.csv $(CC_OUT)/signals-%kHz.png \
+    $(CC_OUT)/spectra-%kHz.png: $(CC_OUT)/fem-%kHz.h5 $(CC_OUT)/dem-%kHz.h5 $(BIN)/mw-pcc
+	$(BIN)/mw-pcc --a $(CC_OUT)/fem-$*kHz.h5 --b $(CC_OUT)/dem-$*kHz.h5 --resample linear --pad double \
+	  --csv $(CC_OUT)/pcc-$*kHz.csv --out $(CC_OUT)/pcc-$*kHz.json \
+	  --spectra $(CC_OUT)/spectra-$*kHz.csv --max-frequency-kHz $$(( 2 * $* )) \
+	  --labels FEM,DEM --title "Concrete cube, $* kHz burst, whole record: DEM against the continuum reference (FEM)" \
+	  --plot-signals $(CC_OUT)/signals-$*kHz.png --plot-spectra $(CC_OUT)/spectra-$*kHz.png > /dev/null
+
+# Measured signals (a lab's own): lab-data/concrete-cube/measured/<F>kHz.h5 or .csv,
+# signals named B-G, t = 0 at the start of the burst. Each is compared with the DEM
+# run at its frequency (the DEM interpolated onto the measured samples).
+CC_MEASURED := $(sort $(wildcard $(CC_MEASURED_DIR)/*kHz.h5 $(CC_MEASURED_DIR)/*kHz.csv))
+cc_measured_f = $(patsubst %kHz,%,$(basename $(notdir $1)))
+CC_MEASURED_FREQS := $(foreach m,$(CC_MEASURED),$(call cc_measured_f,$m))
+define CC_MEASURED_PCC
+$(CC_OUT)/pcc-measured-$(call cc_measured_f,$1)kHz.csv: $1 $(CC_OUT)/dem-$(call cc_measured_f,$1)kHz.h5 $(BIN)/mw-pcc
+	$(BIN)/mw-pcc --a $1 --b $(CC_OUT)/dem-$(call cc_measured_f,$1)kHz.h5 --resample linear --pad double --csv $$@ \
+	  --labels measured,DEM --title "Concrete cube, $(call cc_measured_f,$1) kHz: DEM against the measured signals ($1)" \
+	  --plot-signals $(CC_OUT)/signals-measured-$(call cc_measured_f,$1)kHz.png > /dev/null
+endef
+$(foreach m,$(CC_MEASURED),$(eval $(call CC_MEASURED_PCC,$m)))
+
+# Table 3: the mean PCC over sensors per frequency, beside the paper's (which is
+# experiment against DEM), the measured comparison where there is one; the PCC of
+# every sensor; both as figures.
+cc_rows = $(foreach f,$(CC_FREQS),--row $f=$(CC_OUT)/pcc-$1$(f)kHz.csv)
+CC_SENSORS := B C D E F G
+ifneq ($(CC_MEASURED),)
+$(CC_OUT)/table3-measured.csv: $(foreach f,$(CC_MEASURED_FREQS),$(CC_OUT)/pcc-measured-$(f)kHz.csv) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name f_kHz $(foreach f,$(CC_MEASURED_FREQS),--row $f=$(CC_OUT)/pcc-measured-$(f)kHz.csv) \
+	  --where sensor=mean --column pcc_signal --column pcc_envelope --csv $@ > /dev/null
+CC_TABLE3_MEASURED := $(CC_OUT)/table3-measured.csv
+CC_JOIN_MEASURED := --join $(CC_TABLE3_MEASURED):measured_vs_dem_pcc_signals=pcc_signal,measured_vs_dem_pcc_envelopes=pcc_envelope
+CC_MEASURED_Y := --y "measured_vs_dem_pcc_signals=measured vs DEM, signals"
+endif
+# The measured folder itself: a file dropped in or taken out re-makes Table 3.
+# The whole-record table first, then the first-packets columns joined to it.
+$(CC_OUT)/table3-early.csv: $(foreach f,$(CC_FREQS),$(CC_OUT)/pcc-early-$(f)kHz.csv) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name f_kHz $(call cc_rows,early-) --where sensor=mean \
+	  --column pcc_signal --column pcc_envelope --csv $@ > /dev/null
+
+$(CC_OUT)/table3.csv: $(foreach f,$(CC_FREQS),$(CC_OUT)/pcc-$(f)kHz.csv) $(CC_OUT)/table3-early.csv \
+    $(CC_LAB)/paper/table3.csv $(CC_TABLE3_MEASURED) $(wildcard $(CC_MEASURED_DIR)) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name f_kHz $(call cc_rows,) --where sensor=mean \
+	  --column dem_vs_fem_pcc_signals=pcc_signal --column dem_vs_fem_pcc_envelopes=pcc_envelope \
+	  --join $(CC_OUT)/table3-early.csv:dem_vs_fem_first_$(CC_EARLY_US)us_pcc_signals=pcc_signal,dem_vs_fem_first_$(CC_EARLY_US)us_pcc_envelopes=pcc_envelope \
+	  --join $(CC_LAB)/paper/table3.csv:paper_experiment_vs_dem_pcc=pcc_mean $(CC_JOIN_MEASURED) --csv $@ > /dev/null
+
+$(CC_OUT)/pcc-sensors.csv: $(foreach f,$(CC_FREQS),$(CC_OUT)/pcc-early-$(f)kHz.csv) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name f_kHz $(call cc_rows,early-) \
+	  $(foreach s,$(CC_SENSORS),--column $s_signal=pcc_signal@sensor=$s) \
+	  $(foreach s,$(CC_SENSORS),--column $s_envelope=pcc_envelope@sensor=$s) --csv $@ > /dev/null
+
+$(CC_OUT)/table3.png: $(CC_OUT)/table3.csv $(BIN)/mw-table
+	$(BIN)/mw-table plot $< --x f_kHz --y "dem_vs_fem_first_$(CC_EARLY_US)us_pcc_signals=DEM vs FEM, first $(CC_EARLY_US) us, signals" \
+	  --y "dem_vs_fem_first_$(CC_EARLY_US)us_pcc_envelopes=DEM vs FEM, first $(CC_EARLY_US) us, envelopes" \
+	  --y "dem_vs_fem_pcc_signals=DEM vs FEM, whole record, signals" \
+	  --y "dem_vs_fem_pcc_envelopes=DEM vs FEM, whole record, envelopes" --y "paper_experiment_vs_dem_pcc=paper: experiment vs DEM" \
+	  $(CC_MEASURED_Y) \
+	  --y-range -0.2,1 --x-label "burst centre frequency [kHz]" --y-label "mean PCC over sensors B-G" \
+	  --key below --title "Concrete cube: Table 3 (mean PCC over the sensors)" --out $@ > /dev/null
+
+$(CC_OUT)/pcc-sensors.png: $(CC_OUT)/pcc-sensors.csv $(BIN)/mw-table
+	$(BIN)/mw-table plot $< --x f_kHz $(foreach s,$(CC_SENSORS),--y "$s_signal=$s") --y-range -0.5,1 \
+	  --x-label "burst centre frequency [kHz]" --y-label "PCC of DEM against FEM, first $(CC_EARLY_US) us, signals" \
+	  --key below --title "Concrete cube: PCC per sensor, first $(CC_EARLY_US) us" --out $@ > /dev/null
