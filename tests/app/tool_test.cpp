@@ -1,0 +1,70 @@
+// app/tool, called directly (tests/cli runs the built tools): the exit codes, whole-or-nothing
+// outputs, the --from contract on the reader's side (an entry no option takes is an error) and
+// on the producer's (declare_products).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "mesowave/app/tool.hpp"
+#include "mesowave/core/error.hpp"
+#include "support/run_tool.hpp"
+
+using namespace mesowave;
+using mesowave::test::TempDir;
+using mesowave::test::write_file;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Runs a tool with one option --t-p-us whose body writes `out` and then throws `failure` (if any).
+int run_tool_body(std::vector<std::string> args, const fs::path& out, double* seen, const char* failure = nullptr) {
+  app::Tool tool("mw-probe", "A probe of app::Tool.");
+  double t_p_us = 0;
+  tool.cli().add_option("--t-p-us", t_p_us, "t_p [us]");
+  args.insert(args.begin(), "mw-probe");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  return tool.run(int(argv.size()), argv.data(), [&](app::Run& run) {
+    *seen = t_p_us;
+    run.write_text(out, "result\n");
+    if (failure) throw InputError(failure);
+  });
+}
+
+TEST(Tool, ExitZeroWritesTheOutputAnInputErrorExitsOneAndWritesNothing) {
+  TempDir dir;
+  double seen = 0;
+  EXPECT_EQ(run_tool_body({"--t-p-us", "35"}, dir / "a.txt", &seen), 0);
+  EXPECT_EQ(seen, 35.0);
+  EXPECT_TRUE(fs::exists(dir / "a.txt"));
+  EXPECT_EQ(run_tool_body({"--t-p-us", "35"}, dir / "b.txt", &seen, "t_p (35 us) is wrong"), 1);
+  EXPECT_FALSE(fs::exists(dir / "b.txt"));  // staged, never renamed into place
+  EXPECT_EQ(run_tool_body({"--no-such-option"}, dir / "c.txt", &seen), 1);
+}
+
+TEST(Tool, FromFillsOptionsAndAnEntryNoOptionTakesIsAnError) {
+  TempDir dir;
+  write_file(dir / "upv.toml", "[t_p]\nvalue = 35.0\nunit = \"us\"\nsource = \"paper\"\ncite = \"Section 3.2\"\n");
+  double seen = 0;
+  EXPECT_EQ(run_tool_body({"--from", (dir / "upv.toml").string()}, dir / "a.txt", &seen), 0);
+  EXPECT_EQ(seen, 35.0);
+  EXPECT_EQ(run_tool_body({"--from", (dir / "upv.toml").string(), "--t-p-us", "36"}, dir / "b.txt", &seen), 0);
+  EXPECT_EQ(seen, 36.0);  // the command line beats the file
+  write_file(dir / "renamed.json", R"({"t_p_ms": 0.035})");
+  EXPECT_EQ(run_tool_body({"--from", (dir / "renamed.json").string()}, dir / "c.txt", &seen), 1);
+  EXPECT_FALSE(fs::exists(dir / "c.txt"));
+  write_file(dir / "declared.json", R"({"t_p_us": 35, "v_p_m_s": 4285.7, "foreign_keys": ["v_p_m_s"]})");
+  EXPECT_EQ(run_tool_body({"--from", (dir / "declared.json").string()}, dir / "d.txt", &seen), 0);
+}
+
+TEST(Tool, DeclareProductsMakesEveryOtherEntryForeign) {
+  nlohmann::ordered_json j = {{"path_mm", 150.0}, {"E_d_GPa", 36.67}, {"method", "Eq. (9)"}};
+  app::declare_products(j, {"E_d_GPa"});
+  EXPECT_EQ(j["foreign_keys"], nlohmann::ordered_json::array({"path_mm", "method"}));
+  app::declare_products(j, {"E_d_GPa", "method"});  // declared again: the list is replaced, not grown
+  EXPECT_EQ(j["foreign_keys"], nlohmann::ordered_json::array({"path_mm"}));
+  EXPECT_THROW(app::declare_products(j, {"E_st_GPa"}), std::logic_error);
+}
+
+}  // namespace
