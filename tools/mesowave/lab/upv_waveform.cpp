@@ -144,7 +144,7 @@ signal::Signal read_wav_waveform(const std::filesystem::path& path, const Wavefo
       data_at = at + 8;
       data_size = std::min<std::size_t>(size, d.size() - data_at);
     }
-    at += 8 + size + (size % 2);
+    at += 8 + std::size_t(size) + (size % 2);  // in 64 bits: a chunk size near 2^32 wrapped to 0 and looped for ever (libFuzzer)
   }
   if (!data_at) throw InputError(where + ": no data chunk");
   if (channels != 1) throw InputError(where + ": " + std::to_string(channels) + " channels (a mono record is needed)");

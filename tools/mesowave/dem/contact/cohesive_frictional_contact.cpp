@@ -8,6 +8,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/core/kernel_clones.hpp"
 #include "mesowave/dem/contact/axial_chain.hpp"
 #include "mesowave/dem/contact/linear_bonded_network.hpp"
 #include "mesowave/dem/engine/neighbour_search.hpp"
@@ -62,7 +63,7 @@ void CohesiveFrictionalContact::contact_forces(SphereSystem& system, double dt, 
 
 // Compiled for AVX-512, AVX2 and baseline x86-64, picked at load time. No FMA
 // contraction (ISO C++ mode), so every version gives the same bits.
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+MESOWAVE_KERNEL_CLONES
 void CohesiveFrictionalContact::kernel(SphereSystem& system, double dt, bool evaluate_energy) {
   NoExtension none;
   run<SphereSystem::ContactResult>(system, dt, evaluate_energy, none);

@@ -1,5 +1,6 @@
 #include "mesowave/dem/contact/cohesive_moment_contact.hpp"
 
+#include "mesowave/core/kernel_clones.hpp"
 #include "mesowave/dem/contact/axial_chain.hpp"
 #include "mesowave/dem/scene/plugins.hpp"
 
@@ -58,7 +59,7 @@ void CohesiveMomentContact::contact_forces(SphereSystem& system, double dt, bool
 }
 
 // Compiled for AVX-512, AVX2 and baseline x86-64 (as the full law's kernel).
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+MESOWAVE_KERNEL_CLONES
 void CohesiveMomentContact::kernel(SphereSystem& system, double dt, bool evaluate_energy) {
   const CohesiveFrictionalMaterial& m = system.material();
   Moments ext{system.spheres().radius_m.data(), system.first(), system.second(),

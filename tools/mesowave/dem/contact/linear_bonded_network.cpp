@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesowave/core/kernel_clones.hpp"
+
 namespace mesowave::dem {
 
 void LinearBondedNetwork::attach(SphereSystem& system) {
@@ -23,7 +25,7 @@ void LinearBondedNetwork::contact_forces(SphereSystem& system, double /*dt*/, bo
 
 // Compiled for AVX-512, AVX2 and baseline x86-64, picked at load time. No FMA
 // contraction (ISO C++ mode), so every version gives the same bits.
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+MESOWAVE_KERNEL_CLONES
 void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
   const CohesiveFrictionalMaterial& material = system.material();
   const double two_E_dem = 2.0 * material.E_dem_Pa, ratio = material.stiffness_ratio;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesowave/core/kernel_clones.hpp"
+
 namespace mesowave::dem {
 namespace {
 
@@ -242,7 +244,7 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
 // block: one vector loop for the translations, one for the rotations. The
 // per-component energy terms go through a small buffer and are added in
 // component order, so the sums do not depend on the vector width.
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+MESOWAVE_KERNEL_CLONES
 void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t blk, double dt, bool evaluate_energy) {
   const double alpha = material_.damping, half_dt = 0.5 * dt;
   const std::size_t m = 3 * (end - begin);
