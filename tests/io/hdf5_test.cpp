@@ -11,6 +11,7 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/io/hdf5.hpp"
 #include "support/run_tool.hpp"
+#include "support/input_error.hpp"
 
 using namespace mesowave;
 namespace h5 = io::h5;
@@ -24,15 +25,6 @@ void add_doubles_attribute(hid_t object, const std::string& name, std::size_t n)
   h5::Handle space(H5Screate_simple(1, &dims, nullptr));
   h5::Handle attr(H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, H5P_DEFAULT));
   H5Awrite(attr.id(), H5T_NATIVE_DOUBLE, values.data());
-}
-
-std::string input_error(const std::function<void()>& read) {
-  try {
-    read();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
 }
 
 }  // namespace
@@ -49,11 +41,11 @@ TEST(Hdf5Read, OneNumberIsOneValue) {
   auto file = h5::open_file(path);
   EXPECT_EQ(h5::double_attribute(file.id(), "one"), 1.5);
   EXPECT_EQ(h5::doubles_attribute(file.id(), "eight").size(), 8u);  // a vector attribute takes any length
-  EXPECT_EQ(input_error([&] { h5::double_attribute(file.id(), "eight"); }),
+  EXPECT_EQ(test::input_error_of([&] { h5::double_attribute(file.id(), "eight"); }),
             "HDF5 attribute 'eight' holds 8 values where one is expected");
-  EXPECT_EQ(input_error([&] { h5::double_attribute(file.id(), "text"); }), "HDF5 attribute 'text' is not numeric");
-  EXPECT_EQ(input_error([&] { h5::doubles_attribute(file.id(), "text"); }), "HDF5 attribute 'text' is not numeric");
-  EXPECT_EQ(input_error([&] { h5::string_attribute(file.id(), "one"); }), "HDF5 attribute 'one' is not a string");
+  EXPECT_EQ(test::input_error_of([&] { h5::double_attribute(file.id(), "text"); }), "HDF5 attribute 'text' is not numeric");
+  EXPECT_EQ(test::input_error_of([&] { h5::doubles_attribute(file.id(), "text"); }), "HDF5 attribute 'text' is not numeric");
+  EXPECT_EQ(test::input_error_of([&] { h5::string_attribute(file.id(), "one"); }), "HDF5 attribute 'one' is not a string");
 }
 
 TEST(Hdf5Read, AStringArrayIsNotOneString) {
@@ -69,7 +61,7 @@ TEST(Hdf5Read, AStringArrayIsNotOneString) {
     H5Awrite(attr.id(), type.id(), std::string(32, 'a').data());
   }
   auto file = h5::open_file(path);
-  EXPECT_EQ(input_error([&] { h5::string_attribute(file.id(), "names"); }),
+  EXPECT_EQ(test::input_error_of([&] { h5::string_attribute(file.id(), "names"); }),
             "HDF5 attribute 'names' holds 4 values where one is expected");
 }
 
@@ -88,7 +80,7 @@ TEST(Hdf5Read, AStringDatasetIsNotNumbers) {
   }
   auto file = h5::open_file(path);
   EXPECT_EQ(h5::read_doubles(file.id(), "numbers"), (std::vector<double>{1, 2, 3}));
-  EXPECT_EQ(input_error([&] { h5::read_doubles(file.id(), "samples"); }), "HDF5 dataset 'samples' is not numeric");
+  EXPECT_EQ(test::input_error_of([&] { h5::read_doubles(file.id(), "samples"); }), "HDF5 dataset 'samples' is not numeric");
 }
 
 // Dimensions are header bytes: a dataset that claims far more than it stores
@@ -107,6 +99,6 @@ TEST(Hdf5Read, ADatasetMustStoreWhatItClaims) {
   }
   auto file = h5::open_file(path);
   EXPECT_EQ(h5::read_doubles(file.id(), "small"), std::vector<double>(10, 0.0));
-  EXPECT_EQ(input_error([&] { h5::read_doubles(file.id(), "huge"); }),
+  EXPECT_EQ(test::input_error_of([&] { h5::read_doubles(file.id(), "huge"); }),
             "HDF5 dataset 'huge' claims 16777216 values but stores 0 bytes (a damaged file)");
 }

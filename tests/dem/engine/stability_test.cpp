@@ -10,6 +10,7 @@
 #include "mesowave/dem/contact/bond_network.hpp"
 #include "mesowave/dem/engine/simulation.hpp"
 #include "dem/test_packings.hpp"
+#include "support/input_error.hpp"
 
 using namespace mesowave;
 using namespace mesowave::dem;
@@ -26,15 +27,6 @@ Scene network_scene(double dt, double duration, double damping) {
   s.sensors.push_back(motion_sensor("B", patch_target("x+", {0, mid, mid}, 3e-3), MotionQuantity::acceleration, "normal"));
   s.model = "full";
   return s;
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace
@@ -71,12 +63,12 @@ TEST(TimeStep, RunsAtNineTenthsAndRefusesElevenTenthsOfTheLimit) {
     EXPECT_GT(r.energy.external_work_J, 0.0);
   }
   // 1.1: refused before running, with the limit in the message.
-  const std::string refused = error_of([&] { Simulation(network_scene(1.1 * limit, 1e-5, 0.01), p); });
+  const std::string refused = test::input_error_of([&] { Simulation(network_scene(1.1 * limit, 1e-5, 0.01), p); });
   EXPECT_NE(refused.find("exceeds the stable limit"), std::string::npos) << refused;
   // ...and rightly so: forced to run, it blows up and is stopped with an error.
   SimulationOptions unchecked;
   unchecked.refuse_unstable_dt = false;
-  const std::string blew_up = error_of([&] { Simulation(network_scene(1.1 * limit, 4000 * 1.1 * limit, 0.01), p, unchecked).run(); });
+  const std::string blew_up = test::input_error_of([&] { Simulation(network_scene(1.1 * limit, 4000 * 1.1 * limit, 0.01), p, unchecked).run(); });
   EXPECT_TRUE(blew_up.find("energy blow-up") != std::string::npos || blew_up.find("non-finite") != std::string::npos)
       << blew_up;
 }
@@ -87,7 +79,7 @@ TEST(HardCases, CoincidentCentresAreAnError) {
   p.radii_m.push_back(0.8e-3);
   p.ids.push_back(999);
   const SphereSet s = make_sphere_set(p, 2290);
-  const std::string error = error_of([&] { make_bond_network(s, 1.1); });
+  const std::string error = test::input_error_of([&] { make_bond_network(s, 1.1); });
   EXPECT_NE(error.find("coincident centres"), std::string::npos) << error;
   EXPECT_NE(error.find("999"), std::string::npos) << error;
 }
@@ -154,7 +146,7 @@ TEST(HardCases, RodAtPointNineFiveRBondsSecondNeighbours) {
     EXPECT_EQ(sim.model().bond_count(), n - 1);
     EXPECT_NO_THROW(sim.run());
   }
-  const std::string error = error_of([&] {
+  const std::string error = test::input_error_of([&] {
     SimulationOptions full;
     full.model = "full";
     Simulation(s, line_packing(n, R, d, rho), full);
