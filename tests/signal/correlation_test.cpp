@@ -11,6 +11,7 @@
 #include "mesowave/signal/correlation.hpp"
 #include "mesowave/signal/hann_burst.hpp"
 #include "signal/reference.hpp"
+#include "support/input_error.hpp"
 
 using namespace mesowave;
 using namespace mesowave::signal;
@@ -33,15 +34,6 @@ Signal modulated(const std::string& name, std::size_t n, double phase, double dt
     s.samples[j] = (1 + 0.5 * std::cos(2 * pi * double(5 * j % n) / double(n))) *
                    std::sin(2 * pi * double(150 * j % n) / double(n) + phase);
   return s;
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
 }
 
 }  // namespace
@@ -104,11 +96,11 @@ TEST(Pearson, TenDecibelNoiseGivesTheExpectedCorrelation) {
 
 TEST(Pearson, RefusesWhatHasNoCoefficient) {
   const std::vector<double> a{1, 2, 3}, b{1, 2};
-  EXPECT_EQ(message_of([&] { pearson(a, b, "sensor B"); }), "sensor B: unequal lengths (3 and 2 samples)");
-  EXPECT_EQ(message_of([&] { pearson({}, {}, "sensor B"); }), "sensor B: cannot correlate an empty record");
-  EXPECT_EQ(message_of([&] { pearson(a, std::vector<double>{1, NAN, 3}, "sensor B"); }),
+  EXPECT_EQ(test::input_error_of([&] { pearson(a, b, "sensor B"); }), "sensor B: unequal lengths (3 and 2 samples)");
+  EXPECT_EQ(test::input_error_of([&] { pearson({}, {}, "sensor B"); }), "sensor B: cannot correlate an empty record");
+  EXPECT_EQ(test::input_error_of([&] { pearson(a, std::vector<double>{1, NAN, 3}, "sensor B"); }),
             "sensor B (second): sample 1 is NaN");
-  EXPECT_EQ(message_of([&] { pearson(a, std::vector<double>{2, 2, 2}, "sensor B"); }),
+  EXPECT_EQ(test::input_error_of([&] { pearson(a, std::vector<double>{2, 2, 2}, "sensor B"); }),
             "sensor B: the second record has zero variance (constant), r is undefined");
   // A constant that does not round exactly still has no variance.
   EXPECT_THROW(pearson(std::vector<double>(1000, 0.1), test::uniform_values(1000, 4)), InputError);
@@ -199,7 +191,7 @@ TEST(Correlate, DifferentTimeBasesNeedAnExplicitResampling) {
   const HannBurst burst(100e3, 5, 1.0, 20e-6);
   Signal fine{"B", "velocity", "m/s", "", 0.0, 1e-7, burst.sample(1e-7, 1000), std::nullopt};
   Signal coarse{"B", "velocity", "m/s", "", -5e-6, 2.5e-7, burst.sample(2.5e-7, 440, -5e-6), std::nullopt};
-  EXPECT_EQ(message_of([&] { correlate(fine, coarse); }),
+  EXPECT_EQ(test::input_error_of([&] { correlate(fine, coarse); }),
             "sensor B: different time bases (1000 samples, dt 0.1 us, t0 0 us vs 440 samples, dt 0.25 us, t0 -5 us); "
             "ask for a resampling (mw-pcc --resample linear|cubic) to interpolate one onto the other");
   CorrelationOptions opt;
@@ -221,7 +213,7 @@ TEST(Correlate, DifferentTimeBasesNeedAnExplicitResampling) {
 TEST(Correlate, UnequalLengthOnOneSamplingIsNamed) {
   Signal a = modulated("C", 3000, 0), b = modulated("C", 3000, 0.3);
   b.samples.resize(2990);
-  EXPECT_EQ(message_of([&] { correlate(a, b); }),
+  EXPECT_EQ(test::input_error_of([&] { correlate(a, b); }),
             "sensor C: unequal lengths (3000 and 2990 samples on the same sampling); cut both to a common window or "
             "resample explicitly");
   // With a resampling allowed the overlap is compared.
@@ -245,13 +237,13 @@ TEST(Correlate, WindowRestrictsTheComparedSamples) {
 
 TEST(Correlate, SetsThatCannotBeMatched) {
   const std::vector<Signal> a{modulated("B", 100, 0)}, b{modulated("C", 100, 0)};
-  EXPECT_EQ(message_of([&] { correlate_sensors(a, b); }), "the two sets share no sensor name, nothing to correlate");
+  EXPECT_EQ(test::input_error_of([&] { correlate_sensors(a, b); }), "the two sets share no sensor name, nothing to correlate");
   const std::vector<Signal> twice{modulated("B", 100, 0), modulated("B", 100, 1)};
-  EXPECT_EQ(message_of([&] { correlate_sensors(twice, a); }), "sensor 'B' appears twice in the first set");
+  EXPECT_EQ(test::input_error_of([&] { correlate_sensors(twice, a); }), "sensor 'B' appears twice in the first set");
   // A zero-variance sensor is named even when other sensors are fine.
   std::vector<Signal> flat{modulated("B", 100, 0), modulated("C", 100, 0)};
   flat[1].samples.assign(100, 0.0);
   const std::vector<Signal> ok{modulated("B", 100, 0), modulated("C", 100, 0)};
-  EXPECT_EQ(message_of([&] { correlate_sensors(flat, ok); }),
+  EXPECT_EQ(test::input_error_of([&] { correlate_sensors(flat, ok); }),
             "sensor C: the first record has zero variance (constant), r is undefined");
 }
