@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/signal/correlation.hpp"
 #include "mesowave/signal/fft.hpp"
 #include "mesowave/signal/time_of_flight.hpp"
 #include "mesowave/fem/case.hpp"
@@ -50,22 +51,6 @@ double energy_centroid(const signal::Signal& s) {
     den += s.samples[i] * s.samples[i];
   }
   return num / den;
-}
-
-double pearson(const std::vector<double>& a, const std::vector<double>& b) {
-  const std::size_t n = std::min(a.size(), b.size());
-  double ma = 0, mb = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    ma += a[i] / double(n);
-    mb += b[i] / double(n);
-  }
-  double sab = 0, saa = 0, sbb = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    sab += (a[i] - ma) * (b[i] - mb);
-    saa += (a[i] - ma) * (a[i] - ma);
-    sbb += (b[i] - mb) * (b[i] - mb);
-  }
-  return sab / std::sqrt(saa * sbb);
 }
 
 }  // namespace
@@ -224,10 +209,10 @@ TEST(FemSolver, AxisymmetricAndHexahedralRodsAgree) {
       sig[k][l] = run_explicit(model, load, probes, opt).signals[0].samples;
     }
   }
-  std::printf("PCC axisymmetric vs 3D: face load %.6f, point load %.6f\n", pearson(sig[0][1], sig[1][1]),
-              pearson(sig[0][0], sig[1][0]));
-  EXPECT_GT(pearson(sig[0][1], sig[1][1]), 0.9999);  // uniform end traction
-  EXPECT_GT(pearson(sig[0][0], sig[1][0]), 0.9995);  // point force on the axis
+  std::printf("PCC axisymmetric vs 3D: face load %.6f, point load %.6f\n", signal::pearson(sig[0][1], sig[1][1]),
+              signal::pearson(sig[0][0], sig[1][0]));
+  EXPECT_GT(signal::pearson(sig[0][1], sig[1][1]), 0.9999);  // uniform end traction
+  EXPECT_GT(signal::pearson(sig[0][0], sig[1][0]), 0.9995);  // point force on the axis
 }
 
 TEST(FemSolver, GroupVelocityConvergesToPochhammerChree) {

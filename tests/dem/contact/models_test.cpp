@@ -7,6 +7,7 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/threads.hpp"
 #include "mesowave/dem/engine/simulation.hpp"
+#include "mesowave/signal/correlation.hpp"
 #include "dem/test_packings.hpp"
 
 using namespace mesowave;
@@ -49,7 +50,7 @@ TEST(Models, LinearAndFullAgreeOnASmallAmplitudeCubeWave) {
   const RunReport linear = run(s, p, "linear"), full = run(s, p, "full");
   ASSERT_EQ(linear.signals.size(), 6u);
   for (std::size_t i = 0; i < linear.signals.size(); ++i) {
-    const double pcc = pearson(linear.signals[i].samples, full.signals[i].samples);
+    const double pcc = signal::pearson(linear.signals[i].samples, full.signals[i].samples);
     std::printf("sensor %s: PCC linear vs full %.9f\n", linear.signals[i].name.c_str(), pcc);
     EXPECT_GT(pcc, 0.9999) << linear.signals[i].name;
   }
