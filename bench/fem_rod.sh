@@ -4,18 +4,20 @@
 # group velocity by the rod paper's peak-to-peak (echo) method at the far-end
 # sensor, RSS against Pochhammer-Chree over 50-150 kHz (rod Table 2).
 #
-#   bench/fem_rod.sh OUTDIR "axisymmetric:2 axisymmetric:1 axisymmetric:0.5 3d:2 3d:1" [duration_ms] [freqs]
+#   THREADS=1 bench/fem_rod.sh OUTDIR "axisymmetric:2 axisymmetric:1 axisymmetric:0.5 3d:2 3d:1" [duration_ms] [freqs]
 #
 # Writes OUTDIR/<model>-<mesh>/ (signals, reports) and appends one row per model
 # and mesh to OUTDIR/fem_rod.csv: model, mesh_mm, elements, dt_us, steps,
 # wall_s (median over the frequencies), steps_per_s, element_updates_per_s,
-# peak_rss_MiB, threads, rss_m2_s2, rms_m_s.
+# peak_rss_MiB, threads, rss_m2_s2, rms_m_s. THREADS (default 1) is mw-fem's --threads:
+# the thread policy (core/threads.hpp) takes no OMP_NUM_THREADS.
 set -euo pipefail
 out=${1:?output directory}
 cases=${2:-"axisymmetric:2 axisymmetric:1 axisymmetric:0.5 3d:2 3d:1"}
 duration=${3:-1.5}
 freqs=${4:-"50 60 70 80 90 100 110 120 130 140 150"}
 bin=${BIN:-build/bin}
+threads=${THREADS:-1}
 steel=(--E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1)
 mkdir -p "$out"
 [ -f "$out/fem_rod.csv" ] || echo "model,mesh_mm,elements,dt_us,steps,wall_s,steps_per_s,element_updates_per_s,peak_rss_MiB,threads,rss_m2_s2,rms_m_s" > "$out/fem_rod.csv"
@@ -25,7 +27,7 @@ for c in $cases; do
   runs=()
   for f in $freqs; do
     "$bin/mw-fem" rod "${steel[@]}" --length-mm 1000 --model "$model" --mesh-mm "$mesh" --frequency-kHz "$f" \
-      --alpha-damping 2000 --duration-ms "$duration" --sample-dt-us 0.2 --signals "$dir/s$f.h5" \
+      --alpha-damping 2000 --duration-ms "$duration" --sample-dt-us 0.2 --threads "$threads" --signals "$dir/s$f.h5" \
       --out "$dir/r$f.json" > /dev/null 2>&1
     runs+=(--run "$dir/s$f.h5")
   done
