@@ -1,6 +1,9 @@
 #include "mesowave/efg/beam_theory.hpp"
 
+#include <cmath>
+#include <numbers>
 #include <string>
+#include <vector>
 
 #include "mesowave/core/error.hpp"
 
@@ -42,6 +45,55 @@ CantileverSolution timoshenko_cantilever(double P_N, double L_m, double D_m, dou
   s.u_m.y() -= omega * X;
   s.stress_Pa = {-P_N * (L - X) * Y / I, 0.0, P_N / (2.0 * I) * (D * D / 4.0 - Y * Y)};
   return s;
+}
+
+CantileverErrors cantilever_errors(const CantileverBeam& beam,
+                                   const std::function<Eigen::Vector2d(const Eigen::Vector2d&)>& u_h,
+                                   const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& stress_h,
+                                   int cells_x, int cells_y, int gauss) {
+  if (cells_x < 1 || cells_y < 1 || gauss < 1 || gauss > 8)
+    throw InputError("error integration over " + std::to_string(cells_x) + " x " + std::to_string(cells_y) +
+                     " cells with " + std::to_string(gauss) + " Gauss points: counts must be >= 1 (Gauss <= 8)");
+  // Gauss-Legendre points on [-1, 1] by Newton on P_n (the initial guesses of Abramowitz & Stegun 22.16).
+  std::vector<double> xi(static_cast<std::size_t>(gauss)), wi(static_cast<std::size_t>(gauss));
+  for (int k = 0; k < gauss; ++k) {
+    double x = std::cos(std::numbers::pi * (k + 0.75) / (gauss + 0.5)), dp = 0;
+    for (int it = 0; it < 50; ++it) {
+      double p0 = 1, p1 = x;
+      for (int n = 2; n <= gauss; ++n) {
+        const double p2 = ((2 * n - 1) * x * p1 - (n - 1) * p0) / n;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = gauss * (x * p1 - p0) / (x * x - 1);
+      const double step = p1 / dp;
+      x -= step;
+      if (std::abs(step) < 1e-16) break;
+    }
+    xi[std::size_t(k)] = x;
+    wi[std::size_t(k)] = 2 / ((1 - x * x) * dp * dp);
+  }
+  const double E = beam.E_Pa, nu = beam.nu;
+  auto energy_density = [&](const Eigen::Vector3d& s) {  // s : C s, plane stress
+    return (s(0) * s(0) + s(1) * s(1) - 2 * nu * s(0) * s(1) + 2 * (1 + nu) * s(2) * s(2)) / E;
+  };
+  const double hx = beam.L_m / cells_x, hy = beam.D_m / cells_y;
+  double du = 0, u = 0, de = 0, e = 0;
+  for (int i = 0; i < cells_x; ++i)
+    for (int j = 0; j < cells_y; ++j)
+      for (int a = 0; a < gauss; ++a)
+        for (int b = 0; b < gauss; ++b) {
+          const Eigen::Vector2d x((i + 0.5 * (1 + xi[std::size_t(a)])) * hx,
+                                  -0.5 * beam.D_m + (j + 0.5 * (1 + xi[std::size_t(b)])) * hy);
+          const double w = wi[std::size_t(a)] * wi[std::size_t(b)] * 0.25 * hx * hy;
+          const CantileverSolution exact = beam.at(x);
+          du += w * (u_h(x) - exact.u_m).squaredNorm();
+          u += w * exact.u_m.squaredNorm();
+          de += w * energy_density(stress_h(x) - exact.stress_Pa);
+          e += w * energy_density(exact.stress_Pa);
+        }
+  const double tip = beam.at({beam.L_m, 0}).u_m.y();
+  return {std::sqrt(du / u), std::sqrt(de / e), u_h({beam.L_m, 0}).y() / tip - 1};
 }
 
 double three_point_bending_deflection_m(double P_N, double span_m, double depth_m, double t_m, double E_Pa,

@@ -5,6 +5,7 @@
 // mid-span deflection of the simply supported (three-point bending) beam with shear deformation,
 // against which the notched beam's initial stiffness is checked (issue 15, Must show 3).
 #include <Eigen/Core>
+#include <functional>
 
 namespace mesowave::efg {
 
@@ -40,6 +41,28 @@ struct CantileverSolution {
 CantileverSolution timoshenko_cantilever(double P_N, double L_m, double D_m, double t_m, double E_Pa, double nu,
                                          const Eigen::Vector2d& x,
                                          CantileverClamp clamp = CantileverClamp::chord_vertical);
+
+/// The cantilever as one value: the defaults are Belytschko, Lu & Gu's beam (L = 48, D = 12,
+/// t = 1, E = 3e7, nu = 0.3, P = 1000 in consistent units), which the meshless literature reports.
+struct CantileverBeam {
+  double P_N = 1000, L_m = 48, D_m = 12, t_m = 1, E_Pa = 3e7, nu = 0.3;
+  CantileverClamp clamp = CantileverClamp::chord_vertical;
+  CantileverSolution at(const Eigen::Vector2d& x) const {
+    return timoshenko_cantilever(P_N, L_m, D_m, t_m, E_Pa, nu, x, clamp);
+  }
+};
+
+/// Errors of an approximate solution of the cantilever, integrated by `gauss` x `gauss` points over
+/// cells_x x cells_y equal cells of the beam (pass the method's own cells, so that the piecewise
+/// fields of a finite element mesh are integrated exactly):
+///   displacement: ||u_h - u||_L2 / ||u||_L2;
+///   energy: sqrt(int (s_h - s) : C (s_h - s)) / sqrt(int s : C s), C the plane-stress compliance;
+///   tip: u_h,y(L, 0) / u_y(L, 0) - 1.
+struct CantileverErrors { double displacement_L2 = 0, energy = 0, tip_deflection = 0; };
+CantileverErrors cantilever_errors(const CantileverBeam& beam,
+                                   const std::function<Eigen::Vector2d(const Eigen::Vector2d&)>& u_h,
+                                   const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& stress_h,
+                                   int cells_x, int cells_y, int gauss = 3);
 
 /// Mid-span deflection of a simply supported beam (span S, rectangular section depth x thickness)
 /// under a central load P, bending plus shear (Timoshenko beam, shear coefficient kappa = 5/6, the
