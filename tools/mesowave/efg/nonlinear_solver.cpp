@@ -63,7 +63,8 @@ StepReport newton_solve(NonlinearProblem& problem, Eigen::VectorXd& v, double la
     if (!finite(dv)) return rep;
     ++rep.iterations;
     // backtracking on |r|: halve the step while the residual does not fall enough; keep the best
-    double s = 1, best_s = 1, best_norm = std::numeric_limits<double>::infinity();
+    const double s_max = std::clamp(problem.step_limit(v, dv, lambda), 1e-6, 1.0);
+    double s = s_max, best_s = s_max, best_norm = std::numeric_limits<double>::infinity();
     for (int cut = 0;; ++cut) {
       problem.evaluate(v + s * dv, lambda, r_trial, nullptr, nullptr);
       const double n = r_trial.norm();
