@@ -118,10 +118,10 @@ TEST(ThreePointBending, BadInputNamesTheValue) {
   EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: nu (0.5) must be in (-1, 0.5)");
   o = coarse("bilinear");
   o.G_f_J_m2 = 0;
-  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: G_f_J_m2 (0) must be > 0");
+  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: G_f_J_m2 (0) must be positive and finite");
   o = coarse("bilinear");
   o.f_t_Pa = -1;
-  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: f_t_Pa (-1) must be > 0");
+  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: f_t_Pa (-1) must be positive and finite");
   o = coarse("hordijk");
   EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }),
             "cohesive law (\"hordijk\") must be exponential or bilinear");

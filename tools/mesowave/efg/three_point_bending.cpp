@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <sstream>
 
+#include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
 #include "mesowave/efg/cohesive_crack.hpp"
 #include "mesowave/efg/cohesive_law.hpp"
 #include "mesowave/efg/constraints.hpp"
@@ -18,15 +19,8 @@ namespace mesowave::efg {
 
 namespace {
 
-std::string text(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-void positive(double v, const std::string& what) {
-  if (!(v > 0) || !std::isfinite(v)) throw InputError("three-point bending: " + what + " (" + text(v) + ") must be > 0");
-}
+void positive(double v, const std::string& what) { require_positive("three-point bending: " + what, v); }
+std::string text(double v) { return format_number(v); }
 
 }  // namespace
 
