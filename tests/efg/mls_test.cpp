@@ -9,8 +9,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "mesowave/core/random.hpp"
 #include "mesowave/efg/mls.hpp"
+#include "support/efg_fixtures.hpp"
 #include "support/input_error.hpp"
 
 using namespace mesowave;
@@ -21,34 +21,9 @@ namespace {
 constexpr double kLx = 0.30, kLy = 0.20;  // the body [0, 0.3] x [0, 0.2] m
 constexpr double kSpacing = 0.05;         // 7 x 5 nodes
 
-// (nx + 1) x (ny + 1) nodes on [0, lx] x [0, ly]; interior nodes moved by up to +-`jitter` spacings
-// in each direction (deterministic: Mt64Random with a fixed seed).
-std::vector<Vec2> grid_nodes(int nx, int ny, double lx, double ly, double jitter = 0, std::uint64_t seed = 7) {
-  Mt64Random random(seed);
-  std::vector<Vec2> nodes;
-  const double dx = lx / nx, dy = ly / ny;
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) {
-      Vec2 p(i * dx, j * dy);
-      if (jitter > 0 && i > 0 && i < nx && j > 0 && j < ny) p += Vec2(random.uniform(-jitter, jitter) * dx, random.uniform(-jitter, jitter) * dy);
-      nodes.push_back(p);
-    }
-  return nodes;
-}
-
-// The Gauss points (n x n Gauss-Legendre per cell) of a cx x cy background cell grid over the body.
+using test::grid_nodes;
 std::vector<Vec2> gauss_points(int cx, int cy, int n, double lx = kLx, double ly = kLy) {
-  const std::vector<double> x2 = {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)};
-  const double a = std::sqrt(3.0 / 7 - 2.0 / 7 * std::sqrt(6.0 / 5)), b = std::sqrt(3.0 / 7 + 2.0 / 7 * std::sqrt(6.0 / 5));
-  const std::vector<double> x4 = {-b, -a, a, b};
-  const auto& xi = n == 2 ? x2 : x4;
-  std::vector<Vec2> points;
-  for (int j = 0; j < cy; ++j)
-    for (int i = 0; i < cx; ++i)
-      for (const double gy : xi)
-        for (const double gx : xi)
-          points.emplace_back((i + 0.5 * (1 + gx)) * lx / cx, (j + 0.5 * (1 + gy)) * ly / cy);
-  return points;
+  return test::gauss_points(cx, cy, n, lx, ly);
 }
 
 // sum_I phi_I f(x_I), and the same with dphi/dx and dphi/dy.
