@@ -77,6 +77,11 @@ TEST(Crack, AddExtendAndVersion) {
   const auto through = cracks.add({{Vec2(2, 0), Vec2(2, 1)}, false, false});
   EXPECT_NE(test::input_error_of([&] { cracks.extend(through, Vec2(2, 2)); }).find("no tip"), std::string::npos);
   EXPECT_NE(test::input_error_of([&] { cracks.extend(9, Vec2(2, 2)); }).find("crack 9"), std::string::npos);
+  EXPECT_EQ(cracks.tip(k), Vec2(0.1, 1.5));
+  EXPECT_EQ(cracks.tip(s), Vec2(1, -1));
+  EXPECT_NEAR(cracks.distance(Vec2(0.5, 0.5)), 0.5, 1e-15);   // to the segment (0, 0)-(0, 1)
+  EXPECT_NEAR(cracks.distance(Vec2(1.3, -1.4)), 0.5, 1e-15);  // to the end point (1, -1)
+  EXPECT_EQ(CrackSet().distance(Vec2(0, 0)), kInf);
   EXPECT_EQ(parse_crack_weight_method("diffraction"), CrackWeightMethod::diffraction);
   EXPECT_NE(test::input_error_of([] { parse_crack_weight_method("opaque"); }).find("'opaque'"), std::string::npos);
 }
@@ -268,6 +273,19 @@ TEST(Crack, ShapeFunctionDerivativesNearTheTipMatchCentralDifferences) {
       EXPECT_GT(bent, 0);  // some weights are bent round the tip at this point
     }
   }
+}
+
+TEST(Crack, TooFewVisibleNodesBesideANotchNamesThePoint) {
+  // Supports of 1.2 spacings: beside the notch face, visibility leaves fewer than 3 nodes.
+  CrackSet cracks;
+  cracks.add(notch());
+  MlsOptions options;
+  const MlsApproximation mls(kNodes, support_radii_by_spacing(kNodes, kSpacing, 1.2), options, &cracks);
+  const std::string message = test::input_error_of([&] { mls.evaluate(Vec2(0.127, 0.03), "Gauss point 2 of cell 9"); });
+  EXPECT_NE(message.find("x = (0.127, 0.03) m (Gauss point 2 of cell 9)"), std::string::npos) << message;
+  EXPECT_NE(message.find("nodes reach the point, the linear basis needs at least 3"), std::string::npos) << message;
+  // The same point on the same nodes without the notch is fine.
+  EXPECT_NO_THROW(MlsApproximation(kNodes, support_radii_by_spacing(kNodes, kSpacing, 1.2)).evaluate(Vec2(0.127, 0.03)));
 }
 
 TEST(Crack, AGrownCrackTakesEffectAtOnce) {

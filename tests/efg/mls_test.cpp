@@ -147,6 +147,31 @@ TEST(Mls, QuadraticBasisReproducesQuadraticFields) {
   EXPECT_GT(std::abs(apply(linear.evaluate(x), nodes, kQuadraticFields[0].f).value - x.x() * x.x()), 1e-5);
 }
 
+TEST(Mls, ShiftedScaledBasisMakesTheResultIndependentOfTheOrigin) {
+  // The same nodes 10 km from the origin: phi the same to rounding of the coordinates (1e4 m * eps /
+  // h ~ 1e-11) and the condition number the same - an unshifted basis (1, x, y) would have A's
+  // entries spread over 8 orders of magnitude there and its condition number above 1e16.
+  const auto nodes = grid_nodes(6, 4, kLx, kLy, 0.3);
+  const Vec2 far(1e4, -5e3);
+  std::vector<Vec2> moved;
+  for (const auto& p : nodes) moved.push_back(p + far);
+  for (const auto basis : {Basis::linear, Basis::quadratic}) {
+    MlsOptions options;
+    options.basis = basis;
+    const MlsApproximation here(nodes, support_radii_by_spacing(nodes, kSpacing, 3.2), options);
+    const MlsApproximation there(moved, support_radii_by_spacing(moved, kSpacing, 3.2), options);
+    const Vec2 x(0.11, 0.07);
+    const auto a = here.evaluate(x), b = there.evaluate(x + far);
+    ASSERT_EQ(a.nodes, b.nodes);
+    for (std::size_t k = 0; k < a.nodes.size(); ++k) {
+      EXPECT_NEAR(a.phi[k], b.phi[k], 1e-9);
+      EXPECT_NEAR(a.dphi_dx[k], b.dphi_dx[k], 1e-7);
+    }
+    EXPECT_NEAR(a.condition_number, b.condition_number, 1e-6 * a.condition_number);
+    EXPECT_LT(a.condition_number, 1e4);
+  }
+}
+
 TEST(Mls, DerivativesMatchCentralDifferences) {
   // delta = 1e-6 m against h = 0.125 m: truncation ~ delta^2 phi''' / 6 ~ 1e-12 * 10^3, rounding
   // ~ eps phi / delta ~ 1e-10; 1e-7 on derivatives of order 10 per metre is far above both and far
@@ -185,7 +210,7 @@ TEST(Mls, SupportRadiiByCountAreTheGridsNeighbourDistances) {
   EXPECT_NEAR(four[corner], 2 * kSpacing, 1e-15);
   EXPECT_NE(test::input_error_of([&] { support_radii_by_count(nodes, 0); }).find("count 0"), std::string::npos);
   EXPECT_NE(test::input_error_of([&] { support_radii_by_count(nodes, 35); }).find("count 35"), std::string::npos);
-  EXPECT_NE(test::input_error_of([&] { support_radii_by_spacing(nodes, 0.0, 2); }).find("spacing 0"), std::string::npos);
+  EXPECT_NE(test::input_error_of([&] { support_radii_by_spacing(nodes, 0.0, 2); }).find("spacing (0 m)"), std::string::npos);
 }
 
 TEST(Mls, TooFewNodesNamesThePoint) {

@@ -32,7 +32,7 @@ TEST(NodeGrid, WithinIsTheBruteForceAnswerAscending) {
 }
 
 TEST(NodeGrid, BadInputIsNamed) {
-  EXPECT_NE(test::input_error_of([] { NodeGrid({Vec2(0, 0)}, 0.0); }).find("cell size 0"), std::string::npos);
+  EXPECT_NE(test::input_error_of([] { NodeGrid({Vec2(0, 0)}, 0.0); }).find("cell size (0 m)"), std::string::npos);
   EXPECT_NE(test::input_error_of([] { NodeGrid({Vec2(0, 0), Vec2(NAN, 1)}, 1.0); }).find("node 1"), std::string::npos);
   const NodeGrid empty({}, 1.0);
   EXPECT_TRUE(empty.within(Vec2(0, 0), 1).empty());
