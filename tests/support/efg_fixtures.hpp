@@ -1,13 +1,17 @@
 #pragma once
 // Node sets and Gauss points for the EFG approximation tests (tests/efg/): a regular grid of nodes,
 // optionally perturbed by a deterministic generator, and the Gauss points of a background cell
-// grid, written out here so the MLS tests do not depend on the discretisation they serve.
+// grid, written out here so the MLS tests do not depend on the discretisation they serve; and the
+// derivative check against central differences.
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "mesowave/core/random.hpp"
 #include "mesowave/efg/geometry.hpp"
+#include "mesowave/efg/mls.hpp"
 
 namespace mesowave::test {
 
@@ -40,6 +44,26 @@ inline std::vector<efg::Vec2> gauss_points(int cx, int cy, int n, double lx, dou
       for (const double gy : xi)
         for (const double gx : xi) points.emplace_back((i + 0.5 * (1 + gx)) * lx / cx, (j + 0.5 * (1 + gy)) * ly / cy);
   return points;
+}
+
+/// The MLS derivatives at x against central differences of phi with step `delta`.
+struct DerivativeCheck {
+  double error = std::numeric_limits<double>::infinity();  ///< largest |dphi - difference|; inf: node sets differ
+  double largest = 0;                                      ///< largest |dphi| (the check is not between zeros)
+};
+inline DerivativeCheck check_derivatives(const efg::MlsApproximation& mls, const efg::Vec2& x, double delta) {
+  const auto sf = mls.evaluate(x);
+  const auto px = mls.evaluate(x + efg::Vec2(delta, 0)), mx = mls.evaluate(x - efg::Vec2(delta, 0));
+  const auto py = mls.evaluate(x + efg::Vec2(0, delta)), my = mls.evaluate(x - efg::Vec2(0, delta));
+  DerivativeCheck check;
+  if (px.nodes != sf.nodes || mx.nodes != sf.nodes || py.nodes != sf.nodes || my.nodes != sf.nodes) return check;
+  check.error = 0;
+  for (std::size_t k = 0; k < sf.nodes.size(); ++k) {
+    check.error = std::max(check.error, std::abs(sf.dphi_dx[k] - (px.phi[k] - mx.phi[k]) / (2 * delta)));
+    check.error = std::max(check.error, std::abs(sf.dphi_dy[k] - (py.phi[k] - my.phi[k]) / (2 * delta)));
+    check.largest = std::max({check.largest, std::abs(sf.dphi_dx[k]), std::abs(sf.dphi_dy[k])});
+  }
+  return check;
 }
 
 }  // namespace mesowave::test
