@@ -1,0 +1,109 @@
+#include "mesowave/efg/beam_theory.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "mesowave/core/error.hpp"
+
+namespace mesowave::efg {
+
+namespace {
+
+void require_positive(double value, const char* what) {
+  if (!(value > 0)) throw InputError(std::string(what) + " = " + std::to_string(value) + " must be > 0");
+}
+
+void require_beam(double L_m, double D_m, double t_m, double E_Pa, double nu) {
+  require_positive(L_m, "beam length");
+  require_positive(D_m, "beam depth");
+  require_positive(t_m, "beam thickness");
+  require_positive(E_Pa, "Young's modulus");
+  // Up to 1, not 0.5: the plane-strain equivalent nu / (1 - nu) of a material with nu < 0.5.
+  if (!(nu > -1 && nu < 1))
+    throw InputError("Poisson's ratio nu = " + std::to_string(nu) + " must lie in (-1, 1)");
+}
+
+}  // namespace
+
+CantileverSolution timoshenko_cantilever(double P_N, double L_m, double D_m, double t_m, double E_Pa, double nu,
+                                         const Eigen::Vector2d& x, CantileverClamp clamp) {
+  require_beam(L_m, D_m, t_m, E_Pa, nu);
+  const double L = L_m, D = D_m, X = x.x(), Y = x.y();
+  const double I = t_m * D * D * D / 12.0;
+  const double c = P_N / (6.0 * E_Pa * I);
+  CantileverSolution s;
+  s.u_m.x() = -c * Y * ((6.0 * L - 3.0 * X) * X + (2.0 + nu) * (Y * Y - D * D / 4.0));
+  s.u_m.y() = c * (3.0 * nu * Y * Y * (L - X) + (4.0 + 5.0 * nu) * D * D * X / 4.0 + (3.0 * L - X) * X * X);
+  // A small rigid rotation omega (u_x += omega y, u_y -= omega x) moves the chord_vertical field to
+  // the book's conditions: dv/dx(0,0) = c (4 + 5 nu) D^2 / 4 and du/dy(0,0) = c (2 + nu) D^2 / 4.
+  double omega = 0;
+  if (clamp == CantileverClamp::axis_horizontal) omega = c * (4.0 + 5.0 * nu) * D * D / 4.0;
+  if (clamp == CantileverClamp::section_vertical) omega = -c * (2.0 + nu) * D * D / 4.0;
+  s.u_m.x() += omega * Y;
+  s.u_m.y() -= omega * X;
+  s.stress_Pa = {-P_N * (L - X) * Y / I, 0.0, P_N / (2.0 * I) * (D * D / 4.0 - Y * Y)};
+  return s;
+}
+
+CantileverErrors cantilever_errors(const CantileverBeam& beam,
+                                   const std::function<Eigen::Vector2d(const Eigen::Vector2d&)>& u_h,
+                                   const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& stress_h,
+                                   int cells_x, int cells_y, int gauss) {
+  if (cells_x < 1 || cells_y < 1 || gauss < 1 || gauss > 8)
+    throw InputError("error integration over " + std::to_string(cells_x) + " x " + std::to_string(cells_y) +
+                     " cells with " + std::to_string(gauss) + " Gauss points: counts must be >= 1 (Gauss <= 8)");
+  // Gauss-Legendre points on [-1, 1] by Newton on P_n (the initial guesses of Abramowitz & Stegun 22.16).
+  std::vector<double> xi(static_cast<std::size_t>(gauss)), wi(static_cast<std::size_t>(gauss));
+  for (int k = 0; k < gauss; ++k) {
+    double x = std::cos(std::numbers::pi * (k + 0.75) / (gauss + 0.5)), dp = 0;
+    for (int it = 0; it < 50; ++it) {
+      double p0 = 1, p1 = x;
+      for (int n = 2; n <= gauss; ++n) {
+        const double p2 = ((2 * n - 1) * x * p1 - (n - 1) * p0) / n;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = gauss * (x * p1 - p0) / (x * x - 1);
+      const double step = p1 / dp;
+      x -= step;
+      if (std::abs(step) < 1e-16) break;
+    }
+    xi[std::size_t(k)] = x;
+    wi[std::size_t(k)] = 2 / ((1 - x * x) * dp * dp);
+  }
+  const double E = beam.E_Pa, nu = beam.nu;
+  auto energy_density = [&](const Eigen::Vector3d& s) {  // s : C s, plane stress
+    return (s(0) * s(0) + s(1) * s(1) - 2 * nu * s(0) * s(1) + 2 * (1 + nu) * s(2) * s(2)) / E;
+  };
+  const double hx = beam.L_m / cells_x, hy = beam.D_m / cells_y;
+  double du = 0, u = 0, de = 0, e = 0;
+  for (int i = 0; i < cells_x; ++i)
+    for (int j = 0; j < cells_y; ++j)
+      for (int a = 0; a < gauss; ++a)
+        for (int b = 0; b < gauss; ++b) {
+          const Eigen::Vector2d x((i + 0.5 * (1 + xi[std::size_t(a)])) * hx,
+                                  -0.5 * beam.D_m + (j + 0.5 * (1 + xi[std::size_t(b)])) * hy);
+          const double w = wi[std::size_t(a)] * wi[std::size_t(b)] * 0.25 * hx * hy;
+          const CantileverSolution exact = beam.at(x);
+          du += w * (u_h(x) - exact.u_m).squaredNorm();
+          u += w * exact.u_m.squaredNorm();
+          de += w * energy_density(stress_h(x) - exact.stress_Pa);
+          e += w * energy_density(exact.stress_Pa);
+        }
+  const double tip = beam.at({beam.L_m, 0}).u_m.y();
+  return {std::sqrt(du / u), std::sqrt(de / e), u_h({beam.L_m, 0}).y() / tip - 1};
+}
+
+double three_point_bending_deflection_m(double P_N, double span_m, double depth_m, double t_m, double E_Pa,
+                                        double nu) {
+  require_beam(span_m, depth_m, t_m, E_Pa, nu);
+  constexpr double kappa = 5.0 / 6.0;
+  const double I = t_m * depth_m * depth_m * depth_m / 12.0;
+  const double A = t_m * depth_m;
+  const double G = E_Pa / (2.0 * (1.0 + nu));
+  return P_N * span_m * span_m * span_m / (48.0 * E_Pa * I) + P_N * span_m / (4.0 * kappa * G * A);
+}
+
+}  // namespace mesowave::efg
