@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
 #include "mesowave/efg/constraints.hpp"
 #include "mesowave/efg/discretisation.hpp"
 #include "mesowave/efg/elastic_model.hpp"
@@ -173,6 +175,59 @@ nlohmann::ordered_json to_json(const CantileverRun& r) {
   j["memory_estimate_MiB"] = r.memory_estimate_MiB;
   j["solver"] = r.solver;
   return j;
+}
+
+CantileverStudy run_cantilever_study(const CantileverBeam& beam, const CantileverOptions& options, bool efg, bool fem,
+                                     int refinements) {
+  if (refinements < 0 || refinements > 6)
+    throw InputError("refinements = " + std::to_string(refinements) + " must lie in [0, 6] (each one quadruples the nodes)");
+  if (!efg && !fem) throw InputError("no method chosen: EFG, FEM or both");
+  CantileverStudy study;
+  study.summary["beam"] = to_json(beam);
+  nlohmann::ordered_json opt;
+  opt["cells_x"] = options.cells_x;
+  opt["cells_y"] = options.cells_y;
+  opt["gauss"] = options.gauss;
+  opt["basis"] = std::string(to_string(options.mls.basis));
+  opt["weight"] = std::string(to_string(options.mls.weight));
+  if (options.support_count > 0) {
+    opt["support_count"] = options.support_count;
+    opt["support_factor"] = options.support_factor;
+  } else {
+    opt["support_scale"] = options.support_scale;
+  }
+  opt["error_gauss"] = options.error_gauss;
+  study.summary["options"] = opt;
+  study.table_header = {"method", "cells_x", "cells_y", "nodes", "gauss_points", "spacing_m", "displacement_error_L2",
+                        "energy_error", "tip_deflection_error", "wall_s", "memory_estimate_MiB"};
+  nlohmann::ordered_json runs = nlohmann::ordered_json::array(), orders = nlohmann::ordered_json::object();
+  for (int m = 0; m < 2; ++m) {
+    if (!(m == 0 ? efg : fem)) continue;
+    std::vector<CantileverRun> these;
+    for (int k = 0; k <= refinements; ++k) {
+      CantileverOptions o = options;
+      o.cells_x <<= k;
+      o.cells_y <<= k;
+      these.push_back(m == 0 ? run_efg_cantilever(beam, o) : run_fem_cantilever(beam, o));
+      const CantileverRun& r = these.back();
+      runs.push_back(to_json(r));
+      study.table_rows.push_back({r.method, std::to_string(o.cells_x), std::to_string(o.cells_y), std::to_string(r.nodes),
+                                  std::to_string(r.gauss_points), format_number(r.spacing_m),
+                                  format_number(r.errors.displacement_L2), format_number(r.errors.energy),
+                                  format_number(r.errors.tip_deflection), format_number(r.wall_s),
+                                  format_number(r.memory_estimate_MiB)});
+    }
+    nlohmann::ordered_json u = nlohmann::ordered_json::array(), e = nlohmann::ordered_json::array();
+    for (std::size_t k = 1; k < these.size(); ++k) {
+      u.push_back(std::log2(these[k - 1].errors.displacement_L2 / these[k].errors.displacement_L2));
+      e.push_back(std::log2(these[k - 1].errors.energy / these[k].errors.energy));
+    }
+    orders[these.front().method] = {{"displacement_L2", u}, {"energy", e}};
+    study.runs.insert(study.runs.end(), these.begin(), these.end());
+  }
+  study.summary["runs"] = runs;
+  study.summary["orders"] = orders;
+  return study;
 }
 
 }  // namespace mesowave::efg

@@ -8,6 +8,7 @@
 // cells (efg::cantilever_errors), so the two are compared on one measure.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "mesowave/efg/beam_theory.hpp"
 #include "mesowave/efg/mls.hpp"
@@ -49,5 +50,17 @@ CantileverRun run_fem_cantilever(const CantileverBeam& beam, const CantileverOpt
 
 nlohmann::ordered_json to_json(const CantileverBeam& beam);
 nlohmann::ordered_json to_json(const CantileverRun& run);
+
+/// The convergence study mw-efg cantilever runs: `refinements` + 1 runs of each chosen method, the
+/// cells doubled in each direction from one to the next (the spacing halved), and the observed
+/// orders log2(e_coarse / e_fine) of each error between neighbours.
+struct CantileverStudy {
+  std::vector<CantileverRun> runs;     ///< by method, then coarse to fine
+  nlohmann::ordered_json summary;      ///< beam, options, runs, orders
+  std::vector<std::string> table_header;
+  std::vector<std::vector<std::string>> table_rows;  ///< one per run
+};
+CantileverStudy run_cantilever_study(const CantileverBeam& beam, const CantileverOptions& options, bool efg, bool fem,
+                                     int refinements);
 
 }  // namespace mesowave::efg
