@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
 namespace mesowave::efg {
@@ -17,18 +18,24 @@ double NonlinearProblem::residual_scale(const Eigen::VectorXd& v, double lambda)
 
 namespace {
 
-/// LU factorisation of the tangent; false when it is singular.
+/// The tangent factorised: sparse LDL^T first (the cohesive tangent is symmetric; LDL^T without pivoting also
+/// takes the indefinite matrices of a softening crack as long as no pivot vanishes), LU when that fails.
 class Factorised {
 public:
   bool factor(const Eigen::SparseMatrix<double>& K) {
+    ldlt_.compute(K);
+    use_lu_ = ldlt_.info() != Eigen::Success || !(ldlt_.vectorD().array().abs() > 0).all();
+    if (!use_lu_) return true;
     lu_.analyzePattern(K);
     lu_.factorize(K);
     return lu_.info() == Eigen::Success;
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) { return lu_.solve(b); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) { return use_lu_ ? Eigen::VectorXd(lu_.solve(b)) : Eigen::VectorXd(ldlt_.solve(b)); }
 
 private:
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
+  bool use_lu_ = false;
 };
 
 bool finite(const Eigen::VectorXd& x) { return x.allFinite(); }
@@ -120,9 +127,10 @@ bool control_step(NonlinearProblem& problem, Eigen::VectorXd& v, double lambda_f
 }  // namespace
 
 std::vector<StepReport> solve_control_path(NonlinearProblem& problem, Eigen::VectorXd& v, const std::vector<double>& lambdas,
-                                           const ControlOptions& o, const AfterConverged& after, const OnPoint& on_point) {
+                                           const ControlOptions& o, const AfterConverged& after, const OnPoint& on_point,
+                                           double lambda_start) {
   std::vector<StepReport> reports;
-  double previous = 0;
+  double previous = lambda_start;
   for (double lambda : lambdas) {
     if (!control_step(problem, v, previous, lambda, 0, o, after, on_point, reports)) break;
     previous = lambda;

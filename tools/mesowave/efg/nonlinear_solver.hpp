@@ -10,8 +10,9 @@
 //    which treats lambda as an unknown under |Delta v| = Delta l, so it follows
 //    a curve that turns back in lambda (snap-back) where control of lambda
 //    has no solution or jumps.
-// Linear systems: Eigen's SparseLU (the cohesive tangent is indefinite once
-// segments soften, which rules out Cholesky). Each step reports its
+// Linear systems: Eigen's SimplicialLDLT (the tangent is symmetric; LDL^T
+// without pivoting also factorises the indefinite tangent of a softening
+// crack unless a pivot vanishes), SparseLU when it fails. Each step reports its
 // iterations and the residual norm of each iteration.
 #include <functional>
 #include <string>
@@ -74,9 +75,10 @@ struct ControlOptions {
 /// Load / displacement control: lambda runs through `lambdas` (each from the previous solution, starting at v);
 /// stops at the first step that fails even when bisected. Returns the reports of the accepted steps (the
 /// bisected ones included) and the failed one last, if any.
+/// `lambda_start`: the lambda of the starting v (the first step's bisection runs from it).
 std::vector<StepReport> solve_control_path(NonlinearProblem& problem, Eigen::VectorXd& v, const std::vector<double>& lambdas,
                                            const ControlOptions& options = {}, const AfterConverged& after = {},
-                                           const OnPoint& on_point = {});
+                                           const OnPoint& on_point = {}, double lambda_start = 0);
 
 /// The arc-length constraint: Crisfield's cylindrical |Delta v| = Delta l, or the indirect displacement control
 /// of de Borst (1987) c . Delta v = Delta l, where c picks a quantity that grows monotonically along the path (a
