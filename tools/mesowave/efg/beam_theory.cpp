@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,35 @@ double three_point_bending_deflection_m(double P_N, double span_m, double depth_
   const double A = t_m * depth_m;
   const double G = E_Pa / (2.0 * (1.0 + nu));
   return P_N * span_m * span_m * span_m / (48.0 * E_Pa * I) + P_N * span_m / (4.0 * kappa * G * A);
+}
+
+namespace {
+
+double notch_ratio(double span_m, double depth_m, double notch_m, double t_m) {
+  require_positive("span", span_m, "m");
+  require_positive("beam depth", depth_m, "m");
+  require_positive("beam thickness", t_m, "m");
+  const double x = notch_m / depth_m;
+  if (!(x > 0 && x < 1))
+    throw InputError("notch depth " + format_number(notch_m) + " m must lie inside the beam depth " +
+                     format_number(depth_m) + " m");
+  return x;
+}
+
+}  // namespace
+
+double three_point_bending_notch_deflection_m(double P_N, double span_m, double depth_m, double notch_m, double t_m,
+                                              double E_Pa) {
+  const double x = notch_ratio(span_m, depth_m, notch_m, t_m);
+  require_positive("Young's modulus", E_Pa, "Pa");
+  const double V2 = (x / (1 - x)) * (x / (1 - x)) * (5.58 - 19.57 * x + 36.82 * x * x - 34.94 * x * x * x + 12.77 * x * x * x * x);
+  return 3 * P_N * span_m * span_m / (2 * t_m * depth_m * depth_m * E_Pa) * V2;
+}
+
+double three_point_bending_stress_intensity(double P_N, double span_m, double depth_m, double notch_m, double t_m) {
+  const double x = notch_ratio(span_m, depth_m, notch_m, t_m);
+  const double F = 1.090 - 1.735 * x + 8.20 * x * x - 14.18 * x * x * x + 14.57 * x * x * x * x;
+  return 3 * P_N * span_m / (2 * t_m * depth_m * depth_m) * std::sqrt(std::numbers::pi * notch_m) * F;
 }
 
 }  // namespace mesowave::efg
