@@ -1,13 +1,17 @@
 // The Koermeling-Reinhardt beam on a coarse grid (10 mm nodes): the elastic stiffness against beam
-// theory with shear and the Q4 FEM of the same notched beam, both laws' load-deflection curves
-// (the exponential law carrying more load just after the peak, the paper's finding), the work of
-// fracture against G_f x ligament area, and the bad input.
+// theory with shear (an upper bound: the notch softens the beam) and the Q4 FEM of the same notched
+// beam, both laws' load-deflection curves - the exponential law carrying more load after the peak
+// (the paper's finding), the energy balance work = dissipated + stored, the crack path - and the
+// bad input. Finer grids and the complete curves: bench/efg_beam_bench.cpp.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "mesowave/efg/beam_theory.hpp"
+#include "mesowave/efg/material.hpp"
 #include "mesowave/efg/three_point_bending.hpp"
+#include "mesowave/fem/plane_static.hpp"
 #include "support/input_error.hpp"
 
 namespace mesowave::efg {
@@ -17,20 +21,110 @@ ThreePointBendingOptions coarse(const std::string& law) {
   ThreePointBendingOptions o;
   o.law = law;
   o.spacing_m = 0.01;
-  o.max_deflection_m = 0.8e-3;
-  o.steps = 40;
+  o.max_deflection_m = 0.6e-3;
+  o.steps = 30;
   return o;
 }
 
-TEST(ThreePointBending, CoarseRunPrints) {
-  for (const char* law : {"exponential", "bilinear"}) {
-    const auto r = run_three_point_bending(coarse(law));
-    std::printf("%s: nodes %zu gp %zu peak %g N at %g mm, work %g N mm, dissipated %g, k_el %g N/mm, completed %d (%s), it %d re %d wall %g\n",
-                law, r.nodes, r.gauss_points, r.peak_load_N, r.deflection_at_peak_m * 1e3, r.work_of_fracture_J * 1e3,
-                r.dissipated_J * 1e3, r.elastic_stiffness_N_per_m * 1e-3, r.completed, r.stop_reason.c_str(), r.newton_iterations,
-                r.re_solves, r.wall_s);
-    for (const auto& p : r.curve) std::printf("  %g %g %d %g\n", p.deflection_m * 1e3, p.load_N, p.iterations, p.crack_tip_y_m * 1e3);
+/// The Q4 FEM's stiffness of the same notched beam (n x 2n/9 elements), loaded at the same two top points.
+double fem_stiffness_N_per_m(const ThreePointBendingOptions& o, int n) {
+  fem::PlaneStaticProblem p;
+  p.mesh = fem::structured_plane_mesh({0, 0, o.span_m, o.depth_m, n, 2 * n / 9, 0.5 * o.span_m, o.notch_m});
+  p.D = ElasticMaterial2D{o.E_Pa, o.nu, o.thickness_m, 0, PlaneState::plane_stress}.D();
+  p.thickness_m = o.thickness_m;
+  const double mid = 0.5 * o.span_m, half = 0.5 * o.load_width_m;
+  p.constraints = {{{0, 0}, 1, 0, "left u_y"},
+                   {{0, 0}, 0, 0, "left u_x"},
+                   {{o.span_m, 0}, 1, 0, "right u_y"},
+                   {{mid - half, o.depth_m}, 1, -1e-3, "load left"},
+                   {{mid + half, o.depth_m}, 1, -1e-3, "load right"}};
+  const auto s = fem::solve_plane_static(p);
+  return -(s.reactions_N[3] + s.reactions_N[4]) / 1e-3;
+}
+
+double efg_stiffness_N_per_m(double spacing_m) {
+  auto o = coarse("exponential");
+  o.spacing_m = spacing_m;
+  o.max_deflection_m = 1e-9;  // one step, far below cracking: the elastic solve is what is wanted
+  o.steps = 1;
+  return run_three_point_bending(o).elastic_stiffness_N_per_m;
+}
+
+TEST(ThreePointBending, ElasticStiffnessAgainstBeamTheoryAndFem) {
+  const auto o = coarse("exponential");
+  const double k10 = efg_stiffness_N_per_m(0.01), k5 = efg_stiffness_N_per_m(0.005);
+  // Timoshenko beam with shear of the unnotched beam: far stiffer than the notched one (an upper bound)
+  const double k_beam = 1.0 / three_point_bending_deflection_m(1.0, o.span_m, o.depth_m, o.thickness_m, o.E_Pa, o.nu);
+  // the beam only the ligament deep everywhere: far softer (a lower bound)
+  const double k_ligament =
+      1.0 / three_point_bending_deflection_m(1.0, o.span_m, o.depth_m - o.notch_m, o.thickness_m, o.E_Pa, o.nu);
+  for (double k : {k10, k5}) {
+    EXPECT_LT(k, k_beam);
+    EXPECT_GT(k, k_ligament);
   }
+  // the Q4 FEM: its stiffness falls as the mesh refines (the point supports and load points are singular), the
+  // EFG's rises (the MLS field near the notch tip gains freedom): they close in on each other
+  const double f90 = fem_stiffness_N_per_m(o, 90), f180 = fem_stiffness_N_per_m(o, 180);
+  EXPECT_LT(f180, f90);
+  EXPECT_GT(k5, k10);
+  EXPECT_LT(std::abs(k5 - f180), std::abs(k10 - f90));
+  EXPECT_NEAR(k5 / f180, 1, 0.08);
+  RecordProperty("k_efg_10mm_N_per_mm", std::to_string(k10 * 1e-3));
+  RecordProperty("k_efg_5mm_N_per_mm", std::to_string(k5 * 1e-3));
+  RecordProperty("k_fem_5mm_N_per_mm", std::to_string(f90 * 1e-3));
+  RecordProperty("k_fem_2.5mm_N_per_mm", std::to_string(f180 * 1e-3));
+  RecordProperty("k_beam_N_per_mm", std::to_string(k_beam * 1e-3));
+}
+
+TEST(ThreePointBending, BothLawsCurvesEnergyAndCrackPath) {
+  const auto exp = run_three_point_bending(coarse("exponential"));
+  const auto bil = run_three_point_bending(coarse("bilinear"));
+  for (const auto* r : {&exp, &bil}) {
+    ASSERT_TRUE(r->completed) << r->stop_reason;
+    std::printf("%s: peak %g N at %g mm, work %g, dissipated %g, stored %g N mm\n", r == &exp ? "exponential" : "bilinear",
+                r->peak_load_N, r->deflection_at_peak_m * 1e3, r->work_of_fracture_J * 1e3, r->dissipated_J * 1e3, r->stored_J * 1e3);
+    ASSERT_GE(r->curve.size(), 31u);  // 30 steps and a point before each crack extension
+
+    // pre-peak: the first step is elastic (the notch-tip segment is still tied by its initial secant)
+    EXPECT_NEAR(r->curve[1].load_N / (r->curve[1].deflection_m * r->elastic_stiffness_N_per_m), 1, 0.02);
+    // softening: the load at the end is a fraction of the peak
+    EXPECT_LT(r->curve.back().load_N, 0.3 * r->peak_load_N);
+    // energy balance: the work done (trapezoids) = dissipated in the cohesive zone + elastic energy left
+    EXPECT_NEAR(r->work_of_fracture_J / (r->dissipated_J + r->stored_J), 1, 0.03);
+    // the crack: vertical at mid-span from the notch tip up to the top face's compression zone
+    ASSERT_GE(r->crack_path.size(), 3u);
+    for (const auto& p : r->crack_path) EXPECT_NEAR(p.x(), 0.225, 1e-12);
+    EXPECT_NEAR(r->crack_path[1].y(), 0.05, 1e-12);
+    EXPECT_NEAR(r->crack_path.back().y(), 0.095, 1e-12);  // half a segment below the top face
+  }
+  // the paper's finding: after the peak the exponential law carries more load than the bilinear one
+  const double after = 2.0 * std::max(exp.deflection_at_peak_m, bil.deflection_at_peak_m);
+  auto load_at = [](const ThreePointBendingResult& r, double d) {
+    for (std::size_t i = r.curve.size(); i-- > 1;)  // the last point at that deflection (after any extension)
+      if (r.curve[i].deflection_m <= d + 1e-12) return r.curve[i].load_N;
+    return r.curve.back().load_N;
+  };
+  EXPECT_GT(load_at(exp, after), 1.2 * load_at(bil, after));
+  EXPECT_GT(exp.peak_load_N, bil.peak_load_N);
+}
+
+TEST(ThreePointBending, BadInputNamesTheValue) {
+  auto o = coarse("bilinear");
+  o.notch_m = 0.1;
+  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }),
+            "three-point bending: notch_m (0.1) must be less than the depth (0.1)");
+  o = coarse("bilinear");
+  o.nu = 0.5;
+  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: nu (0.5) must be in (-1, 0.5)");
+  o = coarse("bilinear");
+  o.G_f_J_m2 = 0;
+  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: G_f_J_m2 (0) must be > 0");
+  o = coarse("bilinear");
+  o.f_t_Pa = -1;
+  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: f_t_Pa (-1) must be > 0");
+  o = coarse("hordijk");
+  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }),
+            "cohesive law (\"hordijk\") must be exponential or bilinear");
 }
 
 }  // namespace

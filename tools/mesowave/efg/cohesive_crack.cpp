@@ -112,6 +112,17 @@ double CohesiveInterface::dissipated_energy_J() const {
   return total;
 }
 
+double CohesiveInterface::stored_energy_J(const Eigen::VectorXd& u) const {
+  double total = 0;
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    const double w = opening_m(k, u);
+    if (w > points_[k].w_hist_m) continue;  // only committed states are asked for
+    total += 0.5 * cohesive_response(*law_, w, points_[k].w_hist_m, w_initial_).traction_Pa * w * thickness_ *
+             points_[k].length_weight_m;
+  }
+  return total;
+}
+
 // ---- the problem ----
 
 CohesiveCrackProblem::CohesiveCrackProblem(ElasticModel& model, const ConstraintSet& constraints, CohesiveInterface& interface)
@@ -125,6 +136,10 @@ void CohesiveCrackProblem::update() {
   interface_->update_shape_functions();
   K_ = model_->stiffness();
   K_reduced_ = constraints_->reduce(K_);
+}
+
+double CohesiveCrackProblem::stored_energy_J(const Eigen::VectorXd& u) const {
+  return 0.5 * u.dot(K_ * u) + interface_->stored_energy_J(u);
 }
 
 Eigen::VectorXd CohesiveCrackProblem::internal_force(const Eigen::VectorXd& u) const {

@@ -62,6 +62,9 @@ public:
   /// Energy dissipated so far [J]: sum over points of the area under the envelope up to w_hist, minus the
   /// elastic part still stored on the secant, times t w (quadrature on the law).
   double dissipated_energy_J() const;
+  /// Energy stored in the faces' secants and penalties at u [J]: sum 1/2 sigma w t w (both branches are linear
+  /// through the origin).
+  double stored_energy_J(const Eigen::VectorXd& u) const;
 
   const std::vector<CohesivePoint>& points() const { return points_; }
   const std::vector<Segment>& segments() const { return segments_; }
@@ -92,6 +95,8 @@ public:
   void update();
   /// Full internal force f_int(u) = K u + f_c(u) (its reactions are the constraint forces).
   Eigen::VectorXd internal_force(const Eigen::VectorXd& u) const;
+  /// Elastic energy at u [J]: 1/2 u^T K u in the continuum plus the faces' (stored_energy_J).
+  double stored_energy_J(const Eigen::VectorXd& u) const;
 
 private:
   ElasticModel* model_;

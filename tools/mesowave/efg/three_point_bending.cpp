@@ -46,6 +46,8 @@ void ThreePointBendingOptions::validate() const {
     throw InputError("three-point bending: spacing_m (" + text(spacing_m) + ") must be at most half the ligament (" +
                      text(0.5 * (depth_m - notch_m)) + ")");
   positive(max_deflection_m, "max_deflection_m");
+  if (!(load_width_m > 0 && load_width_m < 0.5 * span_m))
+    throw InputError("three-point bending: load_width_m (" + text(load_width_m) + ") must be in (0, span / 2)");
   if (steps < 1) throw InputError("three-point bending: steps (" + std::to_string(steps) + ") must be >= 1");
 }
 
@@ -75,7 +77,7 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
   ElasticMaterial2D material{o.E_Pa, o.nu, o.thickness_m, 0, PlaneState::plane_stress};
   ElasticModel model(disc, material, mls);
 
-  const double half_plate = 0.5 * (o.span_m / nx);  // the load points: the nodes' columns either side of mid-span
+  const double half_plate = 0.5 * o.load_width_m;  // the load points either side of mid-span
   std::vector<PointConstraint> bc = {
       {Vec2(0, 0), 1, 0.0, "left support u_y"},
       {Vec2(0, 0), 0, 0.0, "left support u_x"},
@@ -115,8 +117,13 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
     auto strain_at = [&](const Vec2& x) { return model.strain(x, u); };
     auto next = grown_tip(tip, Vec2::UnitY(), o.f_t_Pa, o.E_Pa, growth, strain_at, inside);
     if (!next) return false;
-    // the last segment runs to the top face (closer than half a segment: no sliver segment)
-    if (next->y() > o.depth_m - 0.5 * h) *next = Vec2(mid, o.depth_m), through = true;
+    // the point before the extension: at this deflection the load drops when the crack extends (the curve keeps both)
+    result.curve.push_back({lambda, load_of(problem.internal_force(u)), 0, tip.y(), interface.dissipated_energy_J()});
+    // the tip stops half a segment below the top face: the crack never cuts the beam in two (with it through,
+    // the halves would be held only by the crack faces, and the right half, on a roller, could slide off them:
+    // a mechanism at zero load that Newton finds); what is left is the compression zone
+    if (next->y() >= o.depth_m - 0.5 * h - 1e-12) *next = Vec2(mid, o.depth_m - 0.5 * h), through = true;
+    if (!(next->y() > tip.y() + 1e-9)) return through = true, false;
     cracks.extend(crack, *next);
     interface.add_segment({tip, *next});
     tip = *next;
@@ -152,7 +159,7 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
       break;
     }
     if (through && result.curve.back().load_N < o.stop_load_fraction * result.peak_load_N) {
-      result.stop_reason = "crack through the depth and the load below " + text(100 * o.stop_load_fraction) + " % of the peak";
+      result.stop_reason = "crack tip at the top and the load below " + text(100 * o.stop_load_fraction) + " % of the peak";
       break;
     }
   }
@@ -164,6 +171,9 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
     result.work_of_fracture_J += 0.5 * (a.load_N + b.load_N) * (b.deflection_m - a.deflection_m);
   }
   result.dissipated_J = interface.dissipated_energy_J();
+  result.final_load_N = result.curve.back().load_N;
+  result.final_deflection_m = result.curve.back().deflection_m;
+  result.stored_J = problem.stored_energy_J(constraints.expand(v, result.final_deflection_m));
   result.cohesive_points = interface.points().size();
   result.crack_path = cracks.cracks()[crack].points;
   result.crack_path.front() = Vec2(mid, 0);  // the notch mouth on the bottom face (the polyline starts below it)

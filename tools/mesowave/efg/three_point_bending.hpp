@@ -8,14 +8,16 @@
 //
 // The model: the beam between its supports (length = span, simply supported at
 // the bottom corners: u_y = 0 at both, u_x = 0 at the left), loaded through two
-// points of the top face one node spacing apart, on either side of mid-span,
-// both moved down by the deflection (a narrow loading plate: the crack may then
-// reach the top face between them without cutting a load point off). The notch
+// points of the top face load_width_m apart, on either side of mid-span, both
+// moved down by the deflection (the edges of a narrow loading plate: the crack
+// may then reach the top face between them without cutting a load point off). The notch
 // is a traction-free crack on the mid-span line; the crack grows from its tip
 // in segments of one node spacing, vertical as the paper prescribes (the
 // principal directions at mid-span are too sensitive to follow), whenever the
-// St. Venant criterion holds just ahead of the tip; after each extension the
-// shape functions change and the step is solved again. The load is the sum of
+// St. Venant criterion holds just ahead of the tip, up to half a segment below
+// the top face (the compression zone stays: a crack through the depth would
+// leave the halves a zero-load mechanism); after each extension the shape
+// functions change and the step is solved again. The load is the sum of
 // the two load points' reactions. Nodes: a regular grid whose mid-span line is
 // a line of cell centres (an odd number of cells along the span), so no node
 // lies on the crack.
@@ -40,14 +42,19 @@ struct ThreePointBendingOptions {
   // discretisation
   double spacing_m = 0.005;                    ///< target node spacing (the cells along the span: odd, so the nearest odd count)
   int gauss = 2;                               ///< per direction per cell (the paper's 2)
-  double support_scale = 2.5;                  ///< support radius over the spacing
+  double support_scale = 2.0;                  ///< support radius over the spacing (2: about 12 nodes in a support, the paper's 4 to 10 near faces and corners)
   CrackWeightMethod crack_method = CrackWeightMethod::visibility;
   int cohesive_gauss = 4;                      ///< Gauss points per cohesive segment
   // loading
+  /// Distance between the two load points on the top face (a loading plate's edges): fixed, not tied to the
+  /// spacing, so that grids of any spacing (and the FEM) solve the same problem - a point load's displacement
+  /// in 2D grows without bound as the grid is refined (log singularity).
+  double load_width_m = 0.010;
   double max_deflection_m = 1.0e-3;
   int steps = 100;                             ///< equal deflection steps
   NewtonOptions newton{};
-  /// Stop early when the crack has reached the top face and the load has fallen below this fraction of the peak.
+  /// Stop early when the crack tip has reached its highest point (half a segment below the top face, see the
+  /// .cpp) and the load has fallen below this fraction of the peak.
   double stop_load_fraction = 0.005;
   /// InputError naming the value: sizes <= 0, a notch not inside the depth, nu outside (-1, 0.5), f_t or G_f <= 0,
   /// steps < 1, spacing above the ligament.
@@ -67,6 +74,8 @@ struct ThreePointBendingResult {
   double peak_load_N = 0, deflection_at_peak_m = 0;
   double work_of_fracture_J = 0;          ///< area under the curve (trapezoids)
   double dissipated_J = 0;                ///< the cohesive zone's own account at the end
+  double stored_J = 0;                    ///< elastic energy left at the end (continuum and faces)
+  double final_load_N = 0, final_deflection_m = 0;
   double elastic_stiffness_N_per_m = 0;   ///< the notched beam before any crack growth (a linear solve)
   bool completed = false;                 ///< every step converged
   std::string stop_reason;
