@@ -1,5 +1,5 @@
 // mw-efg end to end: the cantilever validation (errors, orders, CSV, ParaView files read back by
-// VTK, the run in the provenance database) and bad input - one line naming the value, exit 1,
+// VTK, the run in the provenance database), a short bending run with every output, and bad input - one line naming the value, exit 1,
 // nothing written.
 #include <gtest/gtest.h>
 
@@ -46,6 +46,36 @@ TEST(MwEfg, CantileverConvergesAndWritesItsOutputs) {
   EXPECT_TRUE(found) << show.out;
 }
 
+TEST(MwEfg, BendingWritesCurvePlotCrackAndSummary) {
+  TempDir dir;
+  const fs::path lab = fs::path(MESOWAVE_SOURCE_DIR) / "lab-data/shock-concrete/three-point-bending.toml";
+  const auto r = run_tool("mw-efg", {"bending", "--from", lab.string(), "--law", "bilinear", "--spacing-mm", "10",
+                                     "--max-deflection-mm", "0.2", "--steps", "10", "--fem-refinement", "1", "--curve",
+                                     (dir / "ld.csv").string(), "--plot", (dir / "ld.png").string(), "--crack-path",
+                                     (dir / "crack.csv").string(), "--snapshots", (dir / "vtk").string(), "--out",
+                                     (dir / "b.json").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(read_file(dir / "b.json"));
+  EXPECT_EQ(j["law"], "bilinear");
+  EXPECT_EQ(j["material"]["G_f_N_m"], 113.0);  // from the lab-data file
+  EXPECT_NEAR(j["G_f_times_ligament_Nmm"].get<double>(), 565.0, 1e-9);
+  EXPECT_GT(j["peak_load_N"].get<double>(), 0);
+  const std::size_t points = j["cost"]["curve_points"];
+  EXPECT_GE(points, 11u);  // (0, 0), 10 steps, the state before each crack extension
+  // The stiffness beside its references: the FEM of the same beam, beam theory above both.
+  const auto& k = j["elastic_stiffness"];
+  EXPECT_LT(k["fem_notched_N_per_mm"].get<double>(), k["beam_theory_plus_lefm_notch_N_per_mm"].get<double>());
+  EXPECT_NEAR(k["efg_over_fem"].get<double>(), 1.0, 0.3);
+  const std::string curve = read_file(dir / "ld.csv");
+  EXPECT_EQ(std::size_t(std::count(curve.begin(), curve.end(), '\n')), points + 1);
+  EXPECT_EQ(curve.rfind("deflection_mm,load_N", 0), 0u);
+  EXPECT_GT(fs::file_size(dir / "ld.png"), 1000u);
+  EXPECT_EQ(read_file(dir / "crack.csv").rfind("x_mm,y_mm\n225,0\n225,50", 0), 0u);
+  const auto v = run_command(fs::path(MESOWAVE_SOURCE_DIR) / "scripts/check-vtk", {(dir / "vtk/bending.pvd").string()});
+  ASSERT_EQ(v.exit_status, 0) << v.out << v.err;
+  EXPECT_EQ(json::parse(v.out)[0]["datasets"].size(), 2 * points);
+}
+
 TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
   struct Case {
     std::vector<std::string> args;
@@ -57,11 +87,20 @@ TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
       {{"cantilever", "--support-scale", "0.6"}, "Gauss point"},  // a support with too few nodes
       {{"cantilever", "--spacing-m", "-1"}, "--spacing-m (-1 m)"},
       {{"cantilever", "--basis", "cubic"}, "cubic"},
+      {{"bending", "--notch-mm", "120"}, "notch"},  // a notch deeper than the beam
+      {{"bending", "--nu", "0.5"}, "nu (0.5)"},
+      {{"bending", "--G-f-N-m", "0"}, "G_f"},
+      {{"bending", "--f-t-MPa", "-1"}, "f_t"},
+      {{"bending", "--support-scale", "0.5", "--fem-refinement", "0"}, "nodes reach"},  // a support with too few nodes
+      {{"bending", "--law", "linear"}, "linear"},
+      {{"bending", "--law-key", "alpha"}, "alpha"},
   };
   for (const auto& c : cases) {
     TempDir dir;
     auto args = c.args;
-    args.insert(args.end(), {"--out", (dir / "o.json").string(), "--table", (dir / "t.csv").string()});
+    args.insert(args.end(), {"--out", (dir / "o.json").string()});
+    if (c.args[0] == "cantilever") args.insert(args.end(), {"--table", (dir / "t.csv").string()});
+    else args.insert(args.end(), {"--curve", (dir / "c.csv").string(), "--snapshots", (dir / "vtk").string()});
     const auto r = run_tool("mw-efg", args);
     EXPECT_EQ(r.exit_status, 1) << c.args[1] << ": " << r.err;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
@@ -73,5 +112,5 @@ TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
 TEST(MwEfg, HelpTeachesTheSubcommands) {
   const auto r = run_tool("mw-efg", {"--help"});
   EXPECT_EQ(r.exit_status, 0);
-  for (const char* word : {"cantilever", "Timoshenko", "--from"}) EXPECT_NE(r.out.find(word), std::string::npos) << word;
+  for (const char* word : {"cantilever", "bending", "Timoshenko", "Koermeling", "--from"}) EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }

@@ -17,7 +17,7 @@ using namespace mesowave::efg;
 
 TEST(BendingReference, FemAgainstBeamTheoryAndTheNotch) {
   ThreePointBendingOptions o;  // Koermeling and Reinhardt's beam
-  o.spacing_m = 0.01;          // 45 EFG cells along the span
+  o.spacing_m = 0.01;          // the FEM follows the load width (10 mm), not the EFG spacing
   std::vector<BendingReference> r;
   for (int k : {1, 2}) {
     r.push_back(three_point_bending_reference(o, k));

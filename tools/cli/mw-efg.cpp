@@ -70,33 +70,10 @@ int main(int argc, char** argv) {
   cant->add_option("--snapshots", snapshots, "Folder for ParaView files of the last (finest) run: cantilever.pvd");
   app::add_out_option(*cant, out);
 
-  // bending (SI inside; the options in the lab-data file's units)
-  efg::ThreePointBendingOptions bo;
-  double E_GPa = 20, f_t_MPa = 2.4, span_mm = 450, depth_mm = 100, notch_mm = 50, thickness_mm = 100, spacing_mm = 5,
-         max_deflection_mm = 1.0;
-  int fem_refinement = 2;
-  std::vector<std::string> law_keys;
-  std::string crack_weight = "visibility";
+  // bending
+  efg::BendingCommandLine bending;
   auto* bend = cli.add_subcommand("bending", "The notched three-point bending beam with a cohesive crack");
-  bend->add_option("--law", bo.law, "Cohesive law: exponential (Eqs. 19-20) | bilinear (Eqs. 21-23)")->capture_default_str();
-  bend->add_option("--law-key", law_keys, "A law's own key, KEY=VALUE (exponential: alpha; bilinear: alpha_t, f_c_Pa)");
-  bend->add_option("--E-GPa", E_GPa, "Young's modulus")->capture_default_str();
-  bend->add_option("--nu", bo.nu, "Poisson's ratio")->capture_default_str();
-  bend->add_option("--f-t-MPa", f_t_MPa, "Tensile strength f_t")->capture_default_str();
-  bend->add_option("--G-f-N-m", bo.G_f_J_m2, "Fracture energy G_f [N/m]")->capture_default_str();
-  bend->add_option("--span-mm", span_mm, "Span between the supports")->capture_default_str();
-  bend->add_option("--depth-mm", depth_mm, "Beam depth")->capture_default_str();
-  bend->add_option("--notch-mm", notch_mm, "Central notch depth from the bottom face")->capture_default_str();
-  bend->add_option("--thickness-mm", thickness_mm, "Out-of-plane thickness (plane stress)")->capture_default_str();
-  bend->add_option("--spacing-mm", spacing_mm, "Node spacing (the cells along the span: the nearest odd count)")
-      ->capture_default_str();
-  bend->add_option("--gauss", bo.gauss, "Gauss points per cell direction")->capture_default_str();
-  bend->add_option("--support-scale", bo.support_scale, "Support radius over the spacing, Eq. (10)")->capture_default_str();
-  bend->add_option("--crack-weight", crack_weight, "visibility | diffraction | transparency, Eq. (13)")->capture_default_str();
-  bend->add_option("--max-deflection-mm", max_deflection_mm, "Last prescribed mid-span deflection")->capture_default_str();
-  bend->add_option("--steps", bo.steps, "Equal deflection steps")->capture_default_str();
-  bend->add_option("--fem-refinement", fem_refinement, "Q4 cells per half EFG cell of the FEM reference (0: none)")
-      ->capture_default_str();
+  efg::add_bending_options(*bend, bending);
   bend->add_option("--curve", curve, "Load-deflection CSV: deflection_mm, load_N, iterations, crack_tip_mm, dissipated_Nmm");
   bend->add_option("--plot", plot, "Load-deflection plot (.png | .svg, gnuplot)");
   bend->add_option("--crack-path", crack_path, "Crack path CSV: x_mm, y_mm (mouth, notch tip, grown points)");
@@ -105,15 +82,10 @@ int main(int argc, char** argv) {
 
   return tool.run(argc, argv, [&](app::Run& run) {
     if (bend->parsed()) {
-      bo.E_Pa = E_GPa * 1e9, bo.f_t_Pa = f_t_MPa * 1e6, bo.span_m = span_mm * 1e-3, bo.depth_m = depth_mm * 1e-3;
-      bo.notch_m = notch_mm * 1e-3, bo.thickness_m = thickness_mm * 1e-3, bo.spacing_m = spacing_mm * 1e-3;
-      bo.max_deflection_m = max_deflection_mm * 1e-3;
-      bo.crack_method = efg::parse_crack_weight_method(crack_weight);
-      bo.law_keys = efg::parse_law_keys(law_keys);
+      const auto bo = bending.resolve();
       if (!plot.empty()) io::require_plot_extension(plot);
-      bo.validate();
       std::optional<efg::BendingReference> ref;
-      if (fem_refinement > 0) ref = efg::three_point_bending_reference(bo, fem_refinement);
+      if (bending.fem_refinement > 0) ref = efg::three_point_bending_reference(bo, bending.fem_refinement);
       const auto result = efg::run_three_point_bending(bo);
       const auto o = efg::three_point_bending_outputs(bo, result, ref ? &*ref : nullptr);
       run.metric("peak_load", result.peak_load_N, "N");

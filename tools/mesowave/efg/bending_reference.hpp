@@ -2,8 +2,8 @@
 // The elastic references of the notched three-point bending beam (issue 15, Must show 3: "the initial
 // stiffness against beam theory with shear deformation and against the FEM's elastic solution of the
 // same beam"): the beam of efg/three_point_bending.hpp - length = span, simply supported at the
-// bottom corners, loaded through two top points span/nx apart about mid-span (nx the EFG's odd cell
-// count), both moved down by the deflection - solved by the Q4 FEM (fem/plane_static.hpp) with the
+// bottom corners, loaded through two top points load_width apart about mid-span, both moved down by
+// the deflection - solved by the Q4 FEM (fem/plane_static.hpp) with the
 // notch as a zero-width slit, and the unnotched beam by Timoshenko beam theory
 // (efg/beam_theory.hpp), the notched one adding the notch's fracture-mechanics compliance. Beam
 // theory has no local indentation under the point loads and supports, which the FEM (and the EFG)
@@ -22,10 +22,10 @@ struct BendingReference {
   std::size_t fem_nodes = 0;
 };
 
-/// The Q4 mesh has `refinement` x 2 cells per EFG cell along the span (so that mid-span and the two
-/// load points are nodes) and square-ish cells with the notch tip on a mesh line. InputError for
-/// refinement < 1, bad options (ThreePointBendingOptions::validate) or a notch that falls on no mesh
-/// line (depth / notch far from a ratio of small integers).
+/// The Q4 mesh has cells of load_width / (2 refinement) along the span (so that mid-span and the two
+/// load points are nodes), about as tall, with the notch tip on a mesh line. InputError for
+/// refinement < 1, bad options (ThreePointBendingOptions::validate), a span that is no even multiple
+/// of the cell, or a notch that falls on no mesh line (depth / notch far from a ratio of small integers).
 BendingReference three_point_bending_reference(const ThreePointBendingOptions& options, int refinement = 2);
 
 }  // namespace mesowave::efg

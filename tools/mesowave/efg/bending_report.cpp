@@ -5,6 +5,49 @@
 
 namespace mesowave::efg {
 
+ThreePointBendingOptions BendingCommandLine::resolve() const {
+  ThreePointBendingOptions o = options;
+  o.E_Pa = E_GPa * 1e9;
+  o.f_t_Pa = f_t_MPa * 1e6;
+  o.span_m = span_mm * 1e-3;
+  o.depth_m = depth_mm * 1e-3;
+  o.notch_m = notch_mm * 1e-3;
+  o.thickness_m = thickness_mm * 1e-3;
+  o.spacing_m = spacing_mm * 1e-3;
+  o.load_width_m = load_width_mm * 1e-3;
+  o.max_deflection_m = max_deflection_mm * 1e-3;
+  o.crack_method = parse_crack_weight_method(crack_weight);
+  o.law_keys = parse_law_keys(law_keys);
+  o.validate();
+  return o;
+}
+
+void add_bending_options(CLI::App& app, BendingCommandLine& v) {
+  ThreePointBendingOptions& o = v.options;
+  app.add_option("--law", o.law, "Cohesive law: exponential (Eqs. 19-20) | bilinear (Eqs. 21-23)")->capture_default_str();
+  app.add_option("--law-key", v.law_keys, "A law's own key, KEY=VALUE (exponential: alpha; bilinear: alpha_t, f_c_Pa)");
+  app.add_option("--E-GPa", v.E_GPa, "Young's modulus")->capture_default_str();
+  app.add_option("--nu", o.nu, "Poisson's ratio")->capture_default_str();
+  app.add_option("--f-t-MPa", v.f_t_MPa, "Tensile strength f_t")->capture_default_str();
+  app.add_option("--G-f-N-m", o.G_f_J_m2, "Fracture energy G_f [N/m]")->capture_default_str();
+  app.add_option("--span-mm", v.span_mm, "Span between the supports (the model's length)")->capture_default_str();
+  app.add_option("--depth-mm", v.depth_mm, "Beam depth")->capture_default_str();
+  app.add_option("--notch-mm", v.notch_mm, "Central notch depth from the bottom face")->capture_default_str();
+  app.add_option("--thickness-mm", v.thickness_mm, "Out-of-plane thickness (plane stress)")->capture_default_str();
+  app.add_option("--load-width-mm", v.load_width_mm, "Distance of the two load points (a loading plate's edges)")
+      ->capture_default_str();
+  app.add_option("--spacing-mm", v.spacing_mm, "Node spacing (the cells along the span: the nearest odd count)")
+      ->capture_default_str();
+  app.add_option("--gauss", o.gauss, "Gauss points per cell direction (the paper: 2)")->capture_default_str();
+  app.add_option("--support-scale", o.support_scale, "Support radius over the spacing, Eq. (10)")->capture_default_str();
+  app.add_option("--crack-weight", v.crack_weight, "visibility | diffraction | transparency, Eq. (13)")
+      ->capture_default_str();
+  app.add_option("--max-deflection-mm", v.max_deflection_mm, "Last prescribed mid-span deflection")->capture_default_str();
+  app.add_option("--steps", o.steps, "Equal deflection steps")->capture_default_str();
+  app.add_option("--fem-refinement", v.fem_refinement,
+                 "Q4 reference: cells of load width / (2 x this) (0: no FEM run)")->capture_default_str();
+}
+
 std::map<std::string, double> parse_law_keys(const std::vector<std::string>& texts) {
   std::map<std::string, double> keys;
   for (const auto& t : texts) {
@@ -32,7 +75,7 @@ BendingOutputs three_point_bending_outputs(const ThreePointBendingOptions& o, co
   j["geometry_mm"] = {{"span", o.span_m * 1e3}, {"depth", o.depth_m * 1e3}, {"notch", o.notch_m * 1e3},
                       {"thickness", o.thickness_m * 1e3}};
   j["material"] = {{"E_GPa", o.E_Pa * 1e-9}, {"nu", o.nu}, {"f_t_MPa", o.f_t_Pa * 1e-6}, {"G_f_N_m", o.G_f_J_m2}};
-  j["discretisation"] = {{"spacing_mm", o.spacing_m * 1e3}, {"gauss", o.gauss}, {"support_scale", o.support_scale},
+  j["discretisation"] = {{"spacing_mm", o.spacing_m * 1e3}, {"load_width_mm", o.load_width_m * 1e3}, {"gauss", o.gauss}, {"support_scale", o.support_scale},
                          {"cohesive_gauss", o.cohesive_gauss}, {"steps", o.steps},
                          {"max_deflection_mm", o.max_deflection_m * 1e3}};
   j["peak_load_N"] = r.peak_load_N;
@@ -62,7 +105,7 @@ BendingOutputs three_point_bending_outputs(const ThreePointBendingOptions& o, co
                {"gauss_points", r.gauss_points},
                {"dofs", r.dofs},
                {"cohesive_points", r.cohesive_points},
-               {"steps", r.curve.empty() ? 0 : r.curve.size() - 1},
+               {"curve_points", r.curve.size()},  // (0, 0), each step, and the state before each crack extension
                {"newton_iterations", r.newton_iterations},
                {"re_solves", r.re_solves},
                {"line_search_cuts", r.line_search_cuts},
