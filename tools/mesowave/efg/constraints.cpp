@@ -23,35 +23,85 @@ std::string describe(const PointConstraint& c, std::size_t k) {
 
 }  // namespace
 
-ConstraintSet::ConstraintSet(const ElasticModel& model, std::vector<PointConstraint> constraints)
+ConstraintSet::ConstraintSet(const ElasticModel& model, std::vector<PointConstraint> constraints,
+                             std::vector<EdgeConstraint> edges)
     : constraints_(std::move(constraints)) {
   const auto n = Eigen::Index(model.dof_count());
-  const auto m = Eigen::Index(constraints_.size());
-  if (m > n) throw InputError(std::to_string(m) + " constraints exceed the " + std::to_string(n) + " unknowns");
-
-  // Rows C_k = N_c(x_k), Eq. (14) at the constraint's point.
-  std::vector<ShapeFunctions> rows;
+  // Each row as (node, coefficient) pairs on one component, its value and its name.
+  struct Row {
+    std::vector<std::pair<std::int32_t, double>> terms;
+    double value = 0;
+    int component = 0;
+    std::string name;
+  };
+  std::vector<Row> rows;
   for (std::size_t k = 0; k < constraints_.size(); ++k) {
     const PointConstraint& c = constraints_[k];
-    if (c.component != 0 && c.component != 1) throw InputError(describe(c, k) + ": the component must be 0 (x) or 1 (y)");
-    if (!std::isfinite(c.value_m)) throw InputError(describe(c, k) + ": the value " + format_number(c.value_m) + " is not finite");
-    rows.push_back(model.mls().evaluate(c.x, describe(c, k)));
+    const std::string name = describe(c, k);
+    if (c.component != 0 && c.component != 1) throw InputError(name + ": the component must be 0 (x) or 1 (y)");
+    if (!std::isfinite(c.value_m)) throw InputError(name + ": the value " + format_number(c.value_m) + " is not finite");
+    const ShapeFunctions sf = model.mls().evaluate(c.x, name);
+    Row row{{}, c.value_m, c.component, name};
+    for (std::size_t a = 0; a < sf.nodes.size(); ++a) row.terms.emplace_back(sf.nodes[a], sf.phi[a]);
+    rows.push_back(std::move(row));
   }
-  for (std::size_t k = 0; k < rows.size(); ++k)
-    for (std::int32_t i : rows[k].nodes) involved_.push_back(2 * Eigen::Index(i) + constraints_[k].component);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const EdgeConstraint& c = edges[e];
+    const std::string name = "edge constraint " + std::to_string(e) + (c.name.empty() ? "" : " '" + c.name + "'") +
+                             " (u_" + (c.component == 0 ? "x" : "y") + " on (" + format_number(c.edge.a.x()) + ", " +
+                             format_number(c.edge.a.y()) + ") - (" + format_number(c.edge.b.x()) + ", " +
+                             format_number(c.edge.b.y()) + ") m)";
+    if (c.component != 0 && c.component != 1) throw InputError(name + ": the component must be 0 (x) or 1 (y)");
+    if (!c.value_m) throw InputError(name + ": no value function");
+    const double length = (c.edge.b - c.edge.a).norm();
+    if (!std::isfinite(length) || length <= 0) throw InputError(name + ": the segment has no length");
+    const int pieces = c.pieces > 0 ? c.pieces : std::max(1, int(std::ceil(length / model.discretisation().spacing_m - 1e-9)));
+    const GaussRule rule = gauss_legendre(c.gauss);
+    const std::size_t first = rows.size();
+    for (int k = 0; k <= pieces; ++k) rows.push_back({{}, 0.0, c.component, name + " hat " + std::to_string(k)});
+    std::vector<double> hat_integral(std::size_t(pieces) + 1, 0.0);
+    for (int piece = 0; piece < pieces; ++piece)
+      for (std::size_t q = 0; q < rule.x.size(); ++q) {
+        const double xi = 0.5 * (rule.x[q] + 1.0), w = 0.5 * rule.w[q] * length / pieces;
+        const Vec2 x = c.edge.a + (piece + xi) / pieces * (c.edge.b - c.edge.a);
+        const double value = c.value_m(x);
+        if (!std::isfinite(value)) throw InputError(name + ": the value " + format_number(value) + " is not finite");
+        const ShapeFunctions sf = model.mls().evaluate(x, name);
+        for (int side = 0; side < 2; ++side) {  // the hats at the piece's two ends
+          const double N = side == 0 ? 1.0 - xi : xi;
+          Row& row = rows[first + std::size_t(piece + side)];
+          for (std::size_t a = 0; a < sf.nodes.size(); ++a) row.terms.emplace_back(sf.nodes[a], w * N * sf.phi[a]);
+          row.value += w * N * value;
+          hat_integral[std::size_t(piece + side)] += w * N;
+        }
+      }
+    for (int k = 0; k <= pieces; ++k) {  // an average: the coefficients sum to 1, R_k is a force
+      Row& row = rows[first + std::size_t(k)];
+      for (auto& term : row.terms) term.second /= hat_integral[std::size_t(k)];
+      row.value /= hat_integral[std::size_t(k)];
+    }
+    edge_rows_.emplace_back(first, rows.size());
+  }
+  const auto m = Eigen::Index(rows.size());
+  if (m > n) throw InputError(std::to_string(m) + " constraint rows exceed the " + std::to_string(n) + " unknowns");
+
+  for (const Row& row : rows)
+    for (const auto& term : row.terms) involved_.push_back(2 * Eigen::Index(term.first) + row.component);
   std::sort(involved_.begin(), involved_.end());
   involved_.erase(std::unique(involved_.begin(), involved_.end()), involved_.end());
   std::map<Eigen::Index, Eigen::Index> local;  // dof -> column of C_involved_
   for (std::size_t j = 0; j < involved_.size(); ++j) local[involved_[j]] = Eigen::Index(j);
   const auto ni = Eigen::Index(involved_.size());
   C_involved_ = Eigen::MatrixXd::Zero(m, ni);
-  Eigen::VectorXd d(m);
+  d_ = Eigen::VectorXd(m);
   for (Eigen::Index k = 0; k < m; ++k) {
-    const ShapeFunctions& sf = rows[std::size_t(k)];
-    for (std::size_t a = 0; a < sf.nodes.size(); ++a)
-      C_involved_(k, local[2 * Eigen::Index(sf.nodes[a]) + constraints_[std::size_t(k)].component]) += sf.phi[a];
-    d[k] = constraints_[std::size_t(k)].value_m;
+    const Row& row = rows[std::size_t(k)];
+    for (const auto& term : row.terms) C_involved_(k, local[2 * Eigen::Index(term.first) + row.component]) += term.second;
+    d_[k] = row.value;
+    names_.push_back(row.name);
+    components_.push_back(row.component);
   }
+  const Eigen::VectorXd& d = d_;
   std::vector<Eigen::Triplet<double>> c_entries;
   for (Eigen::Index k = 0; k < m; ++k)
     for (Eigen::Index j = 0; j < ni; ++j)
@@ -69,8 +119,7 @@ ConstraintSet::ConstraintSet(const ElasticModel& model, std::vector<PointConstra
     for (Eigen::Index j = 0; j < ni; ++j)
       if (!is_pivot[std::size_t(j)] && std::abs(W(k, j)) > best_abs) best = j, best_abs = std::abs(W(k, j));
     if (best < 0 || best_abs <= 1e-10 * C_involved_.row(k).cwiseAbs().maxCoeff())
-      throw InputError(describe(constraints_[std::size_t(k)], std::size_t(k)) +
-                       " repeats or contradicts the constraints before it (its row is a combination of theirs)");
+      throw InputError(names_[std::size_t(k)] + " repeats or contradicts the constraints before it (its row is a combination of theirs)");
     is_pivot[std::size_t(best)] = 1;
     slave_local.push_back(best);
     for (Eigen::Index r = k + 1; r < m; ++r)
@@ -121,18 +170,14 @@ Eigen::SparseMatrix<double> ConstraintSet::reduce(const Eigen::SparseMatrix<doub
 Eigen::VectorXd ConstraintSet::reduce(const Eigen::VectorXd& r) const { return T_.transpose() * r; }
 
 std::vector<double> ConstraintSet::reactions(const Eigen::VectorXd& full_residual) const {
-  if (constraints_.empty()) return {};
+  if (d_.size() == 0) return {};
   Eigen::VectorXd r(Eigen::Index(involved_.size()));
   for (std::size_t j = 0; j < involved_.size(); ++j) r[Eigen::Index(j)] = full_residual[involved_[j]];
   const Eigen::VectorXd R = C_involved_.transpose().colPivHouseholderQr().solve(r);  // C^T R = r
   return {R.data(), R.data() + R.size()};
 }
 
-Eigen::VectorXd ConstraintSet::violation(const Eigen::VectorXd& u, double scale) const {
-  Eigen::VectorXd d(Eigen::Index(constraints_.size()));
-  for (std::size_t k = 0; k < constraints_.size(); ++k) d[Eigen::Index(k)] = scale * constraints_[k].value_m;
-  return C_ * u - d;
-}
+Eigen::VectorXd ConstraintSet::violation(const Eigen::VectorXd& u, double scale) const { return C_ * u - scale * d_; }
 
 LinearSolution solve_linear(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& f, const ConstraintSet& c,
                             double scale) {

@@ -1,6 +1,7 @@
 #include "mesowave/efg/elastic_model.hpp"
 
 #include <Eigen/LU>
+#include <omp.h>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -91,14 +92,22 @@ void ElasticModel::update_shape_functions() {
 }
 
 void ElasticModel::build_pattern() {
-  // Node I couples with node J when a Gauss point has both in its support.
+  // Node I couples with node J when a Gauss point has both in its support: per node, the points
+  // whose support holds it, their nodes gathered once each (a stamp per node), then sorted.
   const std::size_t nodes = mls_->node_count();
+  std::vector<std::vector<std::int32_t>> points_of(nodes);
+  for (std::size_t p = 0; p < shape_.size(); ++p)
+    for (std::int32_t i : shape_[p].nodes) points_of[std::size_t(i)].push_back(std::int32_t(p));
   std::vector<std::vector<std::int32_t>> neighbours(nodes);
-  for (const ShapeFunctions& sf : shape_)
-    for (std::int32_t i : sf.nodes) neighbours[std::size_t(i)].insert(neighbours[std::size_t(i)].end(), sf.nodes.begin(), sf.nodes.end());
-  for (auto& list : neighbours) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
+  std::vector<std::int64_t> stamp(nodes, -1);
+  for (std::size_t j = 0; j < nodes; ++j) {
+    for (std::int32_t p : points_of[j])
+      for (std::int32_t i : shape_[std::size_t(p)].nodes)
+        if (stamp[std::size_t(i)] != std::int64_t(j)) {
+          stamp[std::size_t(i)] = std::int64_t(j);
+          neighbours[j].push_back(i);
+        }
+    std::sort(neighbours[j].begin(), neighbours[j].end());
   }
   pattern_ = Eigen::SparseMatrix<double>(Eigen::Index(2 * nodes), Eigen::Index(2 * nodes));
   Eigen::VectorXi per_column(Eigen::Index(2 * nodes));
@@ -116,29 +125,44 @@ void ElasticModel::build_pattern() {
 Eigen::SparseMatrix<double> ElasticModel::stiffness() const {
   Eigen::SparseMatrix<double> K = pattern_;
   double* values = K.valuePtr();
+  const int* outer = K.outerIndexPtr();
   const double t = material_.thickness_m;
-  // Blocks of a chunk of points in parallel, added to K in point order (fixed sums: same bits).
+  const auto nodes = std::int64_t(mls_->node_count());
+  // Blocks of a chunk of points in parallel; then each thread adds them, in point order, to the
+  // columns of its own range of nodes: every entry is summed in point order (the same bits for any
+  // thread count) and no two threads write one entry.
   constexpr std::size_t chunk = 1024;
-  std::vector<Eigen::MatrixXd> blocks(chunk);
-  for (std::size_t p0 = 0; p0 < shape_.size(); p0 += chunk) {
-    const std::size_t p1 = std::min(shape_.size(), p0 + chunk);
-#pragma omp parallel for schedule(static)
-    for (std::int64_t p = std::int64_t(p0); p < std::int64_t(p1); ++p) {
-      const Eigen::MatrixXd B = strain_matrix(shape_[std::size_t(p)]);
-      blocks[std::size_t(p) - p0].noalias() = B.transpose() * (D_ * B) * (t * disc_.points[std::size_t(p)].weight_m2);
-    }
-    for (std::size_t p = p0; p < p1; ++p) {
-      const ShapeFunctions& sf = shape_[p];
-      const Eigen::MatrixXd& k = blocks[p - p0];
-      for (std::size_t b = 0; b < sf.nodes.size(); ++b)
-        for (int c = 0; c < 2; ++c) {
-          const Eigen::Index col = 2 * Eigen::Index(sf.nodes[b]) + c;
+  std::vector<Eigen::MatrixXd> blocks(std::min(chunk, shape_.size()));
+#pragma omp parallel
+  {
+    const std::int64_t threads = omp_get_num_threads(), me = omp_get_thread_num();
+    const std::int64_t lo = nodes * me / threads, hi = nodes * (me + 1) / threads;
+    for (std::size_t p0 = 0; p0 < shape_.size(); p0 += chunk) {
+      const std::size_t p1 = std::min(shape_.size(), p0 + chunk);
+#pragma omp for schedule(static)
+      for (std::int64_t p = std::int64_t(p0); p < std::int64_t(p1); ++p) {
+        const Eigen::MatrixXd B = strain_matrix(shape_[std::size_t(p)]);
+        blocks[std::size_t(p) - p0].noalias() = B.transpose() * (D_ * B) * (t * disc_.points[std::size_t(p)].weight_m2);
+      }
+      for (std::size_t p = p0; p < p1; ++p) {
+        const ShapeFunctions& sf = shape_[p];
+        const Eigen::MatrixXd& k = blocks[p - p0];
+        for (std::size_t b = 0; b < sf.nodes.size(); ++b) {
+          const std::int64_t J = sf.nodes[b];
+          if (J < lo || J >= hi) continue;
+          // columns 2J and 2J+1 have the same rows: one search finds the 2 x 2 block in both
+          const Eigen::Index next = outer[2 * J + 1] - outer[2 * J];
           for (std::size_t a = 0; a < sf.nodes.size(); ++a) {
-            const Eigen::Index pos = position(K, col, 2 * Eigen::Index(sf.nodes[a]));
-            values[pos] += k(2 * Eigen::Index(a), 2 * Eigen::Index(b) + c);
-            values[pos + 1] += k(2 * Eigen::Index(a) + 1, 2 * Eigen::Index(b) + c);
+            const Eigen::Index pos = position(K, 2 * J, 2 * Eigen::Index(sf.nodes[a]));
+            const Eigen::Index ra = 2 * Eigen::Index(a), cb = 2 * Eigen::Index(b);
+            values[pos] += k(ra, cb);
+            values[pos + 1] += k(ra + 1, cb);
+            values[pos + next] += k(ra, cb + 1);
+            values[pos + next + 1] += k(ra + 1, cb + 1);
           }
         }
+      }
+#pragma omp barrier
     }
   }
   return K;
