@@ -9,8 +9,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "mesowave/core/random.hpp"
 #include "mesowave/efg/mls.hpp"
+#include "support/efg_fixtures.hpp"
 #include "support/input_error.hpp"
 
 using namespace mesowave;
@@ -21,34 +21,9 @@ namespace {
 constexpr double kLx = 0.30, kLy = 0.20;  // the body [0, 0.3] x [0, 0.2] m
 constexpr double kSpacing = 0.05;         // 7 x 5 nodes
 
-// (nx + 1) x (ny + 1) nodes on [0, lx] x [0, ly]; interior nodes moved by up to +-`jitter` spacings
-// in each direction (deterministic: Mt64Random with a fixed seed).
-std::vector<Vec2> grid_nodes(int nx, int ny, double lx, double ly, double jitter = 0, std::uint64_t seed = 7) {
-  Mt64Random random(seed);
-  std::vector<Vec2> nodes;
-  const double dx = lx / nx, dy = ly / ny;
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) {
-      Vec2 p(i * dx, j * dy);
-      if (jitter > 0 && i > 0 && i < nx && j > 0 && j < ny) p += Vec2(random.uniform(-jitter, jitter) * dx, random.uniform(-jitter, jitter) * dy);
-      nodes.push_back(p);
-    }
-  return nodes;
-}
-
-// The Gauss points (n x n Gauss-Legendre per cell) of a cx x cy background cell grid over the body.
+using test::grid_nodes;
 std::vector<Vec2> gauss_points(int cx, int cy, int n, double lx = kLx, double ly = kLy) {
-  const std::vector<double> x2 = {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)};
-  const double a = std::sqrt(3.0 / 7 - 2.0 / 7 * std::sqrt(6.0 / 5)), b = std::sqrt(3.0 / 7 + 2.0 / 7 * std::sqrt(6.0 / 5));
-  const std::vector<double> x4 = {-b, -a, a, b};
-  const auto& xi = n == 2 ? x2 : x4;
-  std::vector<Vec2> points;
-  for (int j = 0; j < cy; ++j)
-    for (int i = 0; i < cx; ++i)
-      for (const double gy : xi)
-        for (const double gx : xi)
-          points.emplace_back((i + 0.5 * (1 + gx)) * lx / cx, (j + 0.5 * (1 + gy)) * ly / cy);
-  return points;
+  return test::gauss_points(cx, cy, n, lx, ly);
 }
 
 // sum_I phi_I f(x_I), and the same with dphi/dx and dphi/dy.
@@ -172,6 +147,31 @@ TEST(Mls, QuadraticBasisReproducesQuadraticFields) {
   EXPECT_GT(std::abs(apply(linear.evaluate(x), nodes, kQuadraticFields[0].f).value - x.x() * x.x()), 1e-5);
 }
 
+TEST(Mls, ShiftedScaledBasisMakesTheResultIndependentOfTheOrigin) {
+  // The same nodes 10 km from the origin: phi the same to rounding of the coordinates (1e4 m * eps /
+  // h ~ 1e-11) and the condition number the same - an unshifted basis (1, x, y) would have A's
+  // entries spread over 8 orders of magnitude there and its condition number above 1e16.
+  const auto nodes = grid_nodes(6, 4, kLx, kLy, 0.3);
+  const Vec2 far(1e4, -5e3);
+  std::vector<Vec2> moved;
+  for (const auto& p : nodes) moved.push_back(p + far);
+  for (const auto basis : {Basis::linear, Basis::quadratic}) {
+    MlsOptions options;
+    options.basis = basis;
+    const MlsApproximation here(nodes, support_radii_by_spacing(nodes, kSpacing, 3.2), options);
+    const MlsApproximation there(moved, support_radii_by_spacing(moved, kSpacing, 3.2), options);
+    const Vec2 x(0.11, 0.07);
+    const auto a = here.evaluate(x), b = there.evaluate(x + far);
+    ASSERT_EQ(a.nodes, b.nodes);
+    for (std::size_t k = 0; k < a.nodes.size(); ++k) {
+      EXPECT_NEAR(a.phi[k], b.phi[k], 1e-9);
+      EXPECT_NEAR(a.dphi_dx[k], b.dphi_dx[k], 1e-7);
+    }
+    EXPECT_NEAR(a.condition_number, b.condition_number, 1e-6 * a.condition_number);
+    EXPECT_LT(a.condition_number, 1e4);
+  }
+}
+
 TEST(Mls, DerivativesMatchCentralDifferences) {
   // delta = 1e-6 m against h = 0.125 m: truncation ~ delta^2 phi''' / 6 ~ 1e-12 * 10^3, rounding
   // ~ eps phi / delta ~ 1e-10; 1e-7 on derivatives of order 10 per metre is far above both and far
@@ -182,19 +182,9 @@ TEST(Mls, DerivativesMatchCentralDifferences) {
     options.basis = basis;
     const MlsApproximation mls(nodes, support_radii_by_spacing(nodes, kSpacing, basis == Basis::linear ? 2.5 : 3.2), options);
     for (const Vec2& x : {Vec2(0.11, 0.07), Vec2(0.013, 0.188), Vec2(0.2437, 0.1021)}) {
-      const double d = 1e-6;
-      const auto sf = mls.evaluate(x);
-      const auto px = mls.evaluate(x + Vec2(d, 0)), mx = mls.evaluate(x - Vec2(d, 0));
-      const auto py = mls.evaluate(x + Vec2(0, d)), my = mls.evaluate(x - Vec2(0, d));
-      ASSERT_EQ(px.nodes, sf.nodes);
-      ASSERT_EQ(my.nodes, sf.nodes);
-      double largest = 0;
-      for (std::size_t k = 0; k < sf.nodes.size(); ++k) {
-        EXPECT_NEAR(sf.dphi_dx[k], (px.phi[k] - mx.phi[k]) / (2 * d), 1e-7);
-        EXPECT_NEAR(sf.dphi_dy[k], (py.phi[k] - my.phi[k]) / (2 * d), 1e-7);
-        largest = std::max(largest, std::abs(sf.dphi_dx[k]));
-      }
-      EXPECT_GT(largest, 1.0);  // the comparison is not between zeros
+      const auto check = test::check_derivatives(mls, x, 1e-6);
+      EXPECT_LT(check.error, 1e-7) << "at (" << x.x() << ", " << x.y() << ")";
+      EXPECT_GT(check.largest, 1.0);  // the comparison is not between zeros
     }
   }
 }
@@ -210,7 +200,7 @@ TEST(Mls, SupportRadiiByCountAreTheGridsNeighbourDistances) {
   EXPECT_NEAR(four[corner], 2 * kSpacing, 1e-15);
   EXPECT_NE(test::input_error_of([&] { support_radii_by_count(nodes, 0); }).find("count 0"), std::string::npos);
   EXPECT_NE(test::input_error_of([&] { support_radii_by_count(nodes, 35); }).find("count 35"), std::string::npos);
-  EXPECT_NE(test::input_error_of([&] { support_radii_by_spacing(nodes, 0.0, 2); }).find("spacing 0"), std::string::npos);
+  EXPECT_NE(test::input_error_of([&] { support_radii_by_spacing(nodes, 0.0, 2); }).find("spacing (0 m)"), std::string::npos);
 }
 
 TEST(Mls, TooFewNodesNamesThePoint) {

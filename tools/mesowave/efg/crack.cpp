@@ -1,10 +1,11 @@
 #include "mesowave/efg/crack.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
 
 namespace mesowave::efg {
 
@@ -28,9 +29,7 @@ std::string_view to_string(CrackWeightMethod method) {
 namespace {
 
 std::string point_text(const Vec2& p) {
-  std::ostringstream s;
-  s << "(" << p.x() << ", " << p.y() << ") m";
-  return s.str();
+  return "(" + format_number(p.x()) + ", " + format_number(p.y()) + ") m";
 }
 
 void check_segment(const Vec2& a, const Vec2& b, std::size_t index) {
@@ -78,6 +77,25 @@ void CrackSet::extend(std::size_t k, const Vec2& new_tip) {
   ++version_;
 }
 
+const Vec2& CrackSet::tip(std::size_t k) const {
+  if (k >= cracks_.size())
+    throw InputError("crack " + std::to_string(k) + " does not exist (" + std::to_string(cracks_.size()) + " cracks)");
+  const Crack& c = cracks_[k];
+  if (!c.tip_at_end && !c.tip_at_start) throw InputError("crack " + std::to_string(k) + " has no tip");
+  return c.tip_at_end ? c.points.back() : c.points.front();
+}
+
+double CrackSet::distance(const Vec2& p) const {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& c : cracks_)
+    for (std::size_t i = 0; i + 1 < c.points.size(); ++i) {
+      const Vec2 a = c.points[i], ab = c.points[i + 1] - a;
+      const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+      best = std::min(best, (a + t * ab - p).norm());
+    }
+  return best;
+}
+
 bool CrackSet::crosses(std::size_t k, const Segment& s, const Vec2* tip) const {
   const auto& p = cracks_[k].points;
   for (std::size_t i = 0; i + 1 < p.size(); ++i) {
@@ -122,7 +140,7 @@ WeightDistance CrackSet::weight_distance_gradient(const Vec2& node, const Vec2& 
   const Crack& c = cracks_[crossed];
 
   if (method == CrackWeightMethod::diffraction) {
-    if (!(lambda >= 1)) throw InputError("diffraction exponent lambda = " + std::to_string(lambda) + " must be >= 1");
+    if (!(lambda >= 1)) throw InputError("diffraction exponent lambda (" + format_number(lambda) + ") must be >= 1");
     WeightDistance best;
     for (int end = 0; end < 2; ++end) {
       if (!(end == 0 ? c.tip_at_start : c.tip_at_end)) continue;
@@ -143,9 +161,9 @@ WeightDistance CrackSet::weight_distance_gradient(const Vec2& node, const Vec2& 
 
   // Transparency: where along the crack the segment node-x crosses it, and how far that is from a tip.
   if (!(support_radius_m > 0))
-    throw InputError("transparency needs the node's support radius h_I > 0 (got " + std::to_string(support_radius_m) + ")");
+    throw InputError("transparency needs the node's support radius h_I > 0 (got " + format_number(support_radius_m) + " m)");
   if (!(transparency.kappa >= 2))
-    throw InputError("transparency exponent kappa = " + std::to_string(transparency.kappa) + " must be >= 2");
+    throw InputError("transparency exponent kappa (" + format_number(transparency.kappa) + ") must be >= 2");
   const double s_bar = transparency.opaque_distance_m > 0 ? transparency.opaque_distance_m : support_radius_m;
   const auto& p = c.points;
   for (std::size_t i = 0; i + 1 < p.size(); ++i) {

@@ -56,6 +56,11 @@ public:
   void extend(std::size_t crack, const Vec2& new_tip);
   const std::vector<Crack>& cracks() const { return cracks_; }
   bool empty() const { return cracks_.empty(); }
+  /// The end that extend() moves: the last point if tip_at_end, else the first (InputError: no tip).
+  const Vec2& tip(std::size_t crack) const;
+  /// Shortest distance from p to any crack segment (+inf without cracks): keeps nodes and Gauss
+  /// points off crack lines, where the crossing test cannot tell the sides apart.
+  double distance(const Vec2& p) const;
 
   /// Eq. (13), visibility: true when a crack hides point x from node x_I (the segment x_I-x crosses
   /// or touches one of its segments).

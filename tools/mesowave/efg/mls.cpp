@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 
-#include "mesowave/core/error.hpp"
+#include "mesowave/core/check.hpp"
+#include "mesowave/core/format.hpp"
 
 namespace mesowave::efg {
 
@@ -44,11 +44,9 @@ std::pair<double, double> weight(WeightKind kind, double s) {
 namespace {
 
 std::string point_text(const Vec2& x, std::string_view where) {
-  std::ostringstream s;
-  s.precision(9);
-  s << "MLS shape functions at x = (" << x.x() << ", " << x.y() << ") m";
-  if (!where.empty()) s << " (" << where << ")";
-  return s.str();
+  std::string s = "MLS shape functions at x = (" + format_number(x.x()) + ", " + format_number(x.y()) + ") m";
+  if (!where.empty()) s += " (" + std::string(where) + ")";
+  return s;
 }
 
 double validated_max_radius(const std::vector<Vec2>& nodes, const std::vector<double>& radius) {
@@ -58,9 +56,7 @@ double validated_max_radius(const std::vector<Vec2>& nodes, const std::vector<do
   if (nodes.empty()) throw InputError("MLS: no nodes");
   double max_radius = 0;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
-    if (!(radius[i] > 0) || !std::isfinite(radius[i]))
-      throw InputError("MLS: support radius " + std::to_string(radius[i]) + " m of node " + std::to_string(i) +
-                       " must be > 0");
+    require_positive("MLS: support radius of node " + std::to_string(i), radius[i], "m");
     max_radius = std::max(max_radius, radius[i]);
   }
   return max_radius;
@@ -85,8 +81,7 @@ std::vector<double> support_radii_by_count(const std::vector<Vec2>& nodes, int c
   if (count < 1 || std::size_t(count) >= nodes.size())
     throw InputError("support radius by count: count " + std::to_string(count) + " must be in [1, " +
                      std::to_string(nodes.size()) + ") for " + std::to_string(nodes.size()) + " nodes");
-  if (!(factor > 0) || !std::isfinite(factor))
-    throw InputError("support radius by count: factor " + std::to_string(factor) + " must be > 0");
+  require_positive("support radius by count: factor", factor);
   const double spacing = typical_spacing(nodes);
   if (!(spacing > 0)) throw InputError("support radius by count: all nodes coincide");
   const NodeGrid grid(nodes, spacing);
@@ -113,10 +108,8 @@ std::vector<double> support_radii_by_count(const std::vector<Vec2>& nodes, int c
 }
 
 std::vector<double> support_radii_by_spacing(const std::vector<Vec2>& nodes, double spacing_m, double scale) {
-  if (!(spacing_m > 0) || !std::isfinite(spacing_m))
-    throw InputError("support radius by spacing: spacing " + std::to_string(spacing_m) + " m must be > 0");
-  if (!(scale > 0) || !std::isfinite(scale))
-    throw InputError("support radius by spacing: scale " + std::to_string(scale) + " must be > 0");
+  require_positive("support radius by spacing: spacing", spacing_m, "m");
+  require_positive("support radius by spacing: scale", scale);
   return std::vector<double>(nodes.size(), scale * spacing_m);
 }
 
@@ -129,7 +122,7 @@ MlsApproximation::MlsApproximation(std::vector<Vec2> nodes, std::vector<double> 
       max_radius_(validated_max_radius(nodes_, radius_)),
       grid_(nodes_, max_radius_) {
   if (!(options_.max_condition_number > 1))
-    throw InputError("MLS: max condition number " + std::to_string(options_.max_condition_number) + " must be > 1");
+    throw InputError("MLS: max condition number (" + format_number(options_.max_condition_number) + ") must be > 1");
 }
 
 double MlsApproximation::interpolate(const ShapeFunctions& sf, const std::vector<double>& u) const {
@@ -146,10 +139,15 @@ ShapeFunctions MlsApproximation::evaluate(const Vec2& x, std::string_view where)
   const bool with_cracks = cracks_ != nullptr && !cracks_->empty();
 
   // Weights and their gradients, Eq. (10), of every node whose (possibly bent) distance is inside its support.
-  std::vector<std::int32_t> candidates;
+  // Scratch reused between calls of one thread (evaluate stays safe to call concurrently).
+  thread_local std::vector<std::int32_t> candidates;
+  thread_local std::vector<double> w, wx, wy;
   grid_.within(x, max_radius_, candidates);
+  w.clear();
+  wx.clear();
+  wy.clear();
   ShapeFunctions sf;
-  std::vector<double> w, wx, wy;
+  sf.nodes.reserve(candidates.size());
   double h = 0;
   for (const auto i : candidates) {
     const Vec2& xi = nodes_[std::size_t(i)];
@@ -204,15 +202,11 @@ ShapeFunctions MlsApproximation::evaluate(const Vec2& x, std::string_view where)
   const double rcond = llt.info() == Eigen::Success ? llt.rcond() : 0.0;
   sf.condition_number = rcond > 0 ? 1 / rcond : std::numeric_limits<double>::infinity();
   if (!(sf.condition_number <= options_.max_condition_number)) {
-    std::ostringstream s;
-    s << point_text(x, where) << ": moment matrix A singular or ill-conditioned (";
-    if (rcond > 0)
-      s << "condition number " << sf.condition_number << " > " << options_.max_condition_number;
-    else
-      s << "a Cholesky pivot <= 0";
-    s << ") with " << n
-      << " nodes in reach (nodes collinear or too few around the point)";
-    throw InputError(s.str());
+    const std::string why = rcond > 0 ? "condition number " + format_significant(sf.condition_number, 3) + " > " +
+                                            format_number(options_.max_condition_number)
+                                      : std::string("a Cholesky pivot <= 0");
+    throw InputError(point_text(x, where) + ": moment matrix A singular or ill-conditioned (" + why + ") with " +
+                     std::to_string(n) + " nodes in reach (nodes collinear or too few around the point)");
   }
   Vec p = Vec::Zero(m), px = Vec::Zero(m), py = Vec::Zero(m);
   p(0) = 1;

@@ -74,6 +74,7 @@ public:
   /// Shape functions at x. Throws InputError naming x (and `where`, e.g. "Gauss point 17 of cell 3")
   /// when fewer nodes than basis terms reach x or A(x) is singular / above max_condition_number.
   /// A point ON a crack line: pass it moved off the line by a small distance to the side wanted.
+  /// Safe to call from several threads at once (the CrackSet must not change meanwhile).
   ShapeFunctions evaluate(const Vec2& x, std::string_view where = "") const;
   /// u^h(x) = sum phi_I u_I for nodal values u (one per node), Eq. (1).
   double interpolate(const ShapeFunctions& sf, const std::vector<double>& u) const;

@@ -4,13 +4,12 @@
 #include <cmath>
 #include <string>
 
-#include "mesowave/core/error.hpp"
+#include "mesowave/core/check.hpp"
 
 namespace mesowave::efg {
 
 NodeGrid::NodeGrid(const std::vector<Vec2>& nodes, double cell_size_m) : nodes_(nodes), cell_(cell_size_m) {
-  if (!(cell_size_m > 0) || !std::isfinite(cell_size_m))
-    throw InputError("node grid cell size " + std::to_string(cell_size_m) + " m must be > 0");
+  require_positive("node grid cell size", cell_size_m, "m");
   Vec2 lo = Vec2::Constant(0), hi = Vec2::Constant(0);
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     if (!nodes_[i].allFinite()) throw InputError("node " + std::to_string(i) + " has a non-finite coordinate");

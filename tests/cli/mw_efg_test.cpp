@@ -1,0 +1,77 @@
+// mw-efg end to end: the cantilever validation (errors, orders, CSV, ParaView files read back by
+// VTK, the run in the provenance database) and bad input - one line naming the value, exit 1,
+// nothing written.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_tool.hpp"
+
+using namespace mesowave::test;
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+TEST(MwEfg, CantileverConvergesAndWritesItsOutputs) {
+  TempDir dir;
+  const auto r = run_tool("mw-efg", {"cantilever", "--spacing-m", "4", "--refinements", "2", "--method", "both",
+                                     "--table", (dir / "c.csv").string(), "--snapshots", (dir / "vtk").string(),
+                                     "--out", (dir / "c.json").string(), "--db", (dir / "prov.sqlite").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(read_file(dir / "c.json"));
+  ASSERT_EQ(j["runs"].size(), 6u);
+  EXPECT_EQ(j["runs"][0]["method"], "EFG");
+  EXPECT_EQ(j["runs"][0]["nodes"], 13 * 4);  // 12 x 3 cells
+  EXPECT_EQ(j["runs"][2]["gauss_points"], 48 * 12 * 4);
+  EXPECT_EQ(j["runs"][3]["method"], "Q4 FEM");
+  // The Q4 FEM's L2 order is 2; the EFG's error is below the FEM's at every spacing.
+  for (const auto& order : j["orders"]["Q4 FEM"]["displacement_L2"]) EXPECT_NEAR(order.get<double>(), 2.0, 0.25);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_LT(j["runs"][k]["displacement_error_L2"].get<double>(), j["runs"][k + 3]["displacement_error_L2"].get<double>());
+  const std::string csv = read_file(dir / "c.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);
+  // ParaView's files, read back by VTK's own reader.
+  const auto v = run_command(fs::path(MESOWAVE_SOURCE_DIR) / "scripts/check-vtk", {(dir / "vtk/cantilever.pvd").string()});
+  if (v.exit_status == 2) ADD_FAILURE() << "VTK's Python module is missing: run scripts/install-deps";
+  ASSERT_EQ(v.exit_status, 0) << v.out << v.err;
+  const json vtk = json::parse(v.out);
+  EXPECT_EQ(vtk[0]["datasets"][0]["points"], 49 * 13);
+  EXPECT_EQ(vtk[0]["datasets"][0]["point_data"]["stress"]["components"], 6);
+  // The run is recorded with its metrics.
+  const auto show = run_tool("mw-prov", {"show", "1", "--json", "--db", (dir / "prov.sqlite").string()});
+  ASSERT_EQ(show.exit_status, 0) << show.err;
+  const json p = json::parse(show.out);
+  EXPECT_EQ(p["tool"], "mw-efg");
+  bool found = false;
+  for (const auto& m : p["metrics"]) found = found || m["name"] == "efg_52_nodes_displacement_error";
+  EXPECT_TRUE(found) << show.out;
+}
+
+TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{"cantilever", "--nu", "0.5"}, "nu"},
+      {{"cantilever", "--nu", "0.7", "--method", "fem"}, "0.7"},
+      {{"cantilever", "--support-scale", "0.6"}, "Gauss point"},  // a support with too few nodes
+      {{"cantilever", "--spacing-m", "-1"}, "--spacing-m (-1 m)"},
+      {{"cantilever", "--basis", "cubic"}, "cubic"},
+  };
+  for (const auto& c : cases) {
+    TempDir dir;
+    auto args = c.args;
+    args.insert(args.end(), {"--out", (dir / "o.json").string(), "--table", (dir / "t.csv").string()});
+    const auto r = run_tool("mw-efg", args);
+    EXPECT_EQ(r.exit_status, 1) << c.args[1] << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(count_files(dir.path()), 0u) << c.args[1];
+  }
+}
+
+TEST(MwEfg, HelpTeachesTheSubcommands) {
+  const auto r = run_tool("mw-efg", {"--help"});
+  EXPECT_EQ(r.exit_status, 0);
+  for (const char* word : {"cantilever", "Timoshenko", "--from"}) EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}

@@ -1,0 +1,174 @@
+#include "mesowave/efg/three_point_bending.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/efg/cohesive_crack.hpp"
+#include "mesowave/efg/cohesive_law.hpp"
+#include "mesowave/efg/constraints.hpp"
+#include "mesowave/efg/crack_growth.hpp"
+#include "mesowave/efg/discretisation.hpp"
+#include "mesowave/efg/elastic_model.hpp"
+#include "mesowave/efg/material.hpp"
+
+namespace mesowave::efg {
+
+namespace {
+
+std::string text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+void positive(double v, const std::string& what) {
+  if (!(v > 0) || !std::isfinite(v)) throw InputError("three-point bending: " + what + " (" + text(v) + ") must be > 0");
+}
+
+}  // namespace
+
+void ThreePointBendingOptions::validate() const {
+  positive(span_m, "span_m");
+  positive(depth_m, "depth_m");
+  positive(thickness_m, "thickness_m");
+  positive(notch_m, "notch_m");
+  if (!(notch_m < depth_m))
+    throw InputError("three-point bending: notch_m (" + text(notch_m) + ") must be less than the depth (" + text(depth_m) + ")");
+  positive(E_Pa, "E_Pa");
+  if (!(nu > -1 && nu < 0.5)) throw InputError("three-point bending: nu (" + text(nu) + ") must be in (-1, 0.5)");
+  positive(f_t_Pa, "f_t_Pa");
+  positive(G_f_J_m2, "G_f_J_m2");
+  positive(spacing_m, "spacing_m");
+  if (!(spacing_m <= 0.5 * (depth_m - notch_m)))
+    throw InputError("three-point bending: spacing_m (" + text(spacing_m) + ") must be at most half the ligament (" +
+                     text(0.5 * (depth_m - notch_m)) + ")");
+  positive(max_deflection_m, "max_deflection_m");
+  if (steps < 1) throw InputError("three-point bending: steps (" + std::to_string(steps) + ") must be >= 1");
+}
+
+ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  o.validate();
+  auto law = std::shared_ptr<const CohesiveLaw>(make_cohesive_law(o.law, {o.f_t_Pa, o.G_f_J_m2, o.law_keys}));
+
+  // nodes: an odd number of cells along the span (mid-span is a line of cell centres)
+  int nx = std::max(3, static_cast<int>(std::lround(o.span_m / o.spacing_m)));
+  if (nx % 2 == 0) ++nx;
+  const int ny = std::max(2, static_cast<int>(std::lround(o.depth_m / o.spacing_m)));
+  const Discretisation disc = rectangular_grid({0, 0, o.span_m, o.depth_m}, nx, ny, o.gauss);
+  const double h = std::max(o.span_m / nx, o.depth_m / ny), mid = 0.5 * o.span_m;
+
+  // the notch: a traction-free crack from below the bottom face (so the bottom edge is cut too) to its tip
+  CrackSet cracks;
+  Crack notch;
+  notch.points = {Vec2(mid, -h), Vec2(mid, o.notch_m)};
+  notch.tip_at_start = false;
+  notch.tip_at_end = true;
+  const std::size_t crack = cracks.add(notch);
+
+  MlsOptions mls_options;
+  mls_options.crack_method = o.crack_method;
+  const MlsApproximation mls(disc.nodes, support_radii_by_spacing(disc.nodes, h, o.support_scale), mls_options, &cracks);
+  ElasticMaterial2D material{o.E_Pa, o.nu, o.thickness_m, 0, PlaneState::plane_stress};
+  ElasticModel model(disc, material, mls);
+
+  const double half_plate = 0.5 * (o.span_m / nx);  // the load points: the nodes' columns either side of mid-span
+  std::vector<PointConstraint> bc = {
+      {Vec2(0, 0), 1, 0.0, "left support u_y"},
+      {Vec2(0, 0), 0, 0.0, "left support u_x"},
+      {Vec2(o.span_m, 0), 1, 0.0, "right support u_y"},
+      {Vec2(mid - half_plate, o.depth_m), 1, -1.0, "load point left u_y"},  // both move down by lambda [m]
+      {Vec2(mid + half_plate, o.depth_m), 1, -1.0, "load point right u_y"},
+  };
+  const ConstraintSet constraints(model, bc);
+
+  ThreePointBendingResult result;
+  result.nodes = disc.nodes.size();
+  result.gauss_points = disc.points.size();
+  result.dofs = model.dof_count();
+  auto load_of = [&](const Eigen::VectorXd& full_residual) {
+    const auto R = constraints.reactions(full_residual);
+    return -(R[3] + R[4]);
+  };
+  {
+    const auto elastic = solve_linear(model.stiffness(), Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.dof_count())),
+                                      constraints, 1.0);
+    result.elastic_stiffness_N_per_m = load_of(model.stiffness() * elastic.u);
+  }
+
+  CohesiveInterface interface(mls, law, o.thickness_m, 1e-6 * h, o.cohesive_gauss);
+  CohesiveCrackProblem problem(model, constraints, interface);
+
+  CrackGrowthOptions growth;
+  growth.rule = GrowthDirectionRule::prescribed;
+  growth.prescribed = Vec2::UnitY();
+  growth.segment_length_m = h;
+  Vec2 tip(mid, o.notch_m);
+  bool through = false;
+  auto inside = [&](const Vec2& x) { return x.x() > 0 && x.x() < o.span_m && x.y() > 0 && x.y() < o.depth_m; };
+  AfterConverged grow = [&](const Eigen::VectorXd& v, double lambda) {
+    if (through) return false;
+    const Eigen::VectorXd u = constraints.expand(v, lambda);
+    auto strain_at = [&](const Vec2& x) { return model.strain(x, u); };
+    auto next = grown_tip(tip, Vec2::UnitY(), o.f_t_Pa, o.E_Pa, growth, strain_at, inside);
+    if (!next) return false;
+    // the last segment runs to the top face (closer than half a segment: no sliver segment)
+    if (next->y() > o.depth_m - 0.5 * h) *next = Vec2(mid, o.depth_m), through = true;
+    cracks.extend(crack, *next);
+    interface.add_segment({tip, *next});
+    tip = *next;
+    problem.update();
+    return true;
+  };
+
+  result.curve.push_back({0, 0, 0, tip.y(), 0});
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(constraints.reduced_size()));
+  ControlOptions control;
+  control.newton = o.newton;
+  control.max_re_solves = 4 * (ny + 2);
+  std::vector<double> lambdas;
+  for (int i = 1; i <= o.steps; ++i) lambdas.push_back(o.max_deflection_m * i / o.steps);
+  auto on_point = [&](const Eigen::VectorXd& x, double lam, const StepReport& rep) {
+    const Eigen::VectorXd u = constraints.expand(x, lam);
+    const double P = load_of(problem.internal_force(u));
+    result.curve.push_back({lam, P, rep.iterations, tip.y(), interface.dissipated_energy_J()});
+    result.steps.push_back(rep);
+    result.newton_iterations += rep.iterations;
+    result.re_solves += rep.re_solves;
+    result.line_search_cuts += rep.line_search_cuts;
+    if (P > result.peak_load_N) result.peak_load_N = P, result.deflection_at_peak_m = lam;
+  };
+  double previous = 0;
+  bool failed = false;
+  for (double lambda : lambdas) {
+    const auto reports = solve_control_path(problem, v, {lambda}, control, grow, on_point, previous);
+    previous = lambda;
+    if (reports.empty() || !reports.back().converged) {
+      failed = true;
+      result.stop_reason = "step to deflection " + text(lambda * 1e3) + " mm did not converge";
+      break;
+    }
+    if (through && result.curve.back().load_N < o.stop_load_fraction * result.peak_load_N) {
+      result.stop_reason = "crack through the depth and the load below " + text(100 * o.stop_load_fraction) + " % of the peak";
+      break;
+    }
+  }
+  result.completed = !failed;
+  if (result.stop_reason.empty()) result.stop_reason = "maximum deflection reached";
+  for (std::size_t i = 1; i < result.curve.size(); ++i) {
+    const auto& a = result.curve[i - 1];
+    const auto& b = result.curve[i];
+    result.work_of_fracture_J += 0.5 * (a.load_N + b.load_N) * (b.deflection_m - a.deflection_m);
+  }
+  result.dissipated_J = interface.dissipated_energy_J();
+  result.cohesive_points = interface.points().size();
+  result.crack_path = cracks.cracks()[crack].points;
+  result.crack_path.front() = Vec2(mid, 0);  // the notch mouth on the bottom face (the polyline starts below it)
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace mesowave::efg

@@ -1,0 +1,82 @@
+#pragma once
+// The static three-point bending test of the shock paper's Section 4.1: the
+// notched plain-concrete beam of Koermeling and Reinhardt (1983) - E = 20 000
+// N/mm2, nu = 0.2, f_t = 2.4 N/mm2, G_f = 113 N/m; span 450 mm, depth 100 mm,
+// notch 50 mm, thickness 100 mm (the geometry as Rots 1988 and Wells and Sluys
+// 2001 model it: lab-data/shock-concrete/three-point-bending.toml) - in plane
+// stress under displacement control of the mid-span deflection.
+//
+// The model: the beam between its supports (length = span, simply supported at
+// the bottom corners: u_y = 0 at both, u_x = 0 at the left), loaded through two
+// points of the top face one node spacing apart, on either side of mid-span,
+// both moved down by the deflection (a narrow loading plate: the crack may then
+// reach the top face between them without cutting a load point off). The notch
+// is a traction-free crack on the mid-span line; the crack grows from its tip
+// in segments of one node spacing, vertical as the paper prescribes (the
+// principal directions at mid-span are too sensitive to follow), whenever the
+// St. Venant criterion holds just ahead of the tip; after each extension the
+// shape functions change and the step is solved again. The load is the sum of
+// the two load points' reactions. Nodes: a regular grid whose mid-span line is
+// a line of cell centres (an odd number of cells along the span), so no node
+// lies on the crack.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "mesowave/efg/crack.hpp"
+#include "mesowave/efg/geometry.hpp"
+#include "mesowave/efg/mls.hpp"
+#include "mesowave/efg/nonlinear_solver.hpp"
+
+namespace mesowave::efg {
+
+struct ThreePointBendingOptions {
+  // geometry [m]
+  double span_m = 0.450, depth_m = 0.100, notch_m = 0.050, thickness_m = 0.100;
+  // material (Section 4.1)
+  double E_Pa = 20e9, nu = 0.20, f_t_Pa = 2.4e6, G_f_J_m2 = 113;
+  std::string law = "exponential";             ///< cohesive_law.hpp registry name
+  std::map<std::string, double> law_keys;      ///< the law's own keys (alpha; alpha_t, f_c_Pa)
+  // discretisation
+  double spacing_m = 0.005;                    ///< target node spacing (the cells along the span: odd, so the nearest odd count)
+  int gauss = 2;                               ///< per direction per cell (the paper's 2)
+  double support_scale = 2.5;                  ///< support radius over the spacing
+  CrackWeightMethod crack_method = CrackWeightMethod::visibility;
+  int cohesive_gauss = 4;                      ///< Gauss points per cohesive segment
+  // loading
+  double max_deflection_m = 1.0e-3;
+  int steps = 100;                             ///< equal deflection steps
+  NewtonOptions newton{};
+  /// Stop early when the crack has reached the top face and the load has fallen below this fraction of the peak.
+  double stop_load_fraction = 0.005;
+  /// InputError naming the value: sizes <= 0, a notch not inside the depth, nu outside (-1, 0.5), f_t or G_f <= 0,
+  /// steps < 1, spacing above the ligament.
+  void validate() const;
+};
+
+struct CurvePoint {
+  double deflection_m = 0, load_N = 0;
+  int iterations = 0;
+  double crack_tip_y_m = 0;       ///< height of the crack tip above the bottom face
+  double dissipated_J = 0;        ///< energy dissipated in the cohesive zone so far
+};
+
+struct ThreePointBendingResult {
+  std::vector<CurvePoint> curve;          ///< from (0, 0)
+  std::vector<Vec2> crack_path;           ///< the polyline: notch mouth, notch tip, grown points
+  double peak_load_N = 0, deflection_at_peak_m = 0;
+  double work_of_fracture_J = 0;          ///< area under the curve (trapezoids)
+  double dissipated_J = 0;                ///< the cohesive zone's own account at the end
+  double elastic_stiffness_N_per_m = 0;   ///< the notched beam before any crack growth (a linear solve)
+  bool completed = false;                 ///< every step converged
+  std::string stop_reason;
+  // cost
+  std::size_t nodes = 0, gauss_points = 0, dofs = 0, cohesive_points = 0;
+  int newton_iterations = 0, re_solves = 0, line_search_cuts = 0;
+  double wall_s = 0;
+  std::vector<StepReport> steps;          ///< per accepted step
+};
+
+ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& options);
+
+}  // namespace mesowave::efg
