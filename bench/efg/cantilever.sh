@@ -30,7 +30,7 @@ for method in efg fem; do
         --out "$out/r.json" > /dev/null
       t1=$(date +%s.%N)
       jq -r --arg m "$method" --arg s "$s" --arg p "$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')" --arg rss "$(cat "$out/rss")" \
-        '.runs[0] | [$m, $s, .nodes, .gauss_points, .displacement_error_L2, .energy_error, .solution_s, ($p | tonumber),
+        '.runs[0] | [$m, $s, .nodes, .gauss_points, .displacement_error_L2, .energy_error, .wall_s, ($p | tonumber),
          (($rss | tonumber) / 1024)] | @csv' "$out/r.json" | tr -d '"' >> "$out/runs.csv"
     done
   done

@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "mesowave/efg/beam_theory.hpp"
-#include "mesowave/efg/cantilever_study.hpp"
+#include "mesowave/efg/cantilever.hpp"
 #include "mesowave/fem/plane_static.hpp"
 #include "support/input_error.hpp"
 
@@ -83,15 +83,16 @@ TEST(PlaneStatic, PatchTestUniformTractionGivesUniformStress) {
 }
 
 TEST(PlaneStatic, TimoshenkoCantileverConvergesWithOrderTwo) {
-  // efg/cantilever_study's Q4 run: the clamp holds the closed form's displacements at the nodes of
+  // efg/cantilever's Q4 run: the clamp holds the closed form's displacements at the nodes of
   // x = 0, the end carries its traction; errors over the elements with 4 x 4 Gauss points.
-  efg::CantileverSetup setup;
-  setup.error_gauss = 4;
+  const efg::CantileverBeam beam;
+  efg::CantileverOptions options;
+  options.error_gauss = 4;
   std::vector<double> err_u, err_e;
   for (int k : {1, 2, 4, 8}) {
-    setup.cells_x = 8 * k;
-    setup.cells_y = 2 * k;
-    const auto r = efg::run_fem_cantilever(setup);
+    options.cells_x = 8 * k;
+    options.cells_y = 2 * k;
+    const auto r = efg::run_fem_cantilever(beam, options);
     err_u.push_back(r.errors.displacement_L2);
     err_e.push_back(r.errors.energy);
   }
