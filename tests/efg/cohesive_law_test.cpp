@@ -37,9 +37,9 @@ TEST(CohesiveLaw, RegistryNamesAndKeys) {
   EXPECT_EQ(test::input_error_of([] { make_cohesive_law("hordijk", beam()); }),
             "cohesive law (\"hordijk\") must be exponential or bilinear");
   EXPECT_EQ(test::input_error_of([] { make_cohesive_law("exponential", {f_t, 0, {}}); }),
-            "cohesive law exponential: G_f_J_m2 (0) must be > 0");
+            "cohesive law exponential: G_f_J_m2 (0) must be positive and finite");
   EXPECT_EQ(test::input_error_of([] { make_cohesive_law("bilinear", {-1, G_f, {}}); }),
-            "cohesive law bilinear: f_t_Pa (-1) must be > 0");
+            "cohesive law bilinear: f_t_Pa (-1) must be positive and finite");
   EXPECT_NE(test::input_error_of([] { make_cohesive_law("bilinear", beam({{"alpha", 2}})); }).find("unknown key alpha"),
             std::string::npos);
   EXPECT_NE(test::input_error_of([] { make_cohesive_law("exponential", beam({{"alpha", -1}})); }).find("alpha (-1)"),

@@ -164,6 +164,14 @@ void CohesiveCrackProblem::evaluate(const Eigen::VectorXd& v, double lambda, Eig
   if (load_derivative) *load_derivative = constraints_->reduce(Eigen::VectorXd(K_ * constraints_->g(1.0) + Kc * constraints_->g(1.0)));
 }
 
+double CohesiveCrackProblem::step_limit(const Eigen::VectorXd&, const Eigen::VectorXd& dv, double) {
+  const Eigen::VectorXd du = constraints_->T() * dv;  // at fixed lambda the prescribed part does not move
+  double largest = 0;
+  for (std::size_t k = 0; k < interface_->points().size(); ++k) largest = std::max(largest, std::abs(interface_->opening_m(k, du)));
+  const double allowed = 0.25 * interface_->law().w_max_m();
+  return largest > allowed ? allowed / largest : 1.0;
+}
+
 void CohesiveCrackProblem::commit(const Eigen::VectorXd& v, double lambda) { interface_->commit(constraints_->expand(v, lambda)); }
 
 }  // namespace mesowave::efg

@@ -91,6 +91,8 @@ public:
   void evaluate(const Eigen::VectorXd& v, double lambda, Eigen::VectorXd& residual, Eigen::SparseMatrix<double>* tangent,
                 Eigen::VectorXd* load_derivative) override;
   void commit(const Eigen::VectorXd& v, double lambda) override;
+  /// No opening may change by more than a quarter of w_max in one Newton iteration.
+  double step_limit(const Eigen::VectorXd& v, const Eigen::VectorXd& dv, double lambda) override;
   /// After the cracks changed: shape functions of the model and the interface, and K again.
   void update();
   /// Full internal force f_int(u) = K u + f_c(u) (its reactions are the constraint forces).

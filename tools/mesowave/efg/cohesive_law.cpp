@@ -2,28 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
+#include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
 
 namespace mesowave::efg {
 
 namespace {
 
-std::string number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-void require_positive(double v, const std::string& what) {
-  if (!(v > 0) || !std::isfinite(v)) throw InputError(what + " (" + number(v) + ") must be > 0");
-}
-
 /// The entry's keys from `p.keys`: fallbacks for absent ones, InputError for unknown or out-of-range ones.
 std::map<std::string, double> read_keys(const CohesiveLawEntry& entry, const CohesiveParameters& p) {
-  require_positive(p.f_t_Pa, "cohesive law " + entry.name + ": f_t_Pa");
-  require_positive(p.G_f_J_m2, "cohesive law " + entry.name + ": G_f_J_m2");
+  require_positive("cohesive law " + entry.name + ": f_t_Pa", p.f_t_Pa);
+  require_positive("cohesive law " + entry.name + ": G_f_J_m2", p.G_f_J_m2);
   std::map<std::string, double> out;
   for (const auto& [key, value] : p.keys) {
     auto spec = std::find_if(entry.keys.begin(), entry.keys.end(), [&](const CohesiveKeySpec& k) { return k.key == key; });
@@ -33,8 +24,8 @@ std::map<std::string, double> read_keys(const CohesiveLawEntry& entry, const Coh
       throw InputError("cohesive law " + entry.name + ": unknown key " + key + " (known: " + known + ")");
     }
     if (!(value >= spec->min && value <= spec->max))
-      throw InputError("cohesive law " + entry.name + ": " + key + " (" + number(value) + ") must be in [" +
-                       number(spec->min) + ", " + number(spec->max) + "] " + spec->unit);
+      throw InputError("cohesive law " + entry.name + ": " + key + " (" + format_number(value) + ") must be in [" +
+                       format_number(spec->min) + ", " + format_number(spec->max) + "] " + spec->unit);
     out[key] = value;
   }
   for (const auto& k : entry.keys) out.emplace(k.key, k.fallback);
@@ -89,9 +80,9 @@ std::unique_ptr<CohesiveLaw> make_cohesive_law(std::string_view name, const Cohe
 
 ExponentialCohesiveLaw::ExponentialCohesiveLaw(double f_t_Pa, double G_f_J_m2, double alpha)
     : f_t_(f_t_Pa), alpha_(alpha), w_max_((1 + alpha) * G_f_J_m2 / f_t_Pa) {
-  require_positive(f_t_Pa, "exponential cohesive law: f_t_Pa");
-  require_positive(G_f_J_m2, "exponential cohesive law: G_f_J_m2");
-  require_positive(alpha, "exponential cohesive law: alpha");
+  require_positive("exponential cohesive law: f_t_Pa", f_t_Pa);
+  require_positive("exponential cohesive law: G_f_J_m2", G_f_J_m2);
+  require_positive("exponential cohesive law: alpha", alpha);
 }
 
 double ExponentialCohesiveLaw::traction_Pa(double w_m) const {
@@ -113,10 +104,10 @@ double bilinear_beta_t(double f_c_Pa) {
 
 BilinearCohesiveLaw::BilinearCohesiveLaw(double f_t_Pa, double G_f_J_m2, double alpha_t, double beta_t)
     : f_t_(f_t_Pa), alpha_t_(alpha_t), beta_t_(beta_t), w_max_(2 * G_f_J_m2 / (f_t_Pa * (alpha_t + beta_t))) {
-  require_positive(f_t_Pa, "bilinear cohesive law: f_t_Pa");
-  require_positive(G_f_J_m2, "bilinear cohesive law: G_f_J_m2");
-  if (!(alpha_t > 0 && alpha_t < 1)) throw InputError("bilinear cohesive law: alpha_t (" + number(alpha_t) + ") must be in (0, 1)");
-  if (!(beta_t > 0 && beta_t < 1)) throw InputError("bilinear cohesive law: beta_t (" + number(beta_t) + ") must be in (0, 1)");
+  require_positive("bilinear cohesive law: f_t_Pa", f_t_Pa);
+  require_positive("bilinear cohesive law: G_f_J_m2", G_f_J_m2);
+  if (!(alpha_t > 0 && alpha_t < 1)) throw InputError("bilinear cohesive law: alpha_t (" + format_number(alpha_t) + ") must be in (0, 1)");
+  if (!(beta_t > 0 && beta_t < 1)) throw InputError("bilinear cohesive law: beta_t (" + format_number(beta_t) + ") must be in (0, 1)");
 }
 
 double BilinearCohesiveLaw::traction_Pa(double w_m) const {

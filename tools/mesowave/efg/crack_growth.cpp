@@ -1,9 +1,9 @@
 #include "mesowave/efg/crack_growth.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
 
 namespace mesowave::efg {
 
@@ -31,7 +31,7 @@ Vec2 growth_direction(const Eigen::Vector3d& strain, const Vec2& heading, const 
 }
 
 void validate(const CrackGrowthOptions& o) {
-  auto text = [](double v) { std::ostringstream s; s << v; return s.str(); };
+  auto text = [](double v) { return format_number(v); };
   if (!(o.segment_length_m > 0)) throw InputError("crack growth: segment length (" + text(o.segment_length_m) + " m) must be > 0");
   if (!(o.probe_fraction > 0 && o.probe_fraction <= 1))
     throw InputError("crack growth: probe fraction (" + text(o.probe_fraction) + ") must be in (0, 1]");

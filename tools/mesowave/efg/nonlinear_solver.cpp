@@ -63,7 +63,8 @@ StepReport newton_solve(NonlinearProblem& problem, Eigen::VectorXd& v, double la
     if (!finite(dv)) return rep;
     ++rep.iterations;
     // backtracking on |r|: halve the step while the residual does not fall enough; keep the best
-    double s = 1, best_s = 1, best_norm = std::numeric_limits<double>::infinity();
+    const double s_max = std::clamp(problem.step_limit(v, dv, lambda), 1e-6, 1.0);
+    double s = s_max, best_s = s_max, best_norm = std::numeric_limits<double>::infinity();
     for (int cut = 0;; ++cut) {
       problem.evaluate(v + s * dv, lambda, r_trial, nullptr, nullptr);
       const double n = r_trial.norm();
@@ -185,6 +186,15 @@ std::vector<StepReport> solve_arc_length(NonlinearProblem& problem, Eigen::Vecto
     const double tol = std::max(o.newton.tolerance * scale, o.newton.absolute_tolerance);
     problem.evaluate(v_new, lambda_new, r, &K, &dr_dlambda);
     rep.residual_norms.push_back(r.norm());
+    // the new iterate (v + Dv, lambda + Dlam): residual and tangent there; false when they are not finite
+    auto accept = [&] {
+      v_new = v + Dv;
+      lambda_new = lambda + Dlam;
+      ++rep.iterations;
+      problem.evaluate(v_new, lambda_new, r, &K, &dr_dlambda);
+      rep.residual_norms.push_back(r.norm());
+      return std::isfinite(rep.residual_norms.back());
+    };
     while (rep.residual_norms.back() > tol && rep.iterations < o.newton.max_iterations) {
       if (!lu.factor(K)) break;
       const Eigen::VectorXd dv_r = lu.solve(-r);
@@ -196,12 +206,7 @@ std::vector<StepReport> solve_arc_length(NonlinearProblem& problem, Eigen::Vecto
         if (!std::isfinite(d)) break;
         Dv = base + d * dv_t;
         Dlam += d;
-        v_new = v + Dv;
-        lambda_new = lambda + Dlam;
-        ++rep.iterations;
-        problem.evaluate(v_new, lambda_new, r, &K, &dr_dlambda);
-        rep.residual_norms.push_back(r.norm());
-        if (!std::isfinite(rep.residual_norms.back())) break;
+        if (!accept()) break;
         continue;
       }
       const double a = dv_t.squaredNorm(), b = 2 * dv_t.dot(base), c = base.squaredNorm() - dl * dl;
@@ -229,12 +234,7 @@ std::vector<StepReport> solve_arc_length(NonlinearProblem& problem, Eigen::Vecto
       }
       Dv += s * (Dv_full - Dv);
       Dlam += s * (Dlam_full - Dlam);
-      v_new = v + Dv;
-      lambda_new = lambda + Dlam;
-      ++rep.iterations;
-      problem.evaluate(v_new, lambda_new, r, &K, &dr_dlambda);
-      rep.residual_norms.push_back(r.norm());
-      if (!std::isfinite(rep.residual_norms.back())) break;
+      if (!accept()) break;
     }
     rep.converged = rep.residual_norms.back() <= tol && std::abs((indirect ? c.dot(Dv) : Dv.norm()) - dl) <= 1e-6 * dl;
     if (rep.converged && after) {  // a crack grew: re-solve at the reached lambda

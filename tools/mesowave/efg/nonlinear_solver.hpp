@@ -33,6 +33,10 @@ public:
                         Eigen::SparseMatrix<double>* tangent, Eigen::VectorXd* load_derivative) = 0;
   /// A step converged at (v, lambda): history variables (the largest crack openings) move on.
   virtual void commit(const Eigen::VectorXd& /*v*/, double /*lambda*/) {}
+  /// The largest fraction (0, 1] of the Newton step dv from v that the problem accepts (default 1): a cohesive
+  /// crack limits the change of any opening per iteration, so that Newton cannot leap to a far-away solution (the
+  /// fully opened crack, a mechanism at zero load) when a tangent softens.
+  virtual double step_limit(const Eigen::VectorXd& /*v*/, const Eigen::VectorXd& /*dv*/, double /*lambda*/) { return 1.0; }
   /// The force scale convergence is measured against (default: |dr/dlambda| |lambda|, the norm of the load or of
   /// the forces the prescribed displacements raise; 1 where that is 0).
   virtual double residual_scale(const Eigen::VectorXd& v, double lambda);

@@ -15,8 +15,8 @@
 // in segments of one node spacing, vertical as the paper prescribes (the
 // principal directions at mid-span are too sensitive to follow), whenever the
 // St. Venant criterion holds just ahead of the tip, up to half a segment below
-// the top face (the compression zone stays: a crack through the depth would
-// leave the halves a zero-load mechanism); after each extension the shape
+// the top face (a crack through the depth leaves the halves a zero-load
+// mechanism that Newton finds: see the .cpp); after each extension the shape
 // functions change and the step is solved again. The load is the sum of
 // the two load points' reactions. Nodes: a regular grid whose mid-span line is
 // a line of cell centres (an odd number of cells along the span), so no node
@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "mesowave/efg/crack.hpp"
+#include "mesowave/efg/crack_growth.hpp"
 #include "mesowave/efg/geometry.hpp"
 #include "mesowave/efg/mls.hpp"
 #include "mesowave/efg/nonlinear_solver.hpp"
@@ -45,6 +46,8 @@ struct ThreePointBendingOptions {
   double support_scale = 2.0;                  ///< support radius over the spacing (2: about 12 nodes in a support, the paper's 4 to 10 near faces and corners)
   CrackWeightMethod crack_method = CrackWeightMethod::visibility;
   int cohesive_gauss = 4;                      ///< Gauss points per cohesive segment
+  /// Vertical, as the paper prescribes for this beam, or orthogonal to the largest principal strain.
+  GrowthDirectionRule growth = GrowthDirectionRule::prescribed;
   // loading
   /// Distance between the two load points on the top face (a loading plate's edges): fixed, not tied to the
   /// spacing, so that grids of any spacing (and the FEM) solve the same problem - a point load's displacement
