@@ -21,8 +21,8 @@ ThreePointBendingOptions coarse(const std::string& law) {
   ThreePointBendingOptions o;
   o.law = law;
   o.spacing_m = 0.01;
-  o.max_deflection_m = 0.6e-3;
-  o.steps = 30;
+  o.max_deflection_m = 0.5e-3;
+  o.steps = 20;
   return o;
 }
 
@@ -83,12 +83,12 @@ TEST(ThreePointBending, BothLawsCurvesEnergyAndCrackPath) {
     ASSERT_TRUE(r->completed) << r->stop_reason;
     std::printf("%s: peak %g N at %g mm, work %g, dissipated %g, stored %g N mm\n", r == &exp ? "exponential" : "bilinear",
                 r->peak_load_N, r->deflection_at_peak_m * 1e3, r->work_of_fracture_J * 1e3, r->dissipated_J * 1e3, r->stored_J * 1e3);
-    ASSERT_GE(r->curve.size(), 31u);  // 30 steps and a point before each crack extension
+    ASSERT_GE(r->curve.size(), 21u);  // 20 steps and a point before each crack extension
 
     // pre-peak: the first step is elastic (the notch-tip segment is still tied by its initial secant)
     EXPECT_NEAR(r->curve[1].load_N / (r->curve[1].deflection_m * r->elastic_stiffness_N_per_m), 1, 0.02);
     // softening: the load at the end is a fraction of the peak
-    EXPECT_LT(r->curve.back().load_N, 0.3 * r->peak_load_N);
+    EXPECT_LT(r->curve.back().load_N, 0.4 * r->peak_load_N);
     // energy balance: the work done (trapezoids) = dissipated in the cohesive zone + elastic energy left
     EXPECT_NEAR(r->work_of_fracture_J / (r->dissipated_J + r->stored_J), 1, 0.03);
     // the crack: vertical at mid-span from the notch tip to half a segment below the top face
