@@ -216,8 +216,8 @@ TEST(Mls, TooFewNodesNamesThePoint) {
   MlsOptions quadratic;
   quadratic.basis = Basis::quadratic;
   const MlsApproximation q(nodes, support_radii_by_spacing(nodes, kSpacing, 0.8), quadratic);
-  EXPECT_NE(test::input_error_of([&] { q.evaluate(Vec2(0.075, 0.075)); }).find("4 nodes reach the point, the quadratic basis needs at least 6"),
-            std::string::npos);
+  const std::string few = test::input_error_of([&] { q.evaluate(Vec2(0.075, 0.075)); });
+  EXPECT_NE(few.find("4 nodes reach the point, the quadratic basis needs at least 6"), std::string::npos) << few;
 }
 
 TEST(Mls, SingularMomentMatrixNamesThePoint) {
@@ -245,8 +245,8 @@ TEST(Mls, BadConstructionIsNamed) {
   auto radii = std::vector<double>(9, 1.0);
   radii[4] = -1;
   EXPECT_NE(test::input_error_of([&] { MlsApproximation(nodes, radii); }).find("of node 4"), std::string::npos);
-  EXPECT_NE(test::input_error_of([&] { MlsApproximation(nodes, std::vector<double>(9, 1.0)).evaluate(Vec2(NAN, 0)); }).find("not finite"),
-            std::string::npos);
+  const MlsApproximation mls(nodes, std::vector<double>(9, 1.0));
+  EXPECT_NE(test::input_error_of([&] { mls.evaluate(Vec2(NAN, 0)); }).find("not finite"), std::string::npos);
 }
 
 TEST(Mls, SpeedOnAHundredByTwentyGrid) {

@@ -73,4 +73,19 @@ CantileverErrors cantilever_errors(const CantileverBeam& beam,
 double three_point_bending_deflection_m(double P_N, double span_m, double depth_m, double t_m, double E_Pa,
                                         double nu);
 
+/// The extra load-point deflection a notch (a crack of depth a from the tension face) adds to the
+/// simply supported beam under a central load, by linear elastic fracture mechanics: Tada, Paris &
+/// Irwin, The Stress Analysis of Cracks Handbook (3rd ed., 2000), p. 2.17, three-point bend S/W = 4:
+///   delta_notch = 3 P S^2 / (2 t W^2 E') V2(a/W),
+///   V2(x) = (x / (1 - x))^2 (5.58 - 19.57 x + 36.82 x^2 - 34.94 x^3 + 12.77 x^4),
+/// E' = E in plane stress. Fitted for S/W = 4 (within about 1 % for any a/W); for other
+/// slenderness a first estimate. Beside the beam's own deflection it gives the notched beam's
+/// stiffness 1 / (delta_beam + delta_notch) per newton. InputError for sizes <= 0 or a / W outside (0, 1).
+double three_point_bending_notch_deflection_m(double P_N, double span_m, double depth_m, double notch_m, double t_m,
+                                              double E_Pa);
+
+/// Tada's stress intensity factor of the same beam, K_I = sigma sqrt(pi a) F(a/W), sigma = 3 P S / (2 t W^2),
+/// F(x) = 1.090 - 1.735 x + 8.20 x^2 - 14.18 x^3 + 14.57 x^4 (S/W = 4, p. 2.16) [Pa sqrt(m)].
+double three_point_bending_stress_intensity(double P_N, double span_m, double depth_m, double notch_m, double t_m);
+
 }  // namespace mesowave::efg

@@ -1,20 +1,22 @@
 #pragma once
 // Moving least squares (MLS) shape functions of the element-free Galerkin method, Eqs. (1)-(12) of
-// Larcher and Stempniewski (seed 004, Section 2.1), after Belytschko, Lu and Gu (1994):
+// Larcher and Stempniewski (seed 004, Section 2.1), after Belytschko, Lu and Gu (1994, "Element-free
+// Galerkin methods", IJNME 37: 229-256):
 //   u^h(x) = sum_I phi_I(x) u_I,  phi_I(x) = p^T(x) A^-1(x) w_I(x) p(x_I)          Eqs. (1), (9)
 //   A(x) = sum_I w_I(x) p(x_I) p^T(x_I) = P^T W P                                  Eq. (4)
 //   w_I(x) = w(s), s = d_I(x) / h_I                                                 Eq. (10)
 // with d_I = |x - x_I| away from cracks, and the distance a CrackSet bends or cuts near them, Eq. (13).
-// Derivatives (Belytschko et al. 1996): with A gamma = p,
+// Derivatives (Belytschko, Krongauz, Organ, Fleming and Krysl 1996, "Meshless methods: an overview
+// and recent developments", CMAME 139: 3-47): with A gamma = p,
 //   phi_I = w_I gamma^T p_I,  phi_I,x = w_I gamma_x^T p_I + w_I,x gamma^T p_I,
 //   A gamma_x = p_x - A_x gamma,  A_x = sum w_I,x p_I p_I^T,  w_I,x = w'(s) d_I,x / h_I.
 // Robustness: the basis is evaluated in shifted, scaled coordinates (x_I - x) / h, h the largest
 // support radius reaching x. The shape functions do not change (a complete basis spans the same space
 // under any affine map), but A's entries become O(1) and its condition number measures the node
 // geometry, not the coordinates' units or origin. A is factorised by Cholesky (LLT; a non-positive
-// pivot is a singular A); its 1-norm condition number is estimated (Eigen's rcond) and reported. Fewer nodes than basis terms, a
-// singular A or one above max_condition_number is an InputError naming the point: never a silent
-// wrong answer.
+// pivot is a singular A); its 1-norm condition number is estimated (Eigen's rcond) and reported.
+// Fewer nodes than basis terms, a singular A or one above max_condition_number is an InputError
+// naming the point: never a silent wrong answer.
 #include <cstdint>
 #include <string_view>
 #include <utility>
@@ -46,8 +48,8 @@ struct MlsOptions {
   WeightKind weight = WeightKind::quartic_spline;
   CrackWeightMethod crack_method = CrackWeightMethod::visibility;
   double diffraction_lambda = 2.0;      ///< Organ et al. recommend 1 or 2; 2 keeps dphi continuous
-  TransparencyOptions transparency{};   ///< for crack_method = transparency
   double max_condition_number = 1e12;   ///< above it a point's moment matrix A is refused
+  TransparencyOptions transparency{};   ///< for crack_method = transparency
 };
 
 /// Support radii h_i, Eq. (10): the distance to the `count`-th nearest other node times `factor`

@@ -1,0 +1,116 @@
+// mw-efg end to end: the cantilever validation (errors, orders, CSV, ParaView files read back by
+// VTK, the run in the provenance database), a short bending run with every output, and bad input - one line naming the value, exit 1,
+// nothing written.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_tool.hpp"
+
+using namespace mesowave::test;
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+TEST(MwEfg, CantileverConvergesAndWritesItsOutputs) {
+  TempDir dir;
+  const auto r = run_tool("mw-efg", {"cantilever", "--spacing-m", "4", "--refinements", "2", "--method", "both",
+                                     "--table", (dir / "c.csv").string(), "--snapshots", (dir / "vtk").string(),
+                                     "--out", (dir / "c.json").string(), "--db", (dir / "prov.sqlite").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(read_file(dir / "c.json"));
+  ASSERT_EQ(j["runs"].size(), 6u);
+  EXPECT_EQ(j["runs"][0]["method"], "EFG");
+  EXPECT_EQ(j["runs"][0]["nodes"], 13 * 4);  // 12 x 3 cells
+  EXPECT_EQ(j["runs"][2]["gauss_points"], 48 * 12 * 4);
+  EXPECT_EQ(j["runs"][3]["method"], "Q4 FEM");
+  // The Q4 FEM's L2 order is 2; the EFG's error is below the FEM's at every spacing.
+  for (const auto& order : j["orders"]["Q4 FEM"]["displacement_L2"]) EXPECT_NEAR(order.get<double>(), 2.0, 0.25);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_LT(j["runs"][k]["displacement_error_L2"].get<double>(), j["runs"][k + 3]["displacement_error_L2"].get<double>());
+  const std::string csv = read_file(dir / "c.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);
+  // ParaView's files, read back by VTK's own reader.
+  const auto v = run_command(fs::path(MESOWAVE_SOURCE_DIR) / "scripts/check-vtk", {(dir / "vtk/cantilever.pvd").string()});
+  if (v.exit_status == 2) ADD_FAILURE() << "VTK's Python module is missing: run scripts/install-deps";
+  ASSERT_EQ(v.exit_status, 0) << v.out << v.err;
+  const json vtk = json::parse(v.out);
+  EXPECT_EQ(vtk[0]["datasets"][0]["points"], 49 * 13);  // the finest run's nodes
+  EXPECT_EQ(vtk[0]["datasets"][0]["point_data"]["stress"]["components"], 6);
+  // The run is recorded with its metrics.
+  const auto show = run_tool("mw-prov", {"show", "1", "--json", "--db", (dir / "prov.sqlite").string()});
+  ASSERT_EQ(show.exit_status, 0) << show.err;
+  const json p = json::parse(show.out);
+  EXPECT_EQ(p["tool"], "mw-efg");
+  bool found = false;
+  for (const auto& m : p["metrics"]) found = found || m["name"] == "efg_52_nodes_displacement_error";
+  EXPECT_TRUE(found) << show.out;
+}
+
+TEST(MwEfg, BendingWritesCurvePlotCrackAndSummary) {
+  TempDir dir;
+  const fs::path lab = fs::path(MESOWAVE_SOURCE_DIR) / "lab-data/shock-concrete/three-point-bending.toml";
+  const auto r = run_tool("mw-efg", {"bending", "--from", lab.string(), "--law", "bilinear", "--spacing-mm", "10",
+                                     "--max-deflection-mm", "0.2", "--steps", "10", "--fem-refinement", "1", "--curve",
+                                     (dir / "ld.csv").string(), "--plot", (dir / "ld.png").string(), "--crack-path",
+                                     (dir / "crack.csv").string(), "--snapshots", (dir / "vtk").string(), "--out",
+                                     (dir / "b.json").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(read_file(dir / "b.json"));
+  EXPECT_EQ(j["law"], "bilinear");
+  EXPECT_EQ(j["material"]["G_f_N_m"], 113.0);  // from the lab-data file
+  EXPECT_NEAR(j["G_f_times_ligament_Nmm"].get<double>(), 565.0, 1e-9);
+  EXPECT_GT(j["peak_load_N"].get<double>(), 0);
+  const std::size_t points = j["cost"]["curve_points"];
+  EXPECT_GE(points, 11u);  // (0, 0), 10 steps, the state before each crack extension
+  // The stiffness beside its references: the FEM of the same beam, beam theory above both.
+  const auto& k = j["elastic_stiffness"];
+  EXPECT_LT(k["fem_notched_N_per_mm"].get<double>(), k["beam_theory_plus_lefm_notch_N_per_mm"].get<double>());
+  EXPECT_NEAR(k["efg_over_fem"].get<double>(), 1.0, 0.3);
+  const std::string curve = read_file(dir / "ld.csv");
+  EXPECT_EQ(std::size_t(std::count(curve.begin(), curve.end(), '\n')), points + 1);
+  EXPECT_EQ(curve.rfind("deflection_mm,load_N", 0), 0u);
+  EXPECT_GT(fs::file_size(dir / "ld.png"), 1000u);
+  EXPECT_EQ(read_file(dir / "crack.csv").rfind("x_mm,y_mm\n225,0\n225,50", 0), 0u);
+  const auto v = run_command(fs::path(MESOWAVE_SOURCE_DIR) / "scripts/check-vtk", {(dir / "vtk/bending.pvd").string()});
+  ASSERT_EQ(v.exit_status, 0) << v.out << v.err;
+  EXPECT_EQ(json::parse(v.out)[0]["datasets"].size(), 2 * points);
+}
+
+TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{"cantilever", "--nu", "0.5"}, "nu"},
+      {{"cantilever", "--nu", "0.7", "--method", "fem"}, "0.7"},
+      {{"cantilever", "--support-scale", "0.6"}, "Gauss point"},  // a support with too few nodes
+      {{"cantilever", "--spacing-m", "-1"}, "--spacing-m (-1 m)"},
+      {{"cantilever", "--basis", "cubic"}, "cubic"},
+      {{"bending", "--notch-mm", "120"}, "notch"},  // a notch deeper than the beam
+      {{"bending", "--nu", "0.5"}, "nu (0.5)"},
+      {{"bending", "--G-f-N-m", "0"}, "G_f"},
+      {{"bending", "--f-t-MPa", "-1"}, "f_t"},
+      {{"bending", "--support-scale", "0.5", "--fem-refinement", "0"}, "nodes reach"},  // a support with too few nodes
+      {{"bending", "--law", "linear"}, "linear"},
+      {{"bending", "--law-key", "alpha"}, "alpha"},
+  };
+  for (const auto& c : cases) {
+    TempDir dir;
+    auto args = c.args;
+    args.insert(args.end(), {"--out", (dir / "o.json").string()});
+    if (c.args[0] == "cantilever") args.insert(args.end(), {"--table", (dir / "t.csv").string()});
+    else args.insert(args.end(), {"--curve", (dir / "c.csv").string(), "--snapshots", (dir / "vtk").string()});
+    const auto r = run_tool("mw-efg", args);
+    EXPECT_EQ(r.exit_status, 1) << c.args[1] << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(count_files(dir.path()), 0u) << c.args[1];
+  }
+}
+
+TEST(MwEfg, HelpTeachesTheSubcommands) {
+  const auto r = run_tool("mw-efg", {"--help"});
+  EXPECT_EQ(r.exit_status, 0);
+  for (const char* word : {"cantilever", "bending", "Timoshenko", "Koermeling", "--from"}) EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}

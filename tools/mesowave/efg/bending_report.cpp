@@ -1,0 +1,136 @@
+#include "mesowave/efg/bending_report.hpp"
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
+
+namespace mesowave::efg {
+
+ThreePointBendingOptions BendingCommandLine::resolve() const {
+  ThreePointBendingOptions o = options;
+  o.E_Pa = E_GPa * 1e9;
+  o.f_t_Pa = f_t_MPa * 1e6;
+  o.span_m = span_mm * 1e-3;
+  o.depth_m = depth_mm * 1e-3;
+  o.notch_m = notch_mm * 1e-3;
+  o.thickness_m = thickness_mm * 1e-3;
+  o.spacing_m = spacing_mm * 1e-3;
+  o.load_width_m = load_width_mm * 1e-3;
+  o.max_deflection_m = max_deflection_mm * 1e-3;
+  o.crack_method = parse_crack_weight_method(crack_weight);
+  o.law_keys = parse_law_keys(law_keys);
+  o.validate();
+  return o;
+}
+
+void add_bending_options(CLI::App& app, BendingCommandLine& v) {
+  ThreePointBendingOptions& o = v.options;
+  app.add_option("--law", o.law, "Cohesive law: exponential (Eqs. 19-20) | bilinear (Eqs. 21-23)")->capture_default_str();
+  app.add_option("--law-key", v.law_keys, "A law's own key, KEY=VALUE (exponential: alpha; bilinear: alpha_t, f_c_Pa)");
+  app.add_option("--E-GPa", v.E_GPa, "Young's modulus")->capture_default_str();
+  app.add_option("--nu", o.nu, "Poisson's ratio")->capture_default_str();
+  app.add_option("--f-t-MPa", v.f_t_MPa, "Tensile strength f_t")->capture_default_str();
+  app.add_option("--G-f-N-m", o.G_f_J_m2, "Fracture energy G_f [N/m]")->capture_default_str();
+  app.add_option("--span-mm", v.span_mm, "Span between the supports (the model's length)")->capture_default_str();
+  app.add_option("--depth-mm", v.depth_mm, "Beam depth")->capture_default_str();
+  app.add_option("--notch-mm", v.notch_mm, "Central notch depth from the bottom face")->capture_default_str();
+  app.add_option("--thickness-mm", v.thickness_mm, "Out-of-plane thickness (plane stress)")->capture_default_str();
+  app.add_option("--load-width-mm", v.load_width_mm, "Distance of the two load points (a loading plate's edges)")
+      ->capture_default_str();
+  app.add_option("--spacing-mm", v.spacing_mm, "Node spacing (the cells along the span: the nearest odd count)")
+      ->capture_default_str();
+  app.add_option("--gauss", o.gauss, "Gauss points per cell direction (the paper: 2)")->capture_default_str();
+  app.add_option("--support-scale", o.support_scale, "Support radius over the spacing, Eq. (10)")->capture_default_str();
+  app.add_option("--crack-weight", v.crack_weight, "visibility | diffraction | transparency, Eq. (13)")
+      ->capture_default_str();
+  app.add_option("--max-deflection-mm", v.max_deflection_mm, "Last prescribed mid-span deflection")->capture_default_str();
+  app.add_option("--steps", o.steps, "Equal deflection steps")->capture_default_str();
+  app.add_option("--fem-refinement", v.fem_refinement,
+                 "Q4 reference: cells of load width / (2 x this) (0: no FEM run)")->capture_default_str();
+}
+
+std::map<std::string, double> parse_law_keys(const std::vector<std::string>& texts) {
+  std::map<std::string, double> keys;
+  for (const auto& t : texts) {
+    const auto eq = t.find('=');
+    std::size_t used = 0;
+    double value = 0;
+    try {
+      if (eq != std::string::npos) value = std::stod(t.substr(eq + 1), &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (eq == std::string::npos || eq == 0 || used == 0 || used != t.size() - eq - 1)
+      throw InputError("--law-key '" + t + "' must be KEY=VALUE with a number (e.g. alpha=2)");
+    keys[t.substr(0, eq)] = value;
+  }
+  return keys;
+}
+
+BendingOutputs three_point_bending_outputs(const ThreePointBendingOptions& o, const ThreePointBendingResult& r,
+                                           const BendingReference* ref) {
+  BendingOutputs out;
+  nlohmann::ordered_json& j = out.summary;
+  j["law"] = o.law;
+  j["law_keys"] = o.law_keys;
+  j["geometry_mm"] = {{"span", o.span_m * 1e3}, {"depth", o.depth_m * 1e3}, {"notch", o.notch_m * 1e3},
+                      {"thickness", o.thickness_m * 1e3}};
+  j["material"] = {{"E_GPa", o.E_Pa * 1e-9}, {"nu", o.nu}, {"f_t_MPa", o.f_t_Pa * 1e-6}, {"G_f_N_m", o.G_f_J_m2}};
+  j["discretisation"] = {{"spacing_mm", o.spacing_m * 1e3}, {"load_width_mm", o.load_width_m * 1e3}, {"gauss", o.gauss}, {"support_scale", o.support_scale},
+                         {"cohesive_gauss", o.cohesive_gauss}, {"steps", o.steps},
+                         {"max_deflection_mm", o.max_deflection_m * 1e3}};
+  j["peak_load_N"] = r.peak_load_N;
+  j["deflection_at_peak_mm"] = r.deflection_at_peak_m * 1e3;
+  // The identity: the work done on the beam until it carries nothing is G_f times the ligament area.
+  const double ligament_work_J = o.G_f_J_m2 * (o.depth_m - o.notch_m) * o.thickness_m;
+  j["work_of_fracture_Nmm"] = r.work_of_fracture_J * 1e3;
+  j["G_f_times_ligament_Nmm"] = ligament_work_J * 1e3;
+  j["work_of_fracture_ratio"] = r.work_of_fracture_J / ligament_work_J;
+  j["dissipated_Nmm"] = r.dissipated_J * 1e3;
+  j["final_load_fraction_of_peak"] = r.curve.empty() || r.peak_load_N <= 0 ? 0.0 : r.curve.back().load_N / r.peak_load_N;
+  nlohmann::ordered_json k;
+  k["efg_N_per_mm"] = r.elastic_stiffness_N_per_m * 1e-3;
+  if (ref) {
+    k["fem_notched_N_per_mm"] = ref->fem_notched_N_per_m * 1e-3;
+    k["efg_over_fem"] = r.elastic_stiffness_N_per_m / ref->fem_notched_N_per_m;
+    k["fem_unnotched_N_per_mm"] = ref->fem_unnotched_N_per_m * 1e-3;
+    k["beam_theory_unnotched_N_per_mm"] = ref->beam_theory_N_per_m * 1e-3;
+    k["beam_theory_plus_lefm_notch_N_per_mm"] = ref->beam_theory_notched_N_per_m * 1e-3;
+    k["fem_mesh"] = std::to_string(ref->fem_cells_x) + " x " + std::to_string(ref->fem_cells_y) + " Q4, " +
+                    std::to_string(ref->fem_nodes) + " nodes";
+  }
+  j["elastic_stiffness"] = k;
+  j["completed"] = r.completed;
+  j["stop_reason"] = r.stop_reason;
+  j["cost"] = {{"nodes", r.nodes},
+               {"gauss_points", r.gauss_points},
+               {"dofs", r.dofs},
+               {"cohesive_points", r.cohesive_points},
+               {"curve_points", r.curve.size()},  // (0, 0), each step, and the state before each crack extension
+               {"newton_iterations", r.newton_iterations},
+               {"re_solves", r.re_solves},
+               {"line_search_cuts", r.line_search_cuts},
+               {"wall_s", r.wall_s}};
+
+  out.curve_header = {"deflection_mm", "load_N", "iterations", "crack_tip_mm", "dissipated_Nmm"};
+  io::PlotSeries series{o.law + " law (EFG)", {}, {}, "linespoints lw 2 pt 7 ps 0.5"};
+  const double mid = 0.5 * o.span_m;
+  for (const auto& p : r.curve) {
+    out.curve_rows.push_back({format_number(p.deflection_m * 1e3), format_number(p.load_N), std::to_string(p.iterations),
+                              format_number(p.crack_tip_y_m * 1e3), format_number(p.dissipated_J * 1e3)});
+    series.x.push_back(p.deflection_m * 1e3);
+    series.y.push_back(p.load_N * 1e-3);
+    CrackSnapshot c;
+    c.polylines = {{Eigen::Vector2d(mid, 0), Eigen::Vector2d(mid, std::max(p.crack_tip_y_m, o.notch_m))}};
+    out.crack_steps.emplace_back(p.deflection_m * 1e3, c);
+  }
+  out.crack_header = {"x_mm", "y_mm"};
+  for (const auto& x : r.crack_path) out.crack_rows.push_back({format_number(x.x() * 1e3), format_number(x.y() * 1e3)});
+  out.plot.title = "Three-point bending, Koermeling-Reinhardt beam: load against mid-span deflection";
+  out.plot.x_label = "deflection [mm]";
+  out.plot.y_label = "load [kN]";
+  out.plot.series = {series};
+  out.plot.key = "inside top right";
+  return out;
+}
+
+}  // namespace mesowave::efg
