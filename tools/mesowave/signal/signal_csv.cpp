@@ -1,4 +1,4 @@
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/io/csv.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_file.hpp"
 
-namespace mesowave::io {
+namespace mesowave::signal {
 namespace {
 
 std::string trim(std::string_view s) {
@@ -82,7 +82,7 @@ void parse_metadata_line(std::string_view line, const std::string& origin, std::
 
 }  // namespace
 
-std::string signals_to_csv(const std::vector<signal::Signal>& signals,
+std::string signals_to_csv(const std::vector<Signal>& signals,
                            const std::map<std::string, std::string>& file_attributes) {
   if (signals.empty()) throw InputError("no signals to write");
   const auto& first = signals.front();
@@ -131,7 +131,7 @@ std::string signals_to_csv(const std::vector<signal::Signal>& signals,
   return out;
 }
 
-std::vector<signal::Signal> parse_signal_csv(std::string_view text, const std::string& origin,
+std::vector<Signal> parse_signal_csv(std::string_view text, const std::string& origin,
                                              const SignalCsvDefaults& defaults) {
   std::map<std::string, Metadata> metadata;
   {
@@ -145,7 +145,7 @@ std::vector<signal::Signal> parse_signal_csv(std::string_view text, const std::s
       ++line_no;
     }
   }
-  const CsvTable table = parse_csv(text, origin);
+  const io::CsvTable table = io::parse_csv(text, origin);
   if (table.header.size() < 2)
     throw InputError(origin + ": needs a time column and at least one signal column, has " +
                      std::to_string(table.header.size()) + " column(s)");
@@ -169,11 +169,11 @@ std::vector<signal::Signal> parse_signal_csv(std::string_view text, const std::s
                        table.header[0] + ") by more than 0.1 dt; resample the file onto a uniform grid first");
   }
 
-  std::vector<signal::Signal> signals;
+  std::vector<Signal> signals;
   std::set<std::string> names;
   for (std::size_t c = 1; c < table.header.size(); ++c) {
     const std::string& header = table.header[c];
-    signal::Signal s;
+    Signal s;
     const auto bracket = header.rfind('[');
     if (bracket != std::string::npos && header.back() == ']') {
       s.name = trim(header.substr(0, bracket));
@@ -200,7 +200,7 @@ std::vector<signal::Signal> parse_signal_csv(std::string_view text, const std::s
   return signals;
 }
 
-std::vector<signal::Signal> read_signal_csv(const std::filesystem::path& path, const SignalCsvDefaults& defaults) {
+std::vector<Signal> read_signal_csv(const std::filesystem::path& path, const SignalCsvDefaults& defaults) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read " + path.string());
   std::ostringstream content;
@@ -216,11 +216,11 @@ SignalFormat signal_format_of(const std::filesystem::path& path) {
   throw InputError(path.string() + ": signal files end in .h5 (HDF5) or .csv, not '" + ext + "'");
 }
 
-std::vector<signal::Signal> read_signals(const std::filesystem::path& path, const SignalCsvDefaults& defaults) {
+std::vector<Signal> read_signals(const std::filesystem::path& path, const SignalCsvDefaults& defaults) {
   return signal_format_of(path) == SignalFormat::hdf5 ? read_signal_file(path) : read_signal_csv(path, defaults);
 }
 
-void write_signals(const std::filesystem::path& path, SignalFormat format, const std::vector<signal::Signal>& signals,
+void write_signals(const std::filesystem::path& path, SignalFormat format, const std::vector<Signal>& signals,
                    const std::map<std::string, std::string>& file_attributes) {
   if (format == SignalFormat::hdf5) return write_signal_file(path, signals, file_attributes);
   const std::string text = signals_to_csv(signals, file_attributes);
@@ -230,4 +230,4 @@ void write_signals(const std::filesystem::path& path, SignalFormat format, const
   if (!out) throw InputError("cannot write " + path.string());
 }
 
-}  // namespace mesowave::io
+}  // namespace mesowave::signal
