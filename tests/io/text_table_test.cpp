@@ -21,6 +21,9 @@ TEST(ColumnFormat, FixedRoundedAndSignificant) {
   EXPECT_EQ(apply_column_format("2452.96", {Style::rounded, 1}, "x"), "2453");
   EXPECT_EQ(apply_column_format("18051665.597567238", {Style::rounded, 0}, "x"), "18051666");
   EXPECT_EQ(apply_column_format("80.41157935380771", {Style::rounded, 1}, "x"), "80.4");
+  EXPECT_EQ(apply_column_format("6141.0002", {Style::rounded, 2}, "x"), "6141");
+  EXPECT_EQ(apply_column_format("3246734475.537446", {Style::rounded, -6}, "x"), "3247000000");  // not 3.247e+09
+  EXPECT_EQ(apply_column_format("0.0001", {Style::rounded, 4}, "x"), "0.0001");                  // not 1e-04
   // Significant: C's %.Ng.
   EXPECT_EQ(apply_column_format("1.864725512", {Style::significant, 3}, "x"), "1.86");
   EXPECT_EQ(apply_column_format("0.032076463", {Style::significant, 3}, "x"), "0.0321");
@@ -36,6 +39,8 @@ TEST(ColumnFormat, ParsesNameEqualsDigits) {
   EXPECT_EQ(parse_column_format("a=b=17", Style::rounded).first, "a=b");
   EXPECT_THROW(parse_column_format("wall_s", Style::fixed), InputError);
   EXPECT_THROW(parse_column_format("wall_s=18", Style::fixed), InputError);
+  EXPECT_THROW(parse_column_format("wall_s=-1", Style::fixed), InputError);
+  EXPECT_EQ(parse_column_format("Kn=-6", Style::rounded).second.digits, -6);
   EXPECT_THROW(parse_column_format("wall_s=1.5", Style::fixed), InputError);
   EXPECT_THROW(parse_column_format("=3", Style::fixed), InputError);
   EXPECT_NE(test::input_error_of([] { parse_column_format("wall_s=0", Style::significant); }).find("(1 to 17)"),

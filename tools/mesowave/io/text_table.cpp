@@ -54,7 +54,7 @@ std::pair<std::string, ColumnFormat> parse_column_format(const std::string& text
   const auto eq = text.rfind('=');
   const std::string name = eq == std::string::npos ? std::string() : text.substr(0, eq);
   const std::string digits = eq == std::string::npos ? std::string() : text.substr(eq + 1);
-  const int lowest = style == ColumnFormat::Style::significant ? 1 : 0;
+  const int lowest = style == ColumnFormat::Style::significant ? 1 : style == ColumnFormat::Style::rounded ? -17 : 0;
   char* end = nullptr;
   const long n = digits.empty() ? -1 : std::strtol(digits.c_str(), &end, 10);
   if (name.empty() || digits.empty() || end != digits.c_str() + digits.size() || n < lowest || n > 17)
@@ -76,8 +76,16 @@ std::string apply_column_format(const std::string& value, const ColumnFormat& fo
     case ColumnFormat::Style::rounded:
       break;
   }
-  const double scale = std::pow(10.0, format.digits);
-  return format_exact(std::round(x * scale) / scale);
+  // Scaled as jq's `. * 100 | round / 100` or `. / 1e6 | round * 1e6` computes it, then
+  // printed with its decimals, the trailing zeros dropped ("2453.0" -> "2453").
+  const double scale = std::pow(10.0, std::abs(format.digits));
+  const double rounded = format.digits >= 0 ? std::round(x * scale) / scale : std::round(x / scale) * scale;
+  std::string text = format_fixed(rounded, std::max(format.digits, 0));
+  if (text.find('.') != std::string::npos) {
+    text.erase(text.find_last_not_of('0') + 1);
+    if (text.back() == '.') text.pop_back();
+  }
+  return text;
 }
 
 std::string format_markdown_table(const std::vector<std::string>& header,

@@ -12,15 +12,17 @@ std::string format_text_table(const std::vector<std::string>& header,
                               const std::vector<std::vector<std::string>>& rows);
 
 /// How a column's numbers are printed: fixed decimals ("0.150", C's %.Nf);
-/// rounded to that many decimals and printed the shortest exact way ("0.15",
-/// "2453": half away from zero, as jq's round); or significant digits ("1.86",
-/// "0.0321", C's %.Ng).
+/// rounded to that many decimals, half away from zero, and printed without
+/// trailing zeros ("0.15", "2453"; -6 decimals: to millions, "3247000000"), as
+/// jq's `. * 10 | round / 10` prints; or significant digits ("1.86", "0.0321",
+/// C's %.Ng).
 struct ColumnFormat {
   enum class Style { fixed, rounded, significant };
   Style style = Style::fixed;
   int digits = 0;  ///< decimals (fixed, rounded) or significant digits
 };
-/// "NAME=DIGITS" (0 to 17; 1 to 17 significant); InputError otherwise.
+/// "NAME=DIGITS": 0 to 17 decimals (rounded: -17 to 17), 1 to 17 significant
+/// digits; InputError otherwise.
 std::pair<std::string, ColumnFormat> parse_column_format(const std::string& text, ColumnFormat::Style style);
 /// `value` (a number's text) printed as `format` says; InputError naming `what` if not a number.
 std::string apply_column_format(const std::string& value, const ColumnFormat& format, const std::string& what);
