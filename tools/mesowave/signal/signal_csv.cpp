@@ -14,21 +14,14 @@
 namespace mesowave::signal {
 namespace {
 
-std::string trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
-  return std::string(s.substr(first, last - first + 1));
-}
-
 // Seconds per unit of a time column, from "t_us", "time_ms", "t [us]", "time [s]".
 double time_column_factor(const std::string& header) {
   std::string unit;
   const auto bracket = header.find('[');
   if (bracket != std::string::npos && header.back() == ']') {
-    const std::string name = trim(header.substr(0, bracket));
+    const std::string name = io::trim_blanks(header.substr(0, bracket));
     if (name != "t" && name != "time") return 0;
-    unit = trim(header.substr(bracket + 1, header.size() - bracket - 2));
+    unit = io::trim_blanks(header.substr(bracket + 1, header.size() - bracket - 2));
   } else {
     for (const char* prefix : {"t_", "time_"})
       if (header.rfind(prefix, 0) == 0) unit = header.substr(std::string(prefix).size());
@@ -41,7 +34,7 @@ double time_column_factor(const std::string& header) {
 }
 
 void check_csv_name(const std::string& name) {
-  if (name.empty() || name.find_first_of(",\"[]:\n\r") != std::string::npos || trim(name) != name)
+  if (name.empty() || name.find_first_of(",\"[]:\n\r") != std::string::npos || io::trim_blanks(name) != name)
     throw InputError("signal name '" + name +
                      "' cannot be a CSV column (no commas, quotes, brackets, colons or outer spaces)");
 }
@@ -58,14 +51,14 @@ void parse_metadata_line(std::string_view line, const std::string& origin, std::
   if (line.substr(0, prefix.size()) != prefix) return;
   const auto colon = line.find(':', prefix.size());
   if (colon == std::string_view::npos) return;
-  const std::string name = trim(line.substr(prefix.size(), colon - prefix.size()));
+  const std::string name = io::trim_blanks(line.substr(prefix.size(), colon - prefix.size()));
   Metadata m;
   std::stringstream fields{std::string(line.substr(colon + 1))};
   std::string field;
   while (std::getline(fields, field, ';')) {
     const auto eq = field.find('=');
     if (eq == std::string::npos) continue;
-    const std::string key = trim(field.substr(0, eq)), value = trim(field.substr(eq + 1));
+    const std::string key = io::trim_blanks(field.substr(0, eq)), value = io::trim_blanks(field.substr(eq + 1));
     if (key == "quantity") m.quantity = value;
     else if (key == "component") m.component = value;
     else if (key == "position_m") {
@@ -176,8 +169,8 @@ std::vector<Signal> parse_signal_csv(std::string_view text, const std::string& o
     Signal s;
     const auto bracket = header.rfind('[');
     if (bracket != std::string::npos && header.back() == ']') {
-      s.name = trim(header.substr(0, bracket));
-      s.unit = trim(header.substr(bracket + 1, header.size() - bracket - 2));
+      s.name = io::trim_blanks(header.substr(0, bracket));
+      s.unit = io::trim_blanks(header.substr(bracket + 1, header.size() - bracket - 2));
     } else {
       s.name = header;
       s.unit = defaults.unit;
