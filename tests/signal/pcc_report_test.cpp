@@ -48,7 +48,7 @@ TEST(PccReport, ClosedFormCorrelations) {
   const auto base = [](const std::string& name) { return wave(name, 5, 7, 1, 0); };
   signal::write_signals(a, signal::SignalFormat::hdf5, {base("B"), base("C"), base("D")});
   signal::write_signals(b, signal::SignalFormat::hdf5,
-                    {wave("B", 5, 7, 2, 3), wave("C", 5, 7, -1, 0), wave("D", 9, 11, 1, 0), base("E")});
+                        {wave("B", 5, 7, 2, 3), wave("C", 5, 7, -1, 0), wave("D", 9, 11, 1, 0), base("E")});
   PccRequest q;
   q.files = {a, b};
   q.sensors = {"B", "C", "D"};
