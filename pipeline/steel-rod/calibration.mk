@@ -18,12 +18,13 @@ endef
 $(foreach m,$(SR_CAL_MODELS),$(eval $(call SR_CALIBRATE,$m)))
 
 # Sphere count, rho_p and E_DEM (the tension test at the paper's K_n) beside Table 1; and the
-# contact modulus that gives the rod's E.
-$(SR_OUT)/calibration-ours.csv: $(foreach m,$(SR_CAL_MODELS),$(SR_OUT)/calibration-$m.json)
-	{ echo "# mesowave's Table 1: sphere count and rho_p of the chain (mw-pack line), E_DEM of the tension test at the paper's K_n (E_dem), and the E_dem that gives E = 208.72 GPa (mw-calibrate rod)"; \
-	  echo "model,spheres,rho_p_kg_m3,E_DEM_GPa,E_dem_calibrated_GPa,Kn_calibrated_N_m,E_DEM_calibrated_GPa"; \
-	  for m in $(SR_CAL_MODELS); do jq -r --arg m $$m 'def r(d): . * d | round / d; [$$m, .spheres, (.rho_p_kg_m3 | r(100)), (.E_DEM_at_start_GPa | r(1000)), (.E_dem_GPa | r(100)), (.Kn_N_m / 1e6 | round * 1e6), (.E_DEM_GPa | r(1000))] | @csv' \
-	    $(SR_OUT)/calibration-$$m.json | tr -d '"'; done; } > $@
+# contact modulus that gives the rod's E (mw-calibrate rod): mesowave's Table 1, gathered.
+$(SR_OUT)/calibration-ours.csv: $(foreach m,$(SR_CAL_MODELS),$(SR_OUT)/calibration-$m.json) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name model $(foreach m,$(SR_CAL_MODELS),--row $m=$(SR_OUT)/calibration-$m.json) \
+	  --column spheres --column rho_p_kg_m3 --column E_DEM_GPa=E_DEM_at_start_GPa --column E_dem_calibrated_GPa=E_dem_GPa \
+	  --column Kn_calibrated_N_m=Kn_N_m --column E_DEM_calibrated_GPa=E_DEM_GPa --round rho_p_kg_m3=2 \
+	  --round E_DEM_GPa=3 --round E_dem_calibrated_GPa=2 --round Kn_calibrated_N_m=-6 --round E_DEM_calibrated_GPa=3 \
+	  --csv $@ > /dev/null
 
 $(SR_OUT)/calibration-table.txt $(SR_OUT)/calibration-table.csv &: $(SR_OUT)/calibration-ours.csv $(SR_PAPER)/table1.csv $(BIN)/mw-compare
 	$(BIN)/mw-compare --ours $(SR_OUT)/calibration-ours.csv --paper $(SR_PAPER)/table1.csv --key model \

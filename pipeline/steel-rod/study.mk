@@ -98,17 +98,5 @@ $(SR_OUT)/measure-fem-$1mm.csv: $(foreach f,$(SR_FREQS),$(SR_OUT)/fem-$1mm-$(f)k
 endef
 $(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),$(eval $(call SR_MEASURE_FEM,$h)))
 
-SR_RESULTS := $(foreach m,$(SR_MODELS),$(SR_OUT)/measure-$m.csv $(foreach f,$(SR_FREQS),$(SR_OUT)/pcc-$m-$(f)kHz.csv)) \
-              $(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),$(SR_OUT)/measure-fem-$(h)mm.csv)
-
-# Tables beside the paper's, the findings checked, Figure 9 and speed against error.
-$(SR_OUT)/summary.md $(SR_OUT)/pcc.csv $(SR_OUT)/table1.csv $(SR_OUT)/table2.csv $(SR_OUT)/speed.csv \
-    $(SR_OUT)/figure9.png $(SR_OUT)/speed-error.png &: $(SR_RESULTS) pipeline/steel-rod/summarize.sh $(SR_PAPER)/table1.csv $(SR_PAPER)/table2.csv \
-    $(BIN)/mw-dispersion $(BIN)/mw-table
-	pipeline/steel-rod/summarize.sh $(SR_OUT) $(SR_PAPER) $(BIN) "$(SR_MODELS)" "$(SR_FREQS)" \
-	  "$(SR_FEM_MESH) $(SR_SPEED_MESHES)" $(SR_FEM_MESH) "$(SR_STEEL)" $(SR_DURATION_MS)
-
-.PHONY: steel-rod-summary
-steel-rod-summary: $(SR_OUT)/summary.md
-	@cat $<
+include pipeline/steel-rod/summary.mk
 include pipeline/steel-rod/calibration.mk

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mesowave/dem/packing/packing_file.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_file.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -64,7 +64,7 @@ TEST(MwDem, RunWritesSignalsAndSummary) {
   const auto r = run_tool("mw-dem", {"run", (dir / "rod.toml").string(), "--frequency-kHz", "80", "--duration-ms", "0.5",
                                      "--signals", (dir / "s.h5").string(), "--summary", (dir / "s.json").string(), "--quiet"});
   ASSERT_EQ(r.exit_status, 0) << r.err;
-  const auto signals = io::read_signal_file(dir / "s.h5");
+  const auto signals = signal::read_signal_file(dir / "s.h5");
   ASSERT_EQ(signals.size(), 1u);
   EXPECT_EQ(signals[0].name, "S");
   EXPECT_EQ(signals[0].quantity, "acceleration");

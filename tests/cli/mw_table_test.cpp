@@ -80,3 +80,29 @@ TEST(TableCli, BadInputIsOneLineAndNothingWritten) {
           (dir / "p.png").string()},
          "--style bars");
 }
+
+TEST(TableCli, MeanFormatsMarkdownAndTheRodFindings) {
+  TempDir dir;
+  write_runs(dir);
+  const std::string table = (dir / "t.csv").string(), md = (dir / "t.md").string();
+  // One row from both frequencies' tables: the mean (0.5 + 0.25) / 2 with three decimals.
+  const auto g = run_tool("mw-table", {"gather", "--key-name", "model", "--row",
+                                       "DEM=" + (dir / "pcc-100kHz.csv").string() + "," + (dir / "pcc-300kHz.csv").string(),
+                                       "--where", "sensor=B", "--column", "pcc=mean(pcc_signal)", "--decimals", "pcc=3",
+                                       "--csv", table});
+  ASSERT_EQ(g.exit_status, 0) << g.err;
+  EXPECT_EQ(read_file(table), "model,pcc\nDEM,0.375\n");
+  const auto m = run_tool("mw-table", {"markdown", table, "--header", "pcc=PCC", "--out", md});
+  ASSERT_EQ(m.exit_status, 0) << m.err;
+  EXPECT_EQ(read_file(md), "| model | PCC |\n|---|---|\n| DEM | 0.375 |\n");
+
+  write_file(dir / "v.csv", "f_kHz,FEM,1.03R,1.05R,1.15R\n50,3,3,2,1\n150,1,2,1.5,0.5\n");
+  write_file(dir / "t1.csv", "model,pcc_vs_fem_envelope\n0.95R,-0.1\n1.03R,0.9\n1.05R,0.8\n1.15R,0.7\n");
+  write_file(dir / "t2.csv", "model,rss_m2_s2\n0.95R,1e7\n1.03R,2e4\n1.05R,5e4\n1.15R,6e4\n");
+  const auto f = run_tool("mw-table", {"findings", "--velocity", (dir / "v.csv").string(), "--table1",
+                                       (dir / "t1.csv").string(), "--table2", (dir / "t2.csv").string(), "--fem-column",
+                                       "FEM", "--out", md});
+  ASSERT_EQ(f.exit_status, 0) << f.err;
+  EXPECT_EQ(read_file(md).find("- [x] velocity falls with frequency"), 0u) << read_file(md);
+  EXPECT_NE(read_file(md).find("at 2 of 2 frequencies\n"), std::string::npos) << read_file(md);
+}

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "mesowave/io/csv.hpp"
-#include "mesowave/io/signal_csv.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_csv.hpp"
+#include "mesowave/signal/signal_file.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -46,7 +46,7 @@ TEST(SignalCli, BurstEnvelopeSpectrumAndTof) {
   const auto burst = json::parse(b.out);
   EXPECT_EQ(burst["samples"], 2000);
   EXPECT_DOUBLE_EQ(burst["burst_end_us"].get<double>(), 70.0);
-  const auto signals = io::read_signal_file(dir / "burst.h5");
+  const auto signals = signal::read_signal_file(dir / "burst.h5");
   ASSERT_EQ(signals.size(), 1u);
   EXPECT_EQ(signals[0].name, "excitation");
   EXPECT_EQ(signals[0].unit, "N");
@@ -59,7 +59,7 @@ TEST(SignalCli, BurstEnvelopeSpectrumAndTof) {
   EXPECT_EQ(env["fft_length"], 4000);
   // The envelope of a 5-cycle burst peaks at its centre: 20 + 25 us.
   EXPECT_NEAR(env["envelopes"]["excitation"]["peak_time_us"].get<double>(), 45.0, 0.01);
-  const auto env_csv = io::read_signal_csv(dir / "env.csv");
+  const auto env_csv = signal::read_signal_csv(dir / "env.csv");
   EXPECT_EQ(env_csv[0].quantity, "force envelope");
 
   const auto s = run_tool("mw-signal", {"spectrum", (dir / "burst.h5").string(), "--pad", "65536",
@@ -83,7 +83,7 @@ TEST(SignalCli, ConvertRoundTripAndNoise) {
   make_burst(dir, "a.h5", {"--noise-rms", "0.01", "--seed", "7", "--name", "B"});
   ASSERT_EQ(run_tool("mw-signal", {"convert", (dir / "a.h5").string(), (dir / "a.csv").string()}).exit_status, 0);
   ASSERT_EQ(run_tool("mw-signal", {"convert", (dir / "a.csv").string(), (dir / "b.h5").string()}).exit_status, 0);
-  const auto a = io::read_signal_file(dir / "a.h5"), b = io::read_signal_file(dir / "b.h5");
+  const auto a = signal::read_signal_file(dir / "a.h5"), b = signal::read_signal_file(dir / "b.h5");
   EXPECT_EQ(a[0].samples, b[0].samples);
   // Several inputs merge into one file, in order.
   make_burst(dir, "d.h5", {"--name", "D"});
@@ -91,13 +91,13 @@ TEST(SignalCli, ConvertRoundTripAndNoise) {
                                    (dir / "ad.h5").string()})
                 .exit_status,
             0);
-  const auto merged = io::read_signal_file(dir / "ad.h5");
+  const auto merged = signal::read_signal_file(dir / "ad.h5");
   ASSERT_EQ(merged.size(), 2u);
   EXPECT_EQ(merged[0].name, "B");
   EXPECT_EQ(merged[1].name, "D");
   // The same seed gives the same noise.
   make_burst(dir, "c.h5", {"--noise-rms", "0.01", "--seed", "7", "--name", "B"});
-  EXPECT_EQ(io::read_signal_file(dir / "c.h5")[0].samples, a[0].samples);
+  EXPECT_EQ(signal::read_signal_file(dir / "c.h5")[0].samples, a[0].samples);
 }
 
 TEST(SignalCli, BadInputsAreRefused) {

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "mesowave/io/csv.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_file.hpp"
 #include "mesowave/wave/pochhammer_chree.hpp"
 #include "support/run_tool.hpp"
 
@@ -101,7 +101,7 @@ TEST(MwFem, RodRunWritesSignalsAndReport) {
                                           "--sensor", "S=0,0,100", "--sensor", "M=0,0,50", "--signals",
                                           (dir / "s.h5").string(), "--spacetime", (dir / "st.h5").string()}));
   ASSERT_EQ(r.exit_status, 0) << r.err;
-  const auto sigs = io::read_signal_file(dir / "s.h5");
+  const auto sigs = signal::read_signal_file(dir / "s.h5");
   ASSERT_EQ(sigs.size(), 3u);  // S, M, excitation
   EXPECT_EQ(sigs[0].name, "S");
   EXPECT_EQ(sigs[0].quantity, "acceleration");

@@ -4,12 +4,12 @@
 #include <cstdint>
 #include <string>
 
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text = mesowave::fuzz::as_text(data, size);
-  mesowave::fuzz::accept_input_error([&] { mesowave::io::parse_signal_csv(text, "fuzz.csv"); });
-  mesowave::fuzz::accept_input_error([&] { mesowave::io::parse_signal_csv(text, "fuzz.csv", {"V", "voltage"}); });
+  mesowave::fuzz::accept_input_error([&] { mesowave::signal::parse_signal_csv(text, "fuzz.csv"); });
+  mesowave::fuzz::accept_input_error([&] { mesowave::signal::parse_signal_csv(text, "fuzz.csv", {"V", "voltage"}); });
   return 0;
 }

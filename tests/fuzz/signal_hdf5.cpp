@@ -3,12 +3,12 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_file.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static mesowave::fuzz::TempFile file(".h5");
   const auto& path = file.write(data, size);
-  mesowave::fuzz::accept_input_error([&] { mesowave::io::read_signal_file(path); });
+  mesowave::fuzz::accept_input_error([&] { mesowave::signal::read_signal_file(path); });
   return 0;
 }

@@ -6,6 +6,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/io/mts_export.hpp"
+#include "support/input_error.hpp"
 
 using namespace mesowave;
 
@@ -57,10 +58,6 @@ TEST(MtsExport, RefusesMalformedFiles) {
   EXPECT_THROW(io::parse_mts_export("t_s,force_kN\n1,2\n", "x.csv"), InputError);
   std::string bad = kExport;
   bad.replace(bad.find("-2,5"), 4, "-2x5");
-  try {
-    io::parse_mts_export(bad, "bad.dat");
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("bad.dat:12"), std::string::npos) << e.what();
-  }
+  const std::string error = mesowave::test::input_error_of([&] { io::parse_mts_export(bad, "bad.dat"); });
+  EXPECT_NE(error.find("bad.dat:12"), std::string::npos) << error;
 }

@@ -7,6 +7,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/io/table_gather.hpp"
+#include "support/input_error.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -110,14 +111,7 @@ TEST(TableGather, AmbiguousOrMissingValuesAreErrorsNamingTheFile) {
     spec.where = where;
     return gather_rows(spec);
   };
-  auto message = [&](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  auto message = [](const std::function<void()>& f) { return mesowave::test::input_error_of(f); };
   EXPECT_EQ(message([&] { gather("1=" + pcc, "pcc_signal", std::nullopt); }),
             pcc + " has 3 rows: say which one (a row selector COLUMN=VALUE)");
   EXPECT_EQ(message([&] { gather("1=" + pcc, "pcc_signal", RowSelector{"sensor", "D"}); }),
@@ -182,5 +176,86 @@ TEST(TableGather, JoinedColumnsFollowTheGatheredOnesByKey) {
   EXPECT_EQ(t.rows[0], (std::vector<std::string>{"100", "0.600000", "0.63"}));
   EXPECT_EQ(t.rows[1], (std::vector<std::string>{"150", "0.500000", ""}));
   spec.joins = {parse_table_join((dir / "paper.csv").string() + ":paper=pcc_std")};
+  EXPECT_THROW(gather_rows(spec), InputError);
+}
+
+TEST(TableGather, KeysOfTwoColumnsAndSelectorsNamingTheKey) {
+  TempDir dir;
+  write_file(dir / "m.csv", "run,f_kHz,c_m_s\nFEM,50,5103.5\nFEM,100,4995.25\n");
+  write_file(dir / "p.csv", pcc_table(0.5, 0.7));
+  GatherSpec spec;
+  spec.key_name = "model, f_kHz";
+  spec.rows = {parse_gather_row("FEM,100=" + (dir / "m.csv").string()), parse_gather_row("FEM,50=" + (dir / "m.csv").string())};
+  spec.columns = {parse_column_source("c=c_m_s@f_kHz={f_kHz}")};
+  const auto t = gather_rows(spec);
+  EXPECT_EQ(t.header, (std::vector<std::string>{"model", "f_kHz", "c"}));
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[0], (std::vector<std::string>{"FEM", "100", "4995.25"}));
+  EXPECT_EQ(t.rows[1], (std::vector<std::string>{"FEM", "50", "5103.5"}));
+  // A row key of the wrong number of parts, a selector naming no key column.
+  spec.rows = {parse_gather_row("FEM=" + (dir / "m.csv").string())};
+  EXPECT_NE(test::input_error_of([&] { gather_rows(spec); }).find("row FEM: 1 key part(s), the key model, f_kHz has 2"),
+            std::string::npos);
+  spec.rows = {parse_gather_row("FEM,50=" + (dir / "m.csv").string())};
+  spec.columns = {parse_column_source("c=c_m_s@f_kHz={frequency}")};
+  EXPECT_NE(test::input_error_of([&] { gather_rows(spec); }).find("'frequency' is not a key column"), std::string::npos);
+}
+
+TEST(TableGather, MeanAndMedianOverTheRowsFiles) {
+  TempDir dir;
+  // Three runs' tables and summaries; the mean and the median worked by hand.
+  write_file(dir / "a.csv", pcc_table(0.5, 0.7));    // B: 0.5
+  write_file(dir / "b.csv", pcc_table(0.25, 0.7));   // B: 0.25
+  write_file(dir / "c.csv", pcc_table(-0.125, 0.7)); // B: -0.125
+  write_file(dir / "a.json", R"({"wall_s": 3.5})");
+  write_file(dir / "b.json", R"({"wall_s": 1.25})");
+  write_file(dir / "c.json", R"({"wall_s": 2})");
+  write_file(dir / "d.json", R"({"rss": 7})");  // holds no wall_s: not counted
+  const auto files = [&](const std::vector<std::string>& names) {
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ",") + (dir / n).string();
+    return list;
+  };
+  GatherSpec spec;
+  spec.key_name = "model";
+  spec.where = RowSelector{"sensor", "B"};
+  spec.rows = {parse_gather_row("x=" + files({"a.csv", "b.csv", "c.csv", "a.json", "b.json", "c.json", "d.json"}))};
+  spec.columns = {parse_column_source("pcc=mean(pcc_signal)"), parse_column_source("wall=median(wall_s)"),
+                  parse_column_source("rss")};
+  auto t = gather_rows(spec);
+  // (0.5 + 0.25 - 0.125) / 3 in doubles, the shortest text that reads back (Python: repr(0.625 / 3)).
+  EXPECT_EQ(t.rows[0], (std::vector<std::string>{"x", "0.20833333333333334", "2", "7"}));
+  // An even count: the median is the mean of the middle two, (1.25 + 2) / 2.
+  spec.rows = {parse_gather_row("x=" + files({"a.csv", "b.json", "c.json", "d.json", "a.json", "b.json"}))};
+  t = gather_rows(spec);
+  EXPECT_EQ(t.rows[0][2], "1.625");
+  // Text cannot be averaged.
+  write_file(dir / "e.json", R"({"wall_s": "fast"})");
+  spec.rows = {parse_gather_row("x=" + files({"a.csv", "e.json", "d.json"}))};
+  EXPECT_NE(test::input_error_of([&] { gather_rows(spec); }).find("'wall_s' holds 'fast', not a number"),
+            std::string::npos);
+  EXPECT_EQ(parse_column_source("m=median( wall_s )").source, "wall_s");
+  EXPECT_EQ(parse_column_source("m=median( wall_s )").aggregate, ColumnSource::Aggregate::median);
+  EXPECT_EQ(parse_column_source("m=means").aggregate, ColumnSource::Aggregate::first);
+}
+
+TEST(TableGather, FormatsAndJoinKeysAsAnotherTableSpellsThem) {
+  TempDir dir;
+  write_file(dir / "fem.json", R"({"rss": 1992.5, "rms": 25.849})");
+  write_file(dir / "dem.json", R"({"rss": 19398.06, "rms": 2452.96})");
+  write_file(dir / "paper.csv", "# the paper's\nmodel,RSS\nFEM,6056\n1.03R,22436\n");
+  GatherSpec spec;
+  spec.key_name = "model";
+  spec.rows = {parse_gather_row("FEM 1 mm=" + (dir / "fem.json").string()),
+               parse_gather_row("1.03R=" + (dir / "dem.json").string())};
+  spec.columns = {parse_column_source("rss"), parse_column_source("rms")};
+  spec.joins = {parse_table_join((dir / "paper.csv").string() + ":paper=RSS")};
+  spec.join_keys = {{"FEM 1 mm", "FEM"}};
+  spec.formats = {{"rss", {ColumnFormat::Style::rounded, 0}}, {"rms", {ColumnFormat::Style::fixed, 1}}};
+  const auto t = gather_rows(spec);
+  // 1992.5 rounds half away from zero to 1993; 2452.96 to one decimal is 2453.0 fixed.
+  EXPECT_EQ(t.rows[0], (std::vector<std::string>{"FEM 1 mm", "1993", "25.8", "6056"}));
+  EXPECT_EQ(t.rows[1], (std::vector<std::string>{"1.03R", "19398", "2453.0", "22436"}));
+  spec.formats = {{"nothing", {ColumnFormat::Style::fixed, 1}}};
   EXPECT_THROW(gather_rows(spec), InputError);
 }

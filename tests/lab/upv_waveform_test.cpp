@@ -10,6 +10,7 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/lab/synthetic_upv.hpp"
 #include "mesowave/lab/upv_waveform.hpp"
+#include "support/input_error.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -82,12 +83,8 @@ TEST(UpvWaveform, OnsetInsideThePretriggerIsRefused) {
   spec.pretrigger_s = 50e-6;
   // The trigger came 45 us late: the pulse now starts 10 us before t = 0.
   const auto late = as_signal(synthetic_upv_waveform(spec), -45e-6);
-  try {
-    pick_onset(late, OnsetOptions{});
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("pre-trigger"), std::string::npos) << e.what();
-  }
+  const std::string late_error = mesowave::test::input_error_of([&] { pick_onset(late, OnsetOptions{}); });
+  EXPECT_NE(late_error.find("pre-trigger"), std::string::npos) << late_error;
   // A quiet pre-trigger but the pulse already under way where the search starts.
   const auto early = as_signal(synthetic_upv_waveform(spec), -30e-6);  // onset at 5 us
   OnsetOptions o;
@@ -100,13 +97,9 @@ TEST(UpvWaveform, NoiseWithoutAnArrivalIsRefused) {
   SyntheticUpvSpec spec;
   spec.amplitude_V = 1e-9;   // the pulse is far below the noise...
   spec.snr_dB = -120;        // ...whose RMS is 1e-3 V
-  try {
-    pick_onset(as_signal(synthetic_upv_waveform(spec)), OnsetOptions{});
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    const std::string m = e.what();
-    EXPECT_TRUE(m.find("stands out") != std::string::npos || m.find("reaches the threshold") != std::string::npos) << m;
-  }
+  const std::string m =
+      mesowave::test::input_error_of([&] { pick_onset(as_signal(synthetic_upv_waveform(spec)), OnsetOptions{}); });
+  EXPECT_TRUE(m.find("stands out") != std::string::npos || m.find("reaches the threshold") != std::string::npos) << m;
 }
 
 TEST(UpvWaveform, CsvReaders) {
@@ -131,13 +124,9 @@ TEST(UpvWaveform, CsvReaders) {
 TEST(UpvWaveform, NonMonotonicAndNonUniformTimeAreErrors) {
   test::TempDir dir;
   test::write_file(dir / "m.csv", "t_us,amplitude_V\n0,0\n0.1,1\n0.3,2\n0.2,3\n0.4,4\n0.5,5\n0.6,6\n0.7,7\n");
-  try {
-    read_upv_waveform(dir / "m.csv", {}, "P");
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("m.csv:5"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("strictly increasing"), std::string::npos) << e.what();
-  }
+  const std::string error = mesowave::test::input_error_of([&] { read_upv_waveform(dir / "m.csv", {}, "P"); });
+  EXPECT_NE(error.find("m.csv:5"), std::string::npos) << error;
+  EXPECT_NE(error.find("strictly increasing"), std::string::npos) << error;
   test::write_file(dir / "u.csv", "t_us,amplitude_V\n0,0\n0.1,1\n0.2,2\n0.35,3\n0.4,4\n0.5,5\n0.6,6\n0.7,7\n");
   EXPECT_THROW(read_upv_waveform(dir / "u.csv", {}, "P"), InputError);
   test::write_file(dir / "x.csv", "t,amplitude_V\n0,0\n1,1\n2,2\n3,3\n4,4\n5,5\n6,6\n7,7\n");

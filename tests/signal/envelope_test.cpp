@@ -12,6 +12,7 @@
 #include "mesowave/signal/envelope.hpp"
 #include "mesowave/signal/hann_burst.hpp"
 #include "signal/reference.hpp"
+#include "support/input_error.hpp"
 
 using namespace mesowave;
 using namespace mesowave::signal;
@@ -176,11 +177,6 @@ TEST(Envelope, BadRecordsAreInputErrors) {
   EXPECT_THROW(envelope(std::vector<double>{1, INFINITY}), InputError);
   Signal s{"B", "", "", "", 0, 0, {1, 2, 3}, std::nullopt};
   EXPECT_THROW(envelope(s), InputError);  // dt = 0
-  try {
-    Signal t{"C", "", "", "", 0, 1e-6, {1, 2, NAN}, std::nullopt};
-    envelope(t);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "signal C: sample 2 (t = 2 us) is NaN");
-  }
+  const Signal t{"C", "", "", "", 0, 1e-6, {1, 2, NAN}, std::nullopt};
+  EXPECT_EQ(mesowave::test::input_error_of([&] { envelope(t); }), "signal C: sample 2 (t = 2 us) is NaN");
 }

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "mesowave/core/error.hpp"
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -46,9 +46,9 @@ TEST(PccReport, ClosedFormCorrelations) {
   test::TempDir dir;
   const auto a = dir / "a.h5", b = dir / "b.h5";
   const auto base = [](const std::string& name) { return wave(name, 5, 7, 1, 0); };
-  io::write_signals(a, io::SignalFormat::hdf5, {base("B"), base("C"), base("D")});
-  io::write_signals(b, io::SignalFormat::hdf5,
-                    {wave("B", 5, 7, 2, 3), wave("C", 5, 7, -1, 0), wave("D", 9, 11, 1, 0), base("E")});
+  signal::write_signals(a, signal::SignalFormat::hdf5, {base("B"), base("C"), base("D")});
+  signal::write_signals(b, signal::SignalFormat::hdf5,
+                        {wave("B", 5, 7, 2, 3), wave("C", 5, 7, -1, 0), wave("D", 9, 11, 1, 0), base("E")});
   PccRequest q;
   q.files = {a, b};
   q.sensors = {"B", "C", "D"};

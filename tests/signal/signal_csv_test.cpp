@@ -5,10 +5,11 @@
 #include <cmath>
 
 #include "mesowave/core/error.hpp"
-#include "mesowave/io/signal_csv.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_csv.hpp"
+#include "mesowave/signal/signal_file.hpp"
 #include "mesowave/signal/hann_burst.hpp"
 #include "mesowave/io/hdf5.hpp"
+#include "support/input_error.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -25,19 +26,14 @@ std::vector<Signal> two_sensors() {
 }
 
 std::string message_of(const std::string& text) {
-  try {
-    io::parse_signal_csv(text, "f.csv");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
+  return mesowave::test::input_error_of([&] { signal::parse_signal_csv(text, "f.csv"); });
 }
 
 }  // namespace
 
 TEST(SignalCsv, RoundTripKeepsEverySampleBitForBit) {
   const auto signals = two_sensors();
-  const auto back = io::parse_signal_csv(io::signals_to_csv(signals), "round-trip");
+  const auto back = signal::parse_signal_csv(signal::signals_to_csv(signals), "round-trip");
   ASSERT_EQ(back.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k) {
     EXPECT_EQ(back[k].name, signals[k].name);
@@ -54,15 +50,15 @@ TEST(SignalCsv, RoundTripKeepsEverySampleBitForBit) {
 TEST(SignalCsv, ConvertsThroughHdf5AndBack) {
   test::TempDir dir;
   const auto signals = two_sensors();
-  io::write_signals(dir / "a.h5", io::SignalFormat::hdf5, signals, {{"scene", "test"}});
-  const auto h5 = io::read_signals(dir / "a.h5");
-  io::write_signals(dir / "a.csv", io::SignalFormat::csv, h5);
-  const auto csv = io::read_signals(dir / "a.csv");
+  signal::write_signals(dir / "a.h5", signal::SignalFormat::hdf5, signals, {{"scene", "test"}});
+  const auto h5 = signal::read_signals(dir / "a.h5");
+  signal::write_signals(dir / "a.csv", signal::SignalFormat::csv, h5);
+  const auto csv = signal::read_signals(dir / "a.csv");
   ASSERT_EQ(csv.size(), 2u);
   EXPECT_EQ(csv[1].samples, signals[1].samples);
   EXPECT_EQ(csv[0].position_m, signals[0].position_m);
-  EXPECT_THROW(io::signal_format_of("a.txt"), InputError);
-  EXPECT_EQ(io::signal_format_of("A.HDF5"), io::SignalFormat::hdf5);
+  EXPECT_THROW(signal::signal_format_of("a.txt"), InputError);
+  EXPECT_EQ(signal::signal_format_of("A.HDF5"), signal::SignalFormat::hdf5);
 }
 
 TEST(SignalCsv, ReadsOscilloscopeStyleFiles) {
@@ -70,10 +66,10 @@ TEST(SignalCsv, ReadsOscilloscopeStyleFiles) {
   const std::string text =
       "time [us],CH1 [V],CH2\n"
       "-1.0,0.01,5\n-0.9,0.02,6\n-0.8,0.00,7\n-0.7,-0.01,8\n-0.6,0.03,9\n";
-  io::SignalCsvDefaults defaults;
+  signal::SignalCsvDefaults defaults;
   defaults.unit = "V";
   defaults.quantity = "voltage";
-  const auto s = io::parse_signal_csv(text, "scope.csv", defaults);
+  const auto s = signal::parse_signal_csv(text, "scope.csv", defaults);
   ASSERT_EQ(s.size(), 2u);
   EXPECT_EQ(s[0].name, "CH1");
   EXPECT_EQ(s[0].unit, "V");
@@ -102,14 +98,14 @@ TEST(SignalCsv, MalformedFilesAreNamed) {
 TEST(SignalCsv, RefusesSignalsItCannotHold) {
   auto signals = two_sensors();
   signals[1].dt_s = 2e-7;
-  EXPECT_THROW(io::signals_to_csv(signals), InputError);  // two time bases
+  EXPECT_THROW(signal::signals_to_csv(signals), InputError);  // two time bases
   signals = two_sensors();
   signals[1].name = "C,1";
-  EXPECT_THROW(io::signals_to_csv(signals), InputError);
+  EXPECT_THROW(signal::signals_to_csv(signals), InputError);
   signals = two_sensors();
   signals[1].samples[3] = NAN;
-  EXPECT_THROW(io::signals_to_csv(signals), InputError);
-  EXPECT_THROW(io::signals_to_csv({}), InputError);
+  EXPECT_THROW(signal::signals_to_csv(signals), InputError);
+  EXPECT_THROW(signal::signals_to_csv({}), InputError);
 }
 
 TEST(SignalFile, ReadsStringsAsH5pyWritesThem) {
@@ -137,7 +133,7 @@ TEST(SignalFile, ReadsStringsAsH5pyWritesThem) {
     utf8(b.id(), "quantity", "acceleration");
     utf8(b.id(), "unit", "m/s\xc2\xb2");  // m/s², not ASCII
   }
-  const auto signals = io::read_signal_file(path);
+  const auto signals = signal::read_signal_file(path);
   ASSERT_EQ(signals.size(), 1u);
   EXPECT_EQ(signals[0].quantity, "acceleration");
   EXPECT_EQ(signals[0].unit, "m/s\xc2\xb2");

@@ -59,7 +59,7 @@ TEST(SignalReport, BurstSpanAndMainLobe) {
 TEST(SignalReport, SpectrumAndEnvelopeOfAWholePeriodSine) {
   test::TempDir dir;
   const auto file = dir / "s.h5";
-  io::write_signals(file, io::SignalFormat::hdf5, {sine("A", 2), sine("B", 0.5)});
+  signal::write_signals(file, signal::SignalFormat::hdf5, {sine("A", 2), sine("B", 0.5)});
   const SignalSource source{file, {}};
   const auto sp = spectrum_report(source, "sp.csv", {});
   EXPECT_NEAR(sp.summary["spectra"]["A"]["peak_frequency_kHz"].get<double>(), 50, 0.1);  // a hundredth of a bin
@@ -90,7 +90,7 @@ TEST(SignalReport, ThresholdFindsAStepAndConvertGathers) {
   Signal step{"S", "voltage", "V", "", -10e-6, 1e-7, {}, std::nullopt};
   for (int i = 0; i < 500; ++i) step.samples.push_back(step.time(std::size_t(i)) >= 20e-6 ? 1.0 : 0.0);
   const auto file = dir / "step.csv";
-  io::write_signals(file, io::SignalFormat::csv, {step});
+  signal::write_signals(file, signal::SignalFormat::csv, {step});
   TofRequest q;
   q.method = "threshold";
   q.relative = 0.5;
@@ -103,7 +103,7 @@ TEST(SignalReport, ThresholdFindsAStepAndConvertGathers) {
   EXPECT_THROW(tof_report({file, {}}, q), InputError);
 
   const auto other = dir / "two.h5";
-  io::write_signals(other, io::SignalFormat::hdf5, {sine("A", 1), sine("B", 1)});
+  signal::write_signals(other, signal::SignalFormat::hdf5, {sine("A", 1), sine("B", 1)});
   const auto c = convert_report({file, other}, {"B", "S"}, {}, "all.h5");
   ASSERT_EQ(c.signals.size(), 2u);
   EXPECT_EQ(c.summary["signals"], nlohmann::ordered_json::array({"B", "S"}));

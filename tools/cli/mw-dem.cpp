@@ -18,7 +18,7 @@
 #include "mesowave/dem/scene/scene_overrides.hpp"
 #include "mesowave/dem/engine/simulation.hpp"
 #include "mesowave/dem/engine/snapshot.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_file.hpp"
 
 using namespace mesowave;
 namespace fs = std::filesystem;
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
       run.metric("peak_stress", report.test->peak_stress_Pa / 1e6, "MPa");
       run.metric("inertial_number_max", report.test->inertial_number_max, "");
     }
-    io::write_signal_file(run.output(signals_path), signals, attributes);
+    signal::write_signal_file(run.output(signals_path), signals, attributes);
     if (!csv_path.empty()) run.write_text(csv_path, dem::signals_csv(report.signals));
     if (!snapshots.empty()) dem::write_pvd(run.output(snapshot_dir / "snapshots.pvd"), snapshots);
     run.param("model_chosen", report.choice.model);

@@ -3,7 +3,7 @@
 // lattice, measured group velocities with their RSS, and the bar-echo velocity.
 // The analyses and what they report live in wave/dispersion_report.
 #include "mesowave/app/tool.hpp"
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 #include "mesowave/wave/dispersion_report.hpp"
 
 using namespace mesowave;
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
       const auto r = wave::bar_echo_report(bq);
       if (!signals.empty()) {
         const auto written = wave::bar_echo_signals(r);
-        io::write_signals(run.output(signals), io::signal_format_of(signals), written);
+        signal::write_signals(run.output(signals), signal::signal_format_of(signals), written);
       }
       emit(r);
     } else if (measure->parsed()) {

@@ -13,7 +13,7 @@
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/units.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_file.hpp"
 #include "mesowave/fem/case.hpp"
 
 using namespace mesowave;
@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
     const fem::FemRun fem = fem::run_fem_case(setup, [&](std::int64_t n) { progress.update(n); });
     progress.finish();
 
-    io::write_signal_file(run.output(signals_path), fem.result.signals, fem.attributes);
+    signal::write_signal_file(run.output(signals_path), fem.result.signals, fem.attributes);
     if (setup.spacetime)
       fem::write_spacetime_file(run.output(spacetime_path), fem.result.spacetime, *setup.spacetime,
                                  setup.stepping.sample_dt_s, "z", fem.attributes);

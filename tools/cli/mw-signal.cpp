@@ -2,7 +2,7 @@
 // signal files (docs/formats.md; examples in --help). The analyses' reports live in signal/signal_report.
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/error.hpp"
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 #include "mesowave/signal/signal_report.hpp"
 
 using namespace mesowave;
@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
   auto* conv = cli.add_subcommand("convert", "Signal files HDF5 <-> CSV (by the extensions); several inputs merge");
   std::vector<fs::path> conv_files;
   std::vector<std::string> conv_names;
-  io::SignalCsvDefaults csv_defaults;
+  signal::SignalCsvDefaults csv_defaults;
   conv->add_option("files", conv_files, "IN... OUT: signal files to read (.h5 or .csv, their signals gathered in "
                                         "order), then the file to write (.h5 or .csv)")->required()->expected(2, -1);
   conv->add_option("--signals", conv_names, "Only these signals, by name (comma separated; default all)")->delimiter(',');
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
   return tool.run(argc, argv, [&](app::Run& run) {
     const auto emit = [&](const SignalReport& r) {
       for (const auto& f : r.inputs) run.input(f);
-      if (!r.signals.empty()) io::write_signals(run.output(out), io::signal_format_of(out), r.signals, r.attributes);
+      if (!r.signals.empty()) signal::write_signals(run.output(out), signal::signal_format_of(out), r.signals, r.attributes);
       for (const auto& m : r.metrics) run.metric(m.name, m.value, m.unit);
       run.emit_json(r.summary, json_out);
     };
@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
     } else if (conv->parsed()) {
       if (conv_files.size() < 2) throw InputError("convert needs an input file and an output file");
       out = conv_files.back();
-      io::signal_format_of(out);  // refuse a bad output name before reading
+      signal::signal_format_of(out);  // refuse a bad output name before reading
       emit(convert_report({conv_files.begin(), conv_files.end() - 1}, conv_names, csv_defaults, out.string()));
     }
   });

@@ -1,7 +1,8 @@
 // mw-table - summary tables and their plots from other runs' outputs, as
 // recorded runs: the concrete paper's Table 3 gathered from one mw-pcc table per
 // frequency, a speed-against-error table from the DEM run summaries, and a
-// gnuplot figure of any table - so every number and figure of the report has a
+// gnuplot figure of any table, a table as Markdown, and the rod paper's findings
+// checked on the rod's tables - so every number and figure of the report has a
 // provenance run whose inputs are the files it came from.
 //
 //   mw-table gather --key-name f_kHz --row 100=pcc-100kHz.csv --row 150=pcc-150kHz.csv
@@ -11,9 +12,11 @@
 #include "mesowave/io/table_gather.hpp"
 #include "mesowave/io/text_table.hpp"
 #include "mesowave/io/table_plot.hpp"
+#include "mesowave/wave/rod_findings.hpp"
 
 using namespace mesowave;
 namespace fs = std::filesystem;
+using Style = io::ColumnFormat::Style;
 
 int main(int argc, char** argv) {
   app::Tool tool("mw-table",
@@ -34,14 +37,14 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
 
   auto* gather = cli.add_subcommand("gather", "One row per run: values picked from the runs' CSV, JSON or TOML files");
-  std::string key_name = "key", where_text;
+  std::string key_name = "key", where_text, fem_column;
   int significant_digits = 0;
   std::vector<std::string> row_texts, column_texts, join_texts;
   fs::path csv_out;
-  gather->add_option("--key-name", key_name, "Header of the key column (e.g. f_kHz)")->capture_default_str();
+  gather->add_option("--key-name", key_name, "Header of the key column (e.g. f_kHz; A,B: two, and rows A_VALUE,B_VALUE=FILE)")->capture_default_str();
   gather->add_option("--row", row_texts, "KEY=FILE[,FILE...]: one row; repeatable, in order")->required();
   gather->add_option("--column", column_texts,
-                     "NAME[=SOURCE][@COLUMN=VALUE]: an output column from a CSV column or JSON/TOML key (SOURCE may be A|B: A, else B, for a quantity named differently in different files); repeatable")
+                     "NAME[=SOURCE][@COLUMN=VALUE]: an output column from a CSV column or JSON/TOML key (SOURCE may be A|B: A, else B, for a quantity named differently in different files; mean(S) or median(S): over all the row's files; a VALUE {K}: the row's key K); repeatable")
       ->required();
   gather->add_option("--where", where_text, "COLUMN=VALUE: the row of every CSV file to take values from");
   gather->add_option("--join", join_texts,
@@ -52,6 +55,28 @@ int main(int argc, char** argv) {
                      "Round the numbers taken from JSON files to this many significant digits (default: all, "
                      "the shortest text that reads back exactly; CSV and TOML values are copied as written)")
       ->check(CLI::Range(1, 17));
+  std::vector<std::string> decimals_texts, round_texts, join_as_texts, header_texts, md_decimals, md_significant;
+  gather->add_option("--decimals", decimals_texts, "NAME=N: print column NAME with N decimals (0.150); repeatable");
+  gather->add_option("--round", round_texts, "NAME=N: round column NAME to N decimals, shortest text (0.15); repeatable");
+  gather->add_option("--join-as", join_as_texts, "KEY=KEY: a row key as the --join tables spell it; repeatable");
+
+  auto* markdown = cli.add_subcommand("markdown", "A CSV table as a Markdown table");
+  io::MarkdownTableOptions mo;
+  fs::path markdown_table, markdown_out;
+  markdown->add_option("table", markdown_table, "CSV table")->required();
+  markdown->add_option("--header", header_texts, "COLUMN=TEXT: the column's header; repeatable");
+  markdown->add_option("--decimals", md_decimals, "COLUMN=N: its numbers with N decimals; repeatable");
+  markdown->add_option("--significant", md_significant, "COLUMN=N: its numbers with N significant digits; repeatable");
+  markdown->add_option("--empty", mo.empty, "What an empty field shows")->capture_default_str();
+  markdown->add_option("--out", markdown_out, "Markdown file to write")->type_name("FILE")->required();
+
+  auto* findings = cli.add_subcommand("findings", "The rod paper's findings checked on the rod study's tables");
+  fs::path velocity_table, table1, table2, findings_out;
+  findings->add_option("--velocity", velocity_table, "Group velocity: f_kHz, then a column per model")->required();
+  findings->add_option("--table1", table1, "Rod Table 1: model, pcc_vs_fem_envelope")->required();
+  findings->add_option("--table2", table2, "Rod Table 2: model, rss_m2_s2")->required();
+  findings->add_option("--fem-column", fem_column, "The FEM's column of --velocity")->required();
+  findings->add_option("--out", findings_out, "Markdown check list to write")->type_name("FILE")->required();
 
   auto* plot = cli.add_subcommand("plot", "Columns of a CSV table against one of its columns (gnuplot)");
   fs::path table_path, plot_out;
@@ -85,10 +110,30 @@ int main(int argc, char** argv) {
       for (const auto& r : row_texts) spec.rows.push_back(io::parse_gather_row(r));
       for (const auto& c : column_texts) spec.columns.push_back(io::parse_column_source(c));
       for (const auto& j : join_texts) spec.joins.push_back(io::parse_table_join(j));
+      for (const auto& d : decimals_texts) spec.formats.insert(io::parse_column_format(d, Style::fixed));
+      for (const auto& d : round_texts) spec.formats.insert(io::parse_column_format(d, Style::rounded));
+      for (const auto& a : join_as_texts) spec.join_keys.insert(io::parse_row_selector(a));
       for (const auto& f : spec.files()) run.input(f);
       const auto table = io::gather_rows(spec);
       run.write_text(csv_out, io::to_csv(table.header, table.rows));
       run.out() << io::format_text_table(table.header, table.rows);
+      return;
+    }
+    if (markdown->parsed()) {
+      for (const auto& h : header_texts) mo.headers.insert(io::parse_row_selector(h));
+      for (const auto& d : md_decimals) mo.formats.insert(io::parse_column_format(d, Style::fixed));
+      for (const auto& d : md_significant) mo.formats.insert(io::parse_column_format(d, Style::significant));
+      run.input(markdown_table);
+      const auto table = io::read_csv(markdown_table);
+      run.write_text(markdown_out, io::format_markdown_table(table.header, table.rows, mo));
+      return;
+    }
+    if (findings->parsed()) {
+      for (const auto& f : {velocity_table, table1, table2}) run.input(f);
+      const auto found = wave::rod_findings(io::read_csv(velocity_table), io::read_csv(table1), io::read_csv(table2),
+                                            fem_column);
+      run.write_text(findings_out, found.markdown());
+      run.out() << found.markdown();
       return;
     }
     io::require_plot_extension(plot_out);

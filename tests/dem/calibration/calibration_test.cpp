@@ -11,6 +11,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/dem/calibration/calibration.hpp"
+#include "support/input_error.hpp"
 
 using namespace mesowave;
 using namespace mesowave::dem;
@@ -88,14 +89,11 @@ TEST(CompressionCalibration, MeetsTheDefaultTolerancesInAFewTrials) {
 
 TEST(CompressionCalibration, RefusesTargetsNoPackingReaches) {
   const CalibrationTolerances tol;
-  auto message = [&](const CalibrationTargets& t) -> std::string {
-    try {
+  auto message = [&](const CalibrationTargets& t) {
+    return mesowave::test::input_error_of([&] {
       CompressionCalibration c(t, tol, kPoorStart, 12);
       calibrate(c, SyntheticPacking{});
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "accepted";
+    });
   };
   EXPECT_NE(message({27e9, 0.5, 66e6}).find("must lie in (0, 0.5)"), std::string::npos);
   EXPECT_NE(message({27e9, 0.62, 66e6}).find("must lie in (0, 0.5)"), std::string::npos);
@@ -113,24 +111,16 @@ TEST(CompressionCalibration, RefusesAStrengthTheBondsCannotGive) {
   SyntheticPacking packing;
   packing.strength = [](double T) { return 2.7 * T / (1 + T / 50e6); };
   CompressionCalibration c({27.42e9, 0.16, 400e6}, {}, kPoorStart, 30);
-  try {
-    calibrate(c, packing);
-    FAIL() << "an unreachable strength was accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("unreachable"), std::string::npos) << e.what();
-  }
+  const std::string error = mesowave::test::input_error_of([&] { calibrate(c, packing); });
+  EXPECT_NE(error.find("unreachable"), std::string::npos) << error;
 }
 
 TEST(CompressionCalibration, GivesUpAfterItsTrialBudget) {
   SyntheticPacking packing;
   packing.strength = [](double T) { return 2.7 * T * (1 + 0.3 * std::sin(T / 1e6)); };  // not monotonic
   CompressionCalibration c({27.42e9, 0.16, 66e6}, {1e-9, 1e-9, 1e-9}, kPoorStart, 6);
-  try {
-    calibrate(c, packing);
-    FAIL() << "ran past its budget";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("within 6 trials"), std::string::npos) << e.what();
-  }
+  const std::string error = mesowave::test::input_error_of([&] { calibrate(c, packing); });
+  EXPECT_NE(error.find("within 6 trials"), std::string::npos) << error;
   EXPECT_EQ(c.trials().size(), 6u);
 }
 

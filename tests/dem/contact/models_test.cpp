@@ -9,6 +9,7 @@
 #include "mesowave/dem/engine/simulation.hpp"
 #include "mesowave/signal/correlation.hpp"
 #include "dem/test_packings.hpp"
+#include "support/input_error.hpp"
 
 using namespace mesowave;
 using namespace mesowave::dem;
@@ -70,12 +71,7 @@ TEST(Models, ChoiceFollowsTheAmplitudeAndTheLinearCheckNamesTheBound) {
   }
   // Forced to linear at an amplitude that loads the bonds to a few % of their strength:
   // the result is refused, naming the measured ratio and the bound.
-  std::string error;
-  try {
-    run(cube_scene(4, 1.0, 300e3, 20e-6), p, "linear");
-  } catch (const InputError& e) {
-    error = e.what();
-  }
+  const std::string error = mesowave::test::input_error_of([&] { run(cube_scene(4, 1.0, 300e3, 20e-6), p, "linear"); });
   EXPECT_NE(error.find("above the validity bound 0.001"), std::string::npos) << error;
 }
 

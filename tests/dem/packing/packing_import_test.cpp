@@ -9,6 +9,7 @@
 #include "mesowave/dem/packing/packing_generator.hpp"
 #include "mesowave/dem/packing/packing_import.hpp"
 #include "mesowave/dem/packing/packing_stats.hpp"
+#include "support/input_error.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -67,12 +68,8 @@ TEST(PackingImport, MalformedYadeText) {
   EXPECT_THROW(parse_yade_text("1 2 3 0\n", "a"), InputError);
   EXPECT_THROW(parse_yade_text("#format x_y_z\n1 2 3 1\n", "a"), InputError);
   EXPECT_THROW(parse_yade_text("1 2 nan 1\n", "a"), InputError);
-  try {
-    parse_yade_text("0 0 0 1\n1 2 3 x\n", "spheres.txt");
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "spheres.txt:2: 'x' is not a finite number");
-  }
+  EXPECT_EQ(mesowave::test::input_error_of([] { parse_yade_text("0 0 0 1\n1 2 3 x\n", "spheres.txt"); }),
+            "spheres.txt:2: 'x' is not a finite number");
 }
 
 TEST(PackingImport, CsvWithUnitsInTheColumnNames) {

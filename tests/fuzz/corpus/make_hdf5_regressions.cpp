@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 #include "mesowave/dem/packing/packing_file.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_file.hpp"
 using namespace mesowave;
 namespace fs = std::filesystem;
 static hid_t reopen(const fs::path& p) { return H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT); }
@@ -32,7 +32,7 @@ int main(int, char** argv) {
   for (int i = 0; i < 8; ++i) sig[0].samples.push_back(std::sin(0.5 * i));
   auto signal_case = [&](const char* file, auto edit) {
     const fs::path p = c / "signal_hdf5" / file;
-    io::write_signal_file(p, sig);
+    signal::write_signal_file(p, sig);
     hid_t f = reopen(p); hid_t g = H5Gopen2(f, "signals/B", H5P_DEFAULT);
     edit(f, g);
     H5Gclose(g); H5Fclose(f);

@@ -8,8 +8,8 @@
 #include "mesowave/dem/packing/packing_file.hpp"
 #include "mesowave/dem/packing/packing_import.hpp"
 #include "mesowave/io/image.hpp"
-#include "mesowave/io/signal_csv.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_csv.hpp"
+#include "mesowave/signal/signal_file.hpp"
 using namespace mesowave;
 namespace fs = std::filesystem;
 static void put(const fs::path& p, const std::string& s) { fs::create_directories(p.parent_path()); std::ofstream(p, std::ios::binary) << s; }
@@ -41,8 +41,8 @@ int main(int, char** argv) {
     if (!k) s.position_m = std::array<double, 3>{0.025, 0, 0.05};
   }
   fs::create_directories(c / "signal_hdf5");
-  io::write_signal_file(c / "signal_hdf5/two-signals.h5", sig, {{"scene", "cube-wave"}});
-  put(c / "signal_csv/two-signals.csv", io::signals_to_csv(sig, {{"scene", "cube-wave"}}));
+  signal::write_signal_file(c / "signal_hdf5/two-signals.h5", sig, {{"scene", "cube-wave"}});
+  put(c / "signal_csv/two-signals.csv", signal::signals_to_csv(sig, {{"scene", "cube-wave"}}));
   dem::Packing p;
   p.centres_m = {{0.001, 0.001, 0.001}, {0.003, 0.001, 0.001}, {0.002, 0.0027, 0.001}};
   p.radii_m = {0.001, 0.001, 0.0009};

@@ -10,13 +10,6 @@
 namespace mesowave::io {
 namespace {
 
-std::string trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
-  return std::string(s.substr(first, last - first + 1));
-}
-
 // Splits one record starting at `pos`; advances `pos` past its line end and
 // `line` by the number of newlines consumed (quoted fields may span lines).
 std::vector<std::string> split_record(std::string_view text, std::size_t& pos, std::size_t& line,
@@ -40,7 +33,7 @@ std::vector<std::string> split_record(std::string_view text, std::size_t& pos, s
     } else if (c == '"') {
       quoted = was_quoted = true;
     } else if (c == ',') {
-      fields.push_back(was_quoted ? field : trim(field));
+      fields.push_back(was_quoted ? field : trim_blanks(field));
       field.clear();
       was_quoted = false;
     } else if (c == '\n') {
@@ -52,7 +45,7 @@ std::vector<std::string> split_record(std::string_view text, std::size_t& pos, s
     }
   }
   if (quoted) throw InputError(origin + ":" + std::to_string(start_line) + ": unterminated quoted field");
-  fields.push_back(was_quoted ? field : trim(field));
+  fields.push_back(was_quoted ? field : trim_blanks(field));
   return fields;
 }
 
@@ -145,6 +138,13 @@ std::string to_csv(const std::vector<std::string>& header, const std::vector<std
   line(header);
   for (const auto& r : rows) line(r);
   return out;
+}
+
+std::string trim_blanks(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t\r");
+  return std::string(s.substr(first, last - first + 1));
 }
 
 }  // namespace mesowave::io

@@ -27,6 +27,10 @@ struct CsvTable {
 CsvTable parse_csv(std::string_view text, std::string origin);
 CsvTable read_csv(const std::filesystem::path& path);
 
+/// `s` without leading and trailing spaces, tabs and carriage returns (an
+/// unquoted field as read, a header's name and unit).
+std::string trim_blanks(std::string_view s);
+
 /// Writes a table; fields with commas, quotes or newlines are quoted.
 std::string to_csv(const std::vector<std::string>& header,
                    const std::vector<std::vector<std::string>>& rows);

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -128,6 +129,14 @@ ColumnSource parse_column_source(const std::string& text) {
   const auto eq = rest.find('=');
   c.name = trim(rest.substr(0, eq));
   c.source = eq == std::string::npos ? c.name : trim(rest.substr(eq + 1));
+  for (const auto& [word, aggregate] : {std::pair{"mean(", ColumnSource::Aggregate::mean},
+                                        std::pair{"median(", ColumnSource::Aggregate::median}}) {
+    const std::string prefix = word;
+    if (c.source.rfind(prefix, 0) == 0 && c.source.size() > prefix.size() + 1 && c.source.back() == ')') {
+      c.source = trim(c.source.substr(prefix.size(), c.source.size() - prefix.size() - 1));
+      c.aggregate = aggregate;
+    }
+  }
   if (c.name.empty() || c.source.empty())
     throw InputError("column '" + text + "' must read NAME, NAME=SOURCE or NAME=SOURCE@COLUMN=VALUE");
   return c;
@@ -179,42 +188,100 @@ std::vector<std::string> split_alternatives(const std::string& source) {
     if (!trim(name).empty()) names.push_back(trim(name));
   return names;
 }
+
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> parts;
+  for (std::size_t at = 0; at <= key.size();) {
+    const auto comma = std::min(key.find(',', at), key.size());
+    parts.push_back(trim(key.substr(at, comma - at)));
+    at = comma + 1;
+  }
+  return parts;
+}
+
+// The selector with "{KEY}" replaced by the row's value of key column KEY.
+std::optional<RowSelector> for_row(std::optional<RowSelector> where, const std::vector<std::string>& key_names,
+                                   const std::vector<std::string>& key) {
+  if (!where || where->second.size() < 3 || where->second.front() != '{' || where->second.back() != '}') return where;
+  const std::string name = where->second.substr(1, where->second.size() - 2);
+  const auto it = std::find(key_names.begin(), key_names.end(), name);
+  if (it == key_names.end())
+    throw InputError("row selector " + where->first + "=" + where->second + ": '" + name + "' is not a key column");
+  where->second = key[std::size_t(it - key_names.begin())];
+  return where;
+}
+
+// The mean or the median of a row's values; the median of an even count is the
+// mean of the middle two.
+double aggregate_of(std::vector<double> values, ColumnSource::Aggregate aggregate) {
+  if (aggregate == ColumnSource::Aggregate::mean) {
+    double sum = 0;
+    for (double v : values) sum += v;
+    return sum / double(values.size());
+  }
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
 }  // namespace
 
 CsvTable gather_rows(const GatherSpec& spec) {
   if (spec.rows.empty()) throw InputError("a gathered table needs at least one row");
   if (spec.columns.empty()) throw InputError("a gathered table needs at least one column");
+  const auto key_names = split_key(spec.key_name);
   CsvTable table;
   table.origin = "gathered table";
-  table.header.push_back(spec.key_name);
+  table.header = key_names;
   for (const auto& c : spec.columns) table.header.push_back(c.name);
   for (const auto& row : spec.rows) {
     std::vector<Source> sources;
     for (const auto& f : row.files) sources.push_back(Source::load(f));
-    std::vector<std::string> fields = {row.key};
+    std::vector<std::string> fields = split_key(row.key);
+    if (fields.size() != key_names.size())
+      throw InputError("row " + row.key + ": " + std::to_string(fields.size()) + " key part(s), the key " +
+                       spec.key_name + " has " + std::to_string(key_names.size()));
+    const auto key = fields;
     for (const auto& c : spec.columns) {
-      std::optional<std::string> v;
+      const auto where = for_row(c.where ? c.where : spec.where, key_names, key);
       const auto alternatives = split_alternatives(c.source);
+      std::vector<std::string> found;  // one value per file that holds the source
       for (const auto& s : sources) {
+        std::optional<std::string> v;
         for (const auto& a : alternatives)
-          if ((v = s.value(a, c.where ? c.where : spec.where, spec.significant_digits))) break;
-        if (v) break;
+          if ((v = s.value(a, where, spec.significant_digits))) break;
+        if (v) found.push_back(*v);
+        if (v && c.aggregate == ColumnSource::Aggregate::first) break;
       }
-      if (!v) {
+      if (found.empty()) {
         std::string names;
         for (const auto& f : row.files) names += (names.empty() ? "" : ", ") + f.string();
         throw InputError("row " + row.key + ": no file holds '" + c.source + "' (" + names + ")");
       }
-      fields.push_back(*v);
+      if (c.aggregate == ColumnSource::Aggregate::first) {
+        fields.push_back(found.front());
+        continue;
+      }
+      std::vector<double> values;
+      for (const auto& v : found) {
+        const auto x = as_number(v);
+        if (!x) throw InputError("row " + row.key + ": '" + c.source + "' holds '" + v + "', not a number to average");
+        values.push_back(*x);
+      }
+      fields.push_back(format_exact(aggregate_of(values, c.aggregate)));
     }
     table.rows.push_back(std::move(fields));
   }
-  for (const auto& j : spec.joins) join_columns(table, read_csv(j.file), spec.key_name, j.columns);
+  for (const auto& j : spec.joins) join_columns(table, read_csv(j.file), key_names.front(), j.columns, spec.join_keys);
+  for (const auto& [name, format] : spec.formats) {
+    const auto col = table.column(name);
+    for (auto& row : table.rows)
+      if (!row[col].empty()) row[col] = apply_column_format(row[col], format, "column " + name);
+  }
   return table;
 }
 
 void join_columns(CsvTable& table, const CsvTable& other, const std::string& key,
-                  const std::vector<ColumnSource>& columns) {
+                  const std::vector<ColumnSource>& columns, const std::map<std::string, std::string>& aliases) {
   const auto key_here = table.column(key), key_there = other.column(key);
   std::vector<std::size_t> from;
   for (const auto& c : columns) from.push_back(other.column(c.source));
@@ -224,9 +291,11 @@ void join_columns(CsvTable& table, const CsvTable& other, const std::string& key
         throw InputError(other.origin + " has " + key + " = " + other.text(r, key_there) + " twice");
   for (const auto& c : columns) table.header.push_back(c.name);
   for (auto& row : table.rows) {
+    const auto alias = aliases.find(row[key_here]);
+    const std::string& wanted = alias == aliases.end() ? row[key_here] : alias->second;
     std::optional<std::size_t> match;
     for (std::size_t r = 0; r < other.rows.size(); ++r)
-      if (same_key(row[key_here], other.text(r, key_there))) match = r;
+      if (same_key(wanted, other.text(r, key_there))) match = r;
     for (auto col : from) row.push_back(match ? other.text(*match, col) : std::string());
   }
 }

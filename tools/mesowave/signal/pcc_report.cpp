@@ -8,7 +8,7 @@
 #include "mesowave/core/units.hpp"
 #include "mesowave/io/csv.hpp"
 #include "mesowave/io/gnuplot.hpp"
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 #include "mesowave/io/text_table.hpp"
 #include "mesowave/signal/envelope.hpp"
 
@@ -22,7 +22,7 @@ std::vector<Signal> read_set(const std::vector<fs::path>& files, std::vector<fs:
   std::vector<Signal> all;
   for (const auto& f : files) {
     inputs.push_back(f);
-    for (auto& s : io::read_signals(f)) all.push_back(std::move(s));
+    for (auto& s : signal::read_signals(f)) all.push_back(std::move(s));
   }
   return all;
 }

@@ -3,7 +3,7 @@
 // of signals (concrete paper Table 3) as text, CSV and JSON, the amplitude
 // spectra of both sets (Fig. 15) and the sensor-panel figures (Figs. 12-15).
 // The request holds the options as given; pcc_report reads both sets
-// (io::read_signals), checks the options, correlates and reports.
+// (signal::read_signals), checks the options, correlates and reports.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>

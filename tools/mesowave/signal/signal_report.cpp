@@ -66,7 +66,7 @@ SignalReport burst_report(const BurstRequest& q) {
 }
 
 std::vector<Signal> read_source(const SignalSource& source) {
-  return select_signals(io::read_signals(source.file), source.names, source.file.string());
+  return select_signals(signal::read_signals(source.file), source.names, source.file.string());
 }
 
 SignalReport envelope_report(const SignalSource& source, const std::string& output, const std::string& detrend,
@@ -183,11 +183,11 @@ SignalReport tof_report(const SignalSource& source, const TofRequest& q) {
 }
 
 SignalReport convert_report(const std::vector<std::filesystem::path>& inputs, const std::vector<std::string>& names,
-                            const io::SignalCsvDefaults& defaults, const std::string& output) {
+                            const signal::SignalCsvDefaults& defaults, const std::string& output) {
   std::vector<Signal> all;
   std::string from;
   for (const auto& file : inputs) {
-    for (auto& s : io::read_signals(file, defaults)) all.push_back(std::move(s));
+    for (auto& s : signal::read_signals(file, defaults)) all.push_back(std::move(s));
     from += (from.empty() ? "" : " ") + file.string();
   }
   SignalReport r;

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 #include "mesowave/prov/run_record.hpp"
 #include "mesowave/signal/signal.hpp"
 
@@ -72,6 +72,6 @@ SignalReport tof_report(const SignalSource& input, const TofRequest& request);
 /// The signals of every file in `inputs`, in order (CSV columns without a unit or
 /// quantity take `defaults`'), only those named in `names` if any.
 SignalReport convert_report(const std::vector<std::filesystem::path>& inputs, const std::vector<std::string>& names,
-                            const io::SignalCsvDefaults& defaults, const std::string& output);
+                            const signal::SignalCsvDefaults& defaults, const std::string& output);
 
 }  // namespace mesowave::signal

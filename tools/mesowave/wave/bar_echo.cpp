@@ -8,7 +8,7 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/units.hpp"
 #include "mesowave/io/csv.hpp"
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 #include "mesowave/signal/spectrum.hpp"
 #include "mesowave/signal/time_of_flight.hpp"
 #include "mesowave/signal/envelope.hpp"
@@ -132,7 +132,7 @@ signal::Signal read_record(const std::filesystem::path& path, const std::string&
     mesowave_layout = first.rfind("t_", 0) == 0 || first.rfind("t [", 0) == 0 || first.rfind("time [", 0) == 0;
   }
   if (!mesowave_layout) return signal_from_csv(path.string(), name);
-  for (const auto& s : io::read_signals(path))
+  for (const auto& s : signal::read_signals(path))
     if (s.name == name) return s;
   throw InputError(path.string() + " has no signal " + name);
 }

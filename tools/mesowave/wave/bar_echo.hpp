@@ -67,7 +67,7 @@ signal::Signal propagate_l01(const signal::Signal& pulse, const PochhammerChree&
                              double f_max_Hz);
 
 /// The signal `name` of a record file: a mesowave signal file (HDF5, or CSV whose
-/// first column is t_s / t_ms / t_us / t_ns, read by io::read_signals), or any
+/// first column is t_s / t_ms / t_us / t_ns, read by signal::read_signals), or any
 /// other CSV table through signal_from_csv.
 signal::Signal read_record(const std::filesystem::path& path, const std::string& name);
 

@@ -11,7 +11,7 @@
 #include "mesowave/core/format.hpp"
 #include "mesowave/core/units.hpp"
 #include "mesowave/io/csv.hpp"
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 #include "mesowave/wave/group_velocity.hpp"
 
 namespace mesowave::wave {
@@ -144,7 +144,7 @@ DispersionReport measure_report(const MeasureReportRequest& q) {
         if (!a) throw InputError(file.string() + " does not record its burst frequency: give FREQ_kHz=" + run);
         f = std::stod(*a);
       }
-      auto p = measure_run(io::read_signals(file), f, req);
+      auto p = measure_run(signal::read_signals(file), f, req);
       p.run = q.label.empty() ? file.filename().string() : q.label;
       points.push_back(p);
     }

@@ -23,18 +23,18 @@
 
 #include "mesowave/signal/signal.hpp"
 
-namespace mesowave::io {
+namespace mesowave::signal {
 
 struct SignalCsvDefaults {
   std::string unit;      ///< for columns without "[unit]"
   std::string quantity;  ///< for signals without a "# signal" line
 };
 
-std::string signals_to_csv(const std::vector<signal::Signal>& signals,
+std::string signals_to_csv(const std::vector<Signal>& signals,
                            const std::map<std::string, std::string>& file_attributes = {});
-std::vector<signal::Signal> parse_signal_csv(std::string_view text, const std::string& origin,
+std::vector<Signal> parse_signal_csv(std::string_view text, const std::string& origin,
                                              const SignalCsvDefaults& defaults = {});
-std::vector<signal::Signal> read_signal_csv(const std::filesystem::path& path, const SignalCsvDefaults& defaults = {});
+std::vector<Signal> read_signal_csv(const std::filesystem::path& path, const SignalCsvDefaults& defaults = {});
 
 /// Signal files by their extension: .h5 / .hdf5 / .hdf (io/signal_file.hpp) or .csv.
 enum class SignalFormat { hdf5, csv };
@@ -42,11 +42,11 @@ enum class SignalFormat { hdf5, csv };
 SignalFormat signal_format_of(const std::filesystem::path& path);
 
 /// Reads either kind, chosen by the extension of `path`.
-std::vector<signal::Signal> read_signals(const std::filesystem::path& path, const SignalCsvDefaults& defaults = {});
+std::vector<Signal> read_signals(const std::filesystem::path& path, const SignalCsvDefaults& defaults = {});
 
 /// Writes `signals` as `format` to `path` (which may be a staged temporary
 /// whose extension says nothing; name the format from the final path).
-void write_signals(const std::filesystem::path& path, SignalFormat format, const std::vector<signal::Signal>& signals,
+void write_signals(const std::filesystem::path& path, SignalFormat format, const std::vector<Signal>& signals,
                    const std::map<std::string, std::string>& file_attributes = {});
 
-}  // namespace mesowave::io
+}  // namespace mesowave::signal

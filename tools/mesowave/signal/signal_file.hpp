@@ -17,15 +17,15 @@
 
 #include "mesowave/signal/signal.hpp"
 
-namespace mesowave::io {
+namespace mesowave::signal {
 
 /// Writes `signals` to `path` (truncating). `file_attributes` become string
 /// attributes of the root (e.g. the scene, the model that ran).
-void write_signal_file(const std::filesystem::path& path, const std::vector<signal::Signal>& signals,
+void write_signal_file(const std::filesystem::path& path, const std::vector<Signal>& signals,
                        const std::map<std::string, std::string>& file_attributes = {});
 
 /// Reads every signal, in the order written. InputError for a file that is
 /// not a mesowave signal file, or a signal without its attributes.
-std::vector<signal::Signal> read_signal_file(const std::filesystem::path& path);
+std::vector<Signal> read_signal_file(const std::filesystem::path& path);
 
-}  // namespace mesowave::io
+}  // namespace mesowave::signal

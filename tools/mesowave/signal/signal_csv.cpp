@@ -1,4 +1,4 @@
-#include "mesowave/io/signal_csv.hpp"
+#include "mesowave/signal/signal_csv.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,26 +9,19 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/io/csv.hpp"
-#include "mesowave/io/signal_file.hpp"
+#include "mesowave/signal/signal_file.hpp"
 
-namespace mesowave::io {
+namespace mesowave::signal {
 namespace {
-
-std::string trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
-  return std::string(s.substr(first, last - first + 1));
-}
 
 // Seconds per unit of a time column, from "t_us", "time_ms", "t [us]", "time [s]".
 double time_column_factor(const std::string& header) {
   std::string unit;
   const auto bracket = header.find('[');
   if (bracket != std::string::npos && header.back() == ']') {
-    const std::string name = trim(header.substr(0, bracket));
+    const std::string name = io::trim_blanks(header.substr(0, bracket));
     if (name != "t" && name != "time") return 0;
-    unit = trim(header.substr(bracket + 1, header.size() - bracket - 2));
+    unit = io::trim_blanks(header.substr(bracket + 1, header.size() - bracket - 2));
   } else {
     for (const char* prefix : {"t_", "time_"})
       if (header.rfind(prefix, 0) == 0) unit = header.substr(std::string(prefix).size());
@@ -41,7 +34,7 @@ double time_column_factor(const std::string& header) {
 }
 
 void check_csv_name(const std::string& name) {
-  if (name.empty() || name.find_first_of(",\"[]:\n\r") != std::string::npos || trim(name) != name)
+  if (name.empty() || name.find_first_of(",\"[]:\n\r") != std::string::npos || io::trim_blanks(name) != name)
     throw InputError("signal name '" + name +
                      "' cannot be a CSV column (no commas, quotes, brackets, colons or outer spaces)");
 }
@@ -58,14 +51,14 @@ void parse_metadata_line(std::string_view line, const std::string& origin, std::
   if (line.substr(0, prefix.size()) != prefix) return;
   const auto colon = line.find(':', prefix.size());
   if (colon == std::string_view::npos) return;
-  const std::string name = trim(line.substr(prefix.size(), colon - prefix.size()));
+  const std::string name = io::trim_blanks(line.substr(prefix.size(), colon - prefix.size()));
   Metadata m;
   std::stringstream fields{std::string(line.substr(colon + 1))};
   std::string field;
   while (std::getline(fields, field, ';')) {
     const auto eq = field.find('=');
     if (eq == std::string::npos) continue;
-    const std::string key = trim(field.substr(0, eq)), value = trim(field.substr(eq + 1));
+    const std::string key = io::trim_blanks(field.substr(0, eq)), value = io::trim_blanks(field.substr(eq + 1));
     if (key == "quantity") m.quantity = value;
     else if (key == "component") m.component = value;
     else if (key == "position_m") {
@@ -82,7 +75,7 @@ void parse_metadata_line(std::string_view line, const std::string& origin, std::
 
 }  // namespace
 
-std::string signals_to_csv(const std::vector<signal::Signal>& signals,
+std::string signals_to_csv(const std::vector<Signal>& signals,
                            const std::map<std::string, std::string>& file_attributes) {
   if (signals.empty()) throw InputError("no signals to write");
   const auto& first = signals.front();
@@ -131,7 +124,7 @@ std::string signals_to_csv(const std::vector<signal::Signal>& signals,
   return out;
 }
 
-std::vector<signal::Signal> parse_signal_csv(std::string_view text, const std::string& origin,
+std::vector<Signal> parse_signal_csv(std::string_view text, const std::string& origin,
                                              const SignalCsvDefaults& defaults) {
   std::map<std::string, Metadata> metadata;
   {
@@ -145,7 +138,7 @@ std::vector<signal::Signal> parse_signal_csv(std::string_view text, const std::s
       ++line_no;
     }
   }
-  const CsvTable table = parse_csv(text, origin);
+  const io::CsvTable table = io::parse_csv(text, origin);
   if (table.header.size() < 2)
     throw InputError(origin + ": needs a time column and at least one signal column, has " +
                      std::to_string(table.header.size()) + " column(s)");
@@ -169,15 +162,15 @@ std::vector<signal::Signal> parse_signal_csv(std::string_view text, const std::s
                        table.header[0] + ") by more than 0.1 dt; resample the file onto a uniform grid first");
   }
 
-  std::vector<signal::Signal> signals;
+  std::vector<Signal> signals;
   std::set<std::string> names;
   for (std::size_t c = 1; c < table.header.size(); ++c) {
     const std::string& header = table.header[c];
-    signal::Signal s;
+    Signal s;
     const auto bracket = header.rfind('[');
     if (bracket != std::string::npos && header.back() == ']') {
-      s.name = trim(header.substr(0, bracket));
-      s.unit = trim(header.substr(bracket + 1, header.size() - bracket - 2));
+      s.name = io::trim_blanks(header.substr(0, bracket));
+      s.unit = io::trim_blanks(header.substr(bracket + 1, header.size() - bracket - 2));
     } else {
       s.name = header;
       s.unit = defaults.unit;
@@ -200,7 +193,7 @@ std::vector<signal::Signal> parse_signal_csv(std::string_view text, const std::s
   return signals;
 }
 
-std::vector<signal::Signal> read_signal_csv(const std::filesystem::path& path, const SignalCsvDefaults& defaults) {
+std::vector<Signal> read_signal_csv(const std::filesystem::path& path, const SignalCsvDefaults& defaults) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read " + path.string());
   std::ostringstream content;
@@ -216,11 +209,11 @@ SignalFormat signal_format_of(const std::filesystem::path& path) {
   throw InputError(path.string() + ": signal files end in .h5 (HDF5) or .csv, not '" + ext + "'");
 }
 
-std::vector<signal::Signal> read_signals(const std::filesystem::path& path, const SignalCsvDefaults& defaults) {
+std::vector<Signal> read_signals(const std::filesystem::path& path, const SignalCsvDefaults& defaults) {
   return signal_format_of(path) == SignalFormat::hdf5 ? read_signal_file(path) : read_signal_csv(path, defaults);
 }
 
-void write_signals(const std::filesystem::path& path, SignalFormat format, const std::vector<signal::Signal>& signals,
+void write_signals(const std::filesystem::path& path, SignalFormat format, const std::vector<Signal>& signals,
                    const std::map<std::string, std::string>& file_attributes) {
   if (format == SignalFormat::hdf5) return write_signal_file(path, signals, file_attributes);
   const std::string text = signals_to_csv(signals, file_attributes);
@@ -230,4 +223,4 @@ void write_signals(const std::filesystem::path& path, SignalFormat format, const
   if (!out) throw InputError("cannot write " + path.string());
 }
 
-}  // namespace mesowave::io
+}  // namespace mesowave::signal
