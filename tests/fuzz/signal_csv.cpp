@@ -1,4 +1,4 @@
-// Fuzz target: signal CSV (io/signal_csv.hpp: a time column, one column per
+// Fuzz target: signal CSV (signal/signal_csv.hpp: a time column, one column per
 // signal, "# signal" metadata comments), as mw-signal reads it.
 #include <cstddef>
 #include <cstdint>

@@ -36,7 +36,7 @@ std::vector<Signal> parse_signal_csv(std::string_view text, const std::string& o
                                              const SignalCsvDefaults& defaults = {});
 std::vector<Signal> read_signal_csv(const std::filesystem::path& path, const SignalCsvDefaults& defaults = {});
 
-/// Signal files by their extension: .h5 / .hdf5 / .hdf (io/signal_file.hpp) or .csv.
+/// Signal files by their extension: .h5 / .hdf5 / .hdf (signal/signal_file.hpp) or .csv.
 enum class SignalFormat { hdf5, csv };
 /// InputError for any other extension.
 SignalFormat signal_format_of(const std::filesystem::path& path);
