@@ -1,4 +1,4 @@
-// Fuzz target: signal files (HDF5, io/signal_file.hpp), as every tool that reads
+// Fuzz target: signal files (HDF5, signal/signal_file.hpp), as every tool that reads
 // signals opens them.
 #include <cstddef>
 #include <cstdint>
