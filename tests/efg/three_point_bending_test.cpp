@@ -9,6 +9,8 @@
 #include <cstdio>
 
 #include "mesowave/efg/beam_theory.hpp"
+#include "mesowave/efg/cohesive_law.hpp"
+#include "mesowave/efg/discretisation.hpp"
 #include "mesowave/efg/material.hpp"
 #include "mesowave/efg/three_point_bending.hpp"
 #include "mesowave/fem/plane_static.hpp"
@@ -108,6 +110,48 @@ TEST(ThreePointBending, BothLawsCurvesEnergyAndCrackPath) {
   EXPECT_GT(exp.peak_load_N, bil.peak_load_N);
 }
 
+// The work of fracture, the identity any cohesive model must satisfy: with the ligament a cohesive interface from the
+// start the beam separates completely (the load falls to a ten-thousandth of the peak) and the area under the
+// complete curve is G_f times the ligament area less two shares the discrete model fixes in closed form: the
+// cohesive quadrature point nearest the top face is the hinge the halves turn about - it stays closed and never
+// dissipates (its Gauss weight, 0.348 of half a 10 mm segment: 1.74 mm of the 50 mm ligament, 3.5 %) - and each
+// opened point's initial secant to w_initial keeps the triangle f_t w_initial / 2 off its envelope (0.15 % of G_f
+// for the exponential law, 0.26 % for the bilinear one).
+TEST(ThreePointBending, WorkOfFractureAgainstFractureEnergy) {
+  const double G_f_area = 0.113e3 * 0.050 * 0.100;  // G_f x ligament x thickness = 565 N mm [J]
+  for (const char* law : {"exponential", "bilinear"}) {
+    auto o = coarse(law);
+    o.ligament_interface = true;
+    o.max_deflection_m = 12e-3;
+    o.steps = 40;
+    o.step_ratio = 1.1;  // 0.023 mm steps through the peak, 1 mm ones in the tail
+    o.stop_load_fraction = 1e-4;
+    const auto r = run_three_point_bending(o);
+    std::printf("%s: peak %g N at %g mm, work %g, dissipated %g, stored %g N mm, end %g N at %g mm, %g s\n", law,
+                r.peak_load_N, r.deflection_at_peak_m * 1e3, r.work_of_fracture_J * 1e3, r.dissipated_J * 1e3,
+                r.stored_J * 1e3, r.final_load_N, r.final_deflection_m * 1e3, r.wall_s);
+    ASSERT_TRUE(r.completed) << r.stop_reason;
+    // complete: the load has fallen to 1e-4 of the peak, and the tail beyond the last point (load x deflection for
+    // a load falling as 1 / deflection^2, the two halves turning about the hinge; an upper bound, as the discrete
+    // load is zero once the point below the hinge passes w_max) and the energy still stored are below 0.5 % of G_f A
+    EXPECT_LT(r.final_load_N, 1e-4 * r.peak_load_N);
+    EXPECT_LT(r.final_load_N * r.final_deflection_m, 5e-3 * G_f_area);
+    EXPECT_LT(r.stored_J, 5e-3 * G_f_area);
+    for (std::size_t i = 1; i < r.curve.size(); ++i) EXPECT_GE(r.curve[i].dissipated_J, r.curve[i - 1].dissipated_J);
+    // the closed-form account of what is not dissipated
+    const auto cohesive = make_cohesive_law(law, {o.f_t_Pa, o.G_f_J_m2, {}});
+    const double hinge_share = 0.5 * gauss_legendre(o.cohesive_gauss).w[0] * 0.01 / (o.depth_m - o.notch_m);
+    const double secant_share = 0.5 * o.f_t_Pa * initial_opening_fraction * cohesive->w_max_m() / o.G_f_J_m2;
+    const double expected_J = G_f_area * (1 - hinge_share) * (1 - secant_share);
+    EXPECT_NEAR(r.dissipated_J / expected_J, 1, 2e-3);
+    // the area under the curve: the same up to the trapezoids' error over the 40 steps
+    EXPECT_NEAR(r.work_of_fracture_J / expected_J, 1, 1e-2);
+    // against G_f A itself: within the hinge's 3.5 % and the trapezoids
+    EXPECT_NEAR(r.work_of_fracture_J / G_f_area, 1, 0.05);
+    RecordProperty(std::string(law) + "_work_Nmm", std::to_string(r.work_of_fracture_J * 1e3));
+  }
+}
+
 TEST(ThreePointBending, BadInputNamesTheValue) {
   auto o = coarse("bilinear");
   o.notch_m = 0.1;
@@ -122,6 +166,9 @@ TEST(ThreePointBending, BadInputNamesTheValue) {
   o = coarse("bilinear");
   o.f_t_Pa = -1;
   EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: f_t_Pa (-1) must be positive and finite");
+  o = coarse("bilinear");
+  o.step_ratio = 0.5;
+  EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }), "three-point bending: step_ratio (0.5) must be in [1, 2]");
   o = coarse("hordijk");
   EXPECT_EQ(test::input_error_of([&] { run_three_point_bending(o); }),
             "cohesive law (\"hordijk\") must be exponential or bilinear");

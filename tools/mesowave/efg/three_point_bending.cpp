@@ -42,6 +42,8 @@ void ThreePointBendingOptions::validate() const {
   positive(max_deflection_m, "max_deflection_m");
   if (!(load_width_m > 0 && load_width_m < 0.5 * span_m))
     throw InputError("three-point bending: load_width_m (" + text(load_width_m) + ") must be in (0, span / 2)");
+  if (!(step_ratio >= 1 && step_ratio <= 2))
+    throw InputError("three-point bending: step_ratio (" + text(step_ratio) + ") must be in [1, 2]");
   if (steps < 1) throw InputError("three-point bending: steps (" + std::to_string(steps) + ") must be >= 1");
 }
 
@@ -104,6 +106,22 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
   growth.segment_length_m = h;
   Vec2 tip(mid, o.notch_m);
   bool through = false;
+  if (o.ligament_interface) {  // the whole ligament cohesive from the start, its line beyond the top face
+    cracks.extend(crack, Vec2(mid, o.depth_m + (o.support_scale + 1) * h));
+    const int n = static_cast<int>(std::ceil((o.depth_m - o.notch_m) / h - 1e-9));
+    for (int k = 0; k < n; ++k)
+      interface.add_segment({Vec2(mid, o.notch_m + (o.depth_m - o.notch_m) * k / n), Vec2(mid, o.notch_m + (o.depth_m - o.notch_m) * (k + 1) / n)});
+    problem.update();
+    through = true;
+  }
+  // the crack tip's height: the grown tip, or on the ligament interface the highest point off its initial secant
+  auto tip_height = [&] {
+    if (!o.ligament_interface) return tip.y();
+    double y = o.notch_m;
+    for (const auto& p : interface.points())
+      if (p.w_hist_m > interface.w_initial_m()) y = std::max(y, p.x.y());
+    return y;
+  };
   auto inside = [&](const Vec2& x) { return x.x() > 0 && x.x() < o.span_m && x.y() > 0 && x.y() < o.depth_m; };
   AfterConverged grow = [&](const Eigen::VectorXd& v, double lambda) {
     if (through) return false;
@@ -133,17 +151,19 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
     return true;
   };
 
-  result.curve.push_back({0, 0, 0, tip.y(), 0});
+  result.curve.push_back({0, 0, 0, tip_height(), 0});
   Eigen::VectorXd v = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(constraints.reduced_size()));
   ControlOptions control;
   control.newton = o.newton;
   control.max_re_solves = 4 * (ny + 2);
   std::vector<double> lambdas;
-  for (int i = 1; i <= o.steps; ++i) lambdas.push_back(o.max_deflection_m * i / o.steps);
+  for (int i = 1; i <= o.steps; ++i)  // equal steps, or growing geometrically by step_ratio
+    lambdas.push_back(o.step_ratio == 1 ? o.max_deflection_m * i / o.steps
+                                        : o.max_deflection_m * (std::pow(o.step_ratio, i) - 1) / (std::pow(o.step_ratio, o.steps) - 1));
   auto on_point = [&](const Eigen::VectorXd& x, double lam, const StepReport& rep) {
     const Eigen::VectorXd u = constraints.expand(x, lam);
     const double P = load_of(problem.internal_force(u));
-    result.curve.push_back({lam, P, rep.iterations, tip.y(), interface.dissipated_energy_J()});
+    result.curve.push_back({lam, P, rep.iterations, tip_height(), interface.dissipated_energy_J()});
     result.steps.push_back(rep);
     result.newton_iterations += rep.iterations;
     result.re_solves += rep.re_solves;
@@ -179,6 +199,7 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
   result.cohesive_points = interface.points().size();
   result.crack_path = cracks.cracks()[crack].points;
   result.crack_path.front() = Vec2(mid, 0);  // the notch mouth on the bottom face (the polyline starts below it)
+  if (o.ligament_interface) result.crack_path.back() = Vec2(mid, o.depth_m);  // the line runs on beyond the top face
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
