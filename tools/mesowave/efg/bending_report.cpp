@@ -43,7 +43,13 @@ void add_bending_options(CLI::App& app, BendingCommandLine& v) {
   app.add_option("--crack-weight", v.crack_weight, "visibility | diffraction | transparency, Eq. (13)")
       ->capture_default_str();
   app.add_option("--max-deflection-mm", v.max_deflection_mm, "Last prescribed mid-span deflection")->capture_default_str();
-  app.add_option("--steps", o.steps, "Equal deflection steps")->capture_default_str();
+  app.add_option("--steps", o.steps, "Deflection steps (equal, or growing by --step-ratio)")->capture_default_str();
+  app.add_option("--step-ratio", o.step_ratio,
+                 "Each deflection step this times the last, in [1, 2] (small through the peak, long in the tail)")
+      ->capture_default_str();
+  app.add_flag("--ligament-interface", o.ligament_interface,
+               "The whole ligament a cohesive interface from the start (the complete curve to separation: the "
+               "St. Venant crack cannot cut through the top face, efg/three_point_bending.hpp says why)");
   app.add_option("--fem-refinement", v.fem_refinement,
                  "Q4 reference: cells of load width / (2 x this) (0: no FEM run)")->capture_default_str();
 }
@@ -76,8 +82,8 @@ BendingOutputs three_point_bending_outputs(const ThreePointBendingOptions& o, co
                       {"thickness", o.thickness_m * 1e3}};
   j["material"] = {{"E_GPa", o.E_Pa * 1e-9}, {"nu", o.nu}, {"f_t_MPa", o.f_t_Pa * 1e-6}, {"G_f_N_m", o.G_f_J_m2}};
   j["discretisation"] = {{"spacing_mm", o.spacing_m * 1e3}, {"load_width_mm", o.load_width_m * 1e3}, {"gauss", o.gauss}, {"support_scale", o.support_scale},
-                         {"cohesive_gauss", o.cohesive_gauss}, {"steps", o.steps},
-                         {"max_deflection_mm", o.max_deflection_m * 1e3}};
+                         {"cohesive_gauss", o.cohesive_gauss}, {"steps", o.steps}, {"step_ratio", o.step_ratio},
+                         {"ligament_interface", o.ligament_interface}, {"max_deflection_mm", o.max_deflection_m * 1e3}};
   j["peak_load_N"] = r.peak_load_N;
   j["deflection_at_peak_mm"] = r.deflection_at_peak_m * 1e3;
   // The identity: the work done on the beam until it carries nothing is G_f times the ligament area.
