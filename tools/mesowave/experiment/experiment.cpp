@@ -11,6 +11,7 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/core/units.hpp"
+#include "mesowave/io/toml_keys.hpp"
 
 namespace mesowave::experiment {
 namespace {
@@ -19,50 +20,22 @@ namespace {
 // mm, so that a value read as 40 mm stays 40 * factor (and 40 / 50 = 0.8) exactly.
 double in_mm(double m) { return m / units::mm; }
 
-/// One table of the file: every key read is marked; finish() names a leftover key.
-class Keys {
+/// One table of the file (io/toml_keys.hpp), with the values that carry their origin.
+class Keys : public io::TomlKeys {
 public:
-  Keys(const toml::table& t, std::string where) : t_(t), where_(std::move(where)) {}
-  const std::string& where() const { return where_; }
-  const toml::node* get(const std::string& key) {
-    used_.insert(key);
-    return t_.get(key);
-  }
-  std::optional<std::string> text(const std::string& key) {
-    const toml::node* n = get(key);
-    if (!n) return std::nullopt;
-    if (auto v = n->value<std::string>()) return *v;
-    throw InputError(where_ + "." + key + " must be a string");
-  }
-  std::string text(const std::string& key, const std::string& fallback) { return text(key).value_or(fallback); }
-  std::vector<double> numbers(const toml::node& n, const std::string& key, std::size_t count) const {
-    const toml::array* a = n.as_array();
-    std::vector<double> out;
-    if (a)
-      for (const auto& e : *a)
-        if (auto v = e.value<double>()) out.push_back(*v);
-    if (!a || out.size() != count || a->size() != count)
-      throw InputError(where_ + "." + key + " must be an array of " + std::to_string(count) + " numbers");
-    return out;
-  }
+  using io::TomlKeys::TomlKeys;
   /// A value with its origin: {value = ..., source = "...", cite = "..."}; `count` 0 = a number.
   std::optional<std::vector<double>> sourced(const std::string& key, std::size_t count = 0) {
     const toml::node* n = get(key);
     if (!n) return std::nullopt;
     const toml::table* t = n->as_table();
     if (!t)
-      throw InputError(where_ + "." + key + " must be a table {value = ..., source = \"...\", cite = \"...\"} (where it comes from)");
-    Keys k(*t, where_ + "." + key);
-    const toml::node* v = k.get("value");
-    if (!v) throw InputError(k.where() + " needs value");
+      throw InputError(where() + "." + key + " must be a table {value = ..., source = \"...\", cite = \"...\"} (where it comes from)");
+    Keys k(*t, where() + "." + key);
+    if (!k.has("value")) throw InputError(k.where() + " needs value");
     std::vector<double> out;
-    if (count == 0) {
-      auto x = v->value<double>();
-      if (!x) throw InputError(k.where() + ".value must be a number");
-      out.push_back(*x);
-    } else {
-      out = k.numbers(*v, "value", count);
-    }
+    if (count == 0) out.push_back(*k.number("value"));
+    else out = *k.numbers("value", count);
     for (double x : out) require_finite(k.where() + ".value", x);
     k.origin();
     k.finish();
@@ -74,7 +47,7 @@ public:
   }
   double required_number(const std::string& key) {
     auto v = sourced_number(key);
-    if (!v) throw InputError(where_ + " needs " + key);
+    if (!v) throw InputError(where() + " needs " + key);
     return *v;
   }
   /// source and cite: the kinds lab-data files use (io/quantity_file.hpp); paper, derived
@@ -83,22 +56,12 @@ public:
     static const std::set<std::string> kinds = {"paper", "derived", "synthetic", "assumed", "placeholder", "measured"};
     const std::string source = text("source", "");
     if (!kinds.count(source))
-      throw InputError(where_ + ".source (\"" + source + "\") must be paper, derived, synthetic, assumed, measured or placeholder");
+      throw InputError(where() + ".source (\"" + source + "\") must be paper, derived, synthetic, assumed, measured or placeholder");
     const std::string cite = text("cite", "");
     if (cite.empty() && (source == "paper" || source == "derived" || source == "assumed"))
-      throw InputError(where_ + " (source \"" + source + "\") needs cite: where the value comes from or why it was assumed");
+      throw InputError(where() + " (source \"" + source + "\") needs cite: where the value comes from or why it was assumed");
     return {source, cite};
   }
-  void finish() const {
-    for (const auto& [key, node] : t_)
-      if (!used_.count(std::string(key.str())))
-        throw InputError(where_ + " has an unknown key \"" + std::string(key.str()) + "\"");
-  }
-
-private:
-  const toml::table& t_;
-  std::string where_;
-  std::set<std::string> used_;
 };
 
 const toml::table& table(const toml::table& root, const std::string& key, const std::string& origin) {
@@ -178,12 +141,10 @@ Transducer read_transducer(Keys& k, const Specimen& s) {
   else throw InputError(k.where() + " (" + t.name + ").role (\"" + role + "\") must be actuator or sensor");
   const std::string where = k.where() + " (" + t.name + ")";
   t.face = k.text("face", "");
-  const toml::node* c = k.get("centre_mm");
-  const toml::node* patch = k.get("patch_mm");
-  if (!c || !patch) throw InputError(where + " needs centre_mm = [x, y, z] and patch_mm = [a, b]");
-  const auto centre = k.numbers(*c, "centre_mm", 3), size = k.numbers(*patch, "patch_mm", 2);
-  for (std::size_t d = 0; d < 3; ++d) t.centre_m[d] = require_finite(where + ".centre_mm", centre[d], "mm") * units::mm;
-  for (std::size_t d = 0; d < 2; ++d) t.patch_m[d] = require_positive(where + ".patch_mm", size[d], "mm") * units::mm;
+  const auto centre = k.numbers("centre_mm", 3), size = k.numbers("patch_mm", 2);
+  if (!centre || !size) throw InputError(where + " needs centre_mm = [x, y, z] and patch_mm = [a, b]");
+  for (std::size_t d = 0; d < 3; ++d) t.centre_m[d] = require_finite(where + ".centre_mm", (*centre)[d], "mm") * units::mm;
+  for (std::size_t d = 0; d < 2; ++d) t.patch_m[d] = require_positive(where + ".patch_mm", (*size)[d], "mm") * units::mm;
   check_on_face(s, t, where);
   if (t.role == Transducer::Role::sensor) {
     t.quantity = k.text("quantity", t.quantity);
