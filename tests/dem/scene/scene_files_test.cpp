@@ -39,20 +39,9 @@ std::map<std::string, Transducer> lab_positions() {
   return out;
 }
 
-// Scenes name their packing and experiment files relative to the working directory (the repository).
-class SceneFiles : public ::testing::Test {
-protected:
-  void SetUp() override {
-    previous_ = fs::current_path();
-    fs::current_path(kSource);
-  }
-  void TearDown() override { fs::current_path(previous_); }
-  fs::path previous_;
-};
-
 }  // namespace
 
-TEST_F(SceneFiles, CubeSceneMatchesTheLabDataPositions) {
+TEST(SceneFiles, CubeSceneMatchesTheLabDataPositions) {
   const Scene s = read_scene_file(kSource / "pipeline/concrete-cube/scenes/cube-wave.toml");
   const auto lab = lab_positions();
   ASSERT_EQ(lab.size(), 7u);
@@ -64,7 +53,7 @@ TEST_F(SceneFiles, CubeSceneMatchesTheLabDataPositions) {
       toml::parse_file((kSource / "lab-data/concrete-cube/porosity.toml").string())["cube_side"]["value"].value_or(0.0);
   ASSERT_EQ(side_mm, 50.0);
   // porosity.toml's cube (mw-pack's) is the experiment's specimen.
-  const auto specimen = mesowave::experiment::read_experiment_file("lab-data/concrete-cube/experiment.toml").specimen;
+  const auto specimen = mesowave::experiment::read_experiment_file(kSource / "lab-data/concrete-cube/experiment.toml").specimen;
   for (double a : specimen.size_m) EXPECT_DOUBLE_EQ(a, side_mm * 1e-3);
   EXPECT_DOUBLE_EQ(s.actuators[0].amplitude, 0.01);
   auto check = [&](const std::string& name, const SphereTarget& t) {
@@ -86,7 +75,7 @@ TEST_F(SceneFiles, CubeSceneMatchesTheLabDataPositions) {
   EXPECT_DOUBLE_EQ(s.material.tensile_strength_Pa, 24.4e6);
 }
 
-TEST_F(SceneFiles, MirrorPairsSitOnOppositeFacesSymmetricAboutTheActuatorAxis) {
+TEST(SceneFiles, MirrorPairsSitOnOppositeFacesSymmetricAboutTheActuatorAxis) {
   const auto lab = lab_positions();
   const auto& A = lab.at("A");
   EXPECT_EQ(A.face, "x-");
@@ -105,7 +94,7 @@ TEST_F(SceneFiles, MirrorPairsSitOnOppositeFacesSymmetricAboutTheActuatorAxis) {
   EXPECT_NE(lab.at("D").centre_mm[0], lab.at("E").centre_mm[0]);
 }
 
-TEST_F(SceneFiles, RodSceneParses) {
+TEST(SceneFiles, RodSceneParses) {
   const Scene s = read_scene_file(kSource / "pipeline/steel-rod/scenes/rod-wave.toml");
   EXPECT_DOUBLE_EQ(s.material.E_dem_Pa, 660e9);
   EXPECT_DOUBLE_EQ(s.material.bond_factor, 1.0);

@@ -288,7 +288,7 @@ void set_material_value(Scene& s, const std::string& key, double value, const st
   if (p.field == &CohesiveFrictionalMaterial::density_kg_m3) s.density_given = true;
 }
 
-Scene parse_scene(const std::string& text, const std::string& origin) {
+Scene parse_scene(const std::string& text, const std::string& origin, const std::filesystem::path& base) {
   toml::table root;
   try {
     root = toml::parse(text, origin);
@@ -331,7 +331,7 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
     auto file = k.text("file");
     if (!file || file->empty())
       throw InputError(k.where() + " needs file (an experiment description, lab-data/<study>/experiment.toml)");
-    s.experiment_file = *file;
+    s.experiment_file = (base / *file).lexically_normal();
     k.finish();
     lab = experiment::read_experiment_file(s.experiment_file);
   }
@@ -419,7 +419,7 @@ Scene read_scene_file(const std::filesystem::path& path) {
   if (!in) throw InputError("scene file " + path.string() + " cannot be read");
   std::stringstream text;
   text << in.rdbuf();
-  Scene s = parse_scene(text.str(), path.string());
+  Scene s = parse_scene(text.str(), path.string(), path.parent_path());
   s.source = path;
   return s;
 }

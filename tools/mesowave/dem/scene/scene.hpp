@@ -8,7 +8,7 @@
 //
 //   [scene]     name, description
 //   [packing]   file (relative paths are relative to the working directory)
-//   [experiment] file: the study's experiment (experiment/experiment.hpp: specimen, transducers,
+//   [experiment] file (relative to the scene file's folder): the study's experiment (experiment/experiment.hpp: specimen, transducers,
 //               burst, record); its actuators become force actuators driven by its burst, its
 //               sensors motion sensors, each at the same fractions of the packing's extent as of
 //               the specimen's (patches keep their size); its record gives the duration. The
@@ -97,7 +97,8 @@ struct Scene {
   double snapshot_interval_s = 0;
 };
 
-Scene parse_scene(const std::string& text, const std::string& origin);
+/// `base`: the folder a relative [experiment] file is found in (read_scene_file: the scene's own).
+Scene parse_scene(const std::string& text, const std::string& origin, const std::filesystem::path& base = {});
 
 /// The keys of a scene's [material] table, in order (E_dem_GPa, nu_dem, ...).
 const std::vector<std::string>& material_keys();
