@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Mesh convergence of the concrete cube's continuum reference (mw-fem box, the wave test of
-# pipeline/concrete-cube/study.mk: E_d, nu_d and rho from mw-upv, transducers from
-# lab-data/concrete-cube/sensors.toml, 1.5 ms, 0.1 us samples). For one burst frequency,
+# pipeline/concrete-cube/study.mk: E_d, nu_d and rho from mw-upv, transducers and burst from
+# lab-data/concrete-cube/experiment.toml, 1.5 ms, 0.1 us samples). For one burst frequency,
 # runs every mesh and correlates each with the finest (the last one listed) and with a DEM
 # record if given - over the whole record and over its first 50 us (the direct waves and their
 # first reflections: the PCC window of the pipeline's early comparison).
@@ -19,14 +19,11 @@ mkdir -p "$out"
   "$bin/mw-specimen" --from "$lab/specimen.toml" --out "$out/density.json" > /dev/null
   "$bin/mw-upv" --from "$out/density.json" --from "$lab/upv.toml" --out "$out/upv.json" > /dev/null
 }
-# shellcheck disable=SC2046
-transducers=$("$here/pipeline/concrete-cube/fem-transducers.py" "$lab/sensors.toml" "$lab/porosity.toml")
 for h in $meshes; do
   run=$out/fem-${f}kHz-${h}mm$suffix
   [ -f "$run.json" ] && continue
   load=$(cut -d' ' -f1 /proc/loadavg)
-  # shellcheck disable=SC2086
-  "$bin/mw-fem" --from "$out/upv.json" box $transducers --mesh-mm "$h" --force-N 0.01 --frequency-kHz "$f" \
+  "$bin/mw-fem" --from "$out/upv.json" box --experiment "$lab/experiment.toml" --mesh-mm "$h" --frequency-kHz "$f" \
     --duration-ms "$duration" --quiet --signals "$run.h5" --out "$run.json" > /dev/null
   jq --arg l "$load" '. + {load: ($l | tonumber)}' "$run.json" > "$run.tmp" && mv "$run.tmp" "$run.json"
 done

@@ -3,8 +3,8 @@
 # DEM: the scene cube-wave.toml (linearised bonded network, 1.5 ms at 50 ns) on
 # the step-5 packing with the CC_MATERIAL parameters, one run per frequency.
 # Continuum reference: mw-fem box with the dynamic moduli of step 3 (E_d, nu_d,
-# rho from mw-upv), the same actuator A and sensors B-G (sensors.toml, scaled to
-# the cube; fem-transducers.py), the same burst. No measured cube signals ship,
+# rho from mw-upv) on the same experiment (experiment.toml: actuator A, sensors
+# B-G, the burst and the record; scaled to the quick tree's cube by --size-mm). No measured cube signals ship,
 # so Table 3 here is DEM against this continuum reference; files dropped into
 # lab-data/concrete-cube/measured/ (docs/formats.md) are compared with the DEM too.
 #
@@ -35,24 +35,23 @@ CC_RECORD :=
 cc_fem_mesh = $(if $(filter 100 150 200,$1),2,1)
 endif
 CC_FIGURE_FREQS := 100 300 500
-# The force of the scene's actuator A (amplitude_N): the FEM gets the same burst.
-CC_FORCE_N := 0.01
-CC_TRANSDUCERS = $$($(CC_NOTES)/fem-transducers.py $(CC_LAB)/sensors.toml $(CC_LAB)/porosity.toml $(CC_SIDE_MM))
-CC_FEM_INPUTS := $(CC_OUT)/upv.json $(CC_LAB)/sensors.toml $(CC_LAB)/porosity.toml $(CC_NOTES)/fem-transducers.py \
-  $(BIN)/mw-fem
+# The wave test as the lab sets it up, for both solvers (the scene references it too).
+CC_EXPERIMENT := $(CC_LAB)/experiment.toml
+CC_FEM_EXPERIMENT := --experiment $(CC_EXPERIMENT) $(if $(CC_SIDE_MM),--size-mm $(CC_SIDE_MM))
+CC_FEM_INPUTS := $(CC_OUT)/upv.json $(CC_EXPERIMENT) $(BIN)/mw-fem
 
-$(CC_OUT)/dem-%kHz.h5 $(CC_OUT)/dem-%kHz.json: $(CC_SCENE) $(CC_OUT)/packing.h5 $(CC_MATERIAL) $(BIN)/mw-dem
+$(CC_OUT)/dem-%kHz.h5 $(CC_OUT)/dem-%kHz.json: $(CC_SCENE) $(CC_EXPERIMENT) $(CC_OUT)/packing.h5 $(CC_MATERIAL) $(BIN)/mw-dem
 	$(BIN)/mw-dem --from $(CC_MATERIAL) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --frequency-kHz $* $(CC_RECORD) \
 	  --quiet --signals $(CC_OUT)/dem-$*kHz.h5 --summary $(CC_OUT)/dem-$*kHz.json > /dev/null
 
 $(CC_OUT)/fem-%kHz.h5 $(CC_OUT)/fem-%kHz.json: $(CC_FEM_INPUTS)
-	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_mesh,$*) \
-	  --force-N $(CC_FORCE_N) --frequency-kHz $* $(CC_RECORD) \
+	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_FEM_EXPERIMENT) --mesh-mm $(call cc_fem_mesh,$*) \
+	  --frequency-kHz $* $(CC_RECORD) \
 	  --quiet --signals $(CC_OUT)/fem-$*kHz.h5 --out $(CC_OUT)/fem-$*kHz.json > /dev/null
 
 $(CC_OUT)/fem-early-%kHz.h5 $(CC_OUT)/fem-early-%kHz.json: $(CC_FEM_INPUTS)
-	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_TRANSDUCERS) --mesh-mm $(call cc_fem_early_mesh,$*) \
-	  --force-N $(CC_FORCE_N) --frequency-kHz $* $(CC_EARLY_RECORD) \
+	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_FEM_EXPERIMENT) --mesh-mm $(call cc_fem_early_mesh,$*) \
+	  --frequency-kHz $* $(CC_EARLY_RECORD) \
 	  --quiet --signals $(CC_OUT)/fem-early-$*kHz.h5 --out $(CC_OUT)/fem-early-$*kHz.json > /dev/null
 
 # PCC of DEM against FEM per sensor, the DEM record interpolated onto the FEM's

@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
     const std::string threads_reason = use_threads(threads).reason;
     dem::Scene scene = dem::read_scene_file(scene_path);
     run.input(scene_path);
+    if (!scene.experiment_file.empty()) run.input(scene.experiment_file);
     overrides.curves = !curves_path.empty();
     dem::apply_overrides(scene, overrides);
     const dem::Packing packing = dem::read_packing_file(scene.packing_file);

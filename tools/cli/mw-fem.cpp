@@ -1,11 +1,7 @@
 // mw-fem - explicit linear-elastic continuum reference (the rod paper's
 // Abaqus/Explicit role, Section 4.3.1): a Hann-burst force on a rod or a box,
-// signals at chosen points in the mesowave signal file layout.
-//
-//   mw-fem rod --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1
-//       --length-mm 1000 --mesh-mm 1 --frequency-kHz 100 --alpha-damping 2000 --signals rod100.h5
-//   mw-fem box --E-GPa 36.67 --nu 0.162 --density-kg-m3 2129.56 --size-mm 50 --mesh-mm 1
-//       --source-mm 25,25,0 --sensor B=25,25,50 --frequency-kHz 100 --signals cube100.h5
+// signals at chosen points in the mesowave signal file layout; a study's experiment
+// (--experiment, experiment/experiment.hpp) places the transducers. Examples: --help.
 #include <optional>
 
 #include "mesowave/app/process_info.hpp"
@@ -13,6 +9,7 @@
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/units.hpp"
+#include "mesowave/experiment/experiment.hpp"
 #include "mesowave/signal/signal_file.hpp"
 #include "mesowave/fem/case.hpp"
 
@@ -28,24 +25,25 @@ int main(int argc, char** argv) {
       "  hexahedra; force at the centre of the z = 0 end (or a traction patch), default sensor S at the centre of the\n"
       "  far end, as in the rod paper. box: a block of identical hexahedra (the concrete cube), force normal to the face\n"
       "  the source point lies on, sensors anywhere (component 'normal' = the outward normal of their face, as in mw-dem).\n"
+      "cylinder: an --experiment's cylinder as axisymmetric rings (the actuator on the axis of its z- end).\n"
       "Elements: fully integrated trilinear hexahedra (2x2x2 Gauss) or bilinear rings; stiffness precomputed per element\n"
       "shape. The stable step comes from a rigorous eigenvalue bound of the mesh; a --dt-us above it is refused.\n\n"
       "  mw-fem rod --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1 --length-mm 1000 --mesh-mm 1 "
       "--frequency-kHz 100 --alpha-damping 2000 --signals rod.h5\n"
-      "  mw-fem rod ... --model 3d --mesh-mm 1 --signals rod3d.h5\n"
       "  mw-fem box --E-GPa 36.67 --nu 0.162 --density-kg-m3 2129.56 --size-mm 50 --mesh-mm 1 --source-mm 25,25,0 "
       "--sensor B=25,25,50 --sensor C=0,25,25 --frequency-kHz 100 --signals cube.h5\n"
-      "  mw-fem --from results/concrete-cube/upv.json box --size-mm 50 ...   (E_d, nu_d and the density from mw-upv)");
+      "  mw-fem --from results/concrete-cube/upv.json box --experiment lab-data/concrete-cube/experiment.toml --signals c.h5\n"
+      "    (E_d, nu_d and the density from mw-upv; the cube, transducers, burst and record from the experiment)");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
-  double E_GPa = 0, nu = 0, rho = 0, mesh_mm = 1, f_kHz = 100, cycles = 5, force_N = 1, alpha = 0,
-         duration_ms = 1.5, sample_dt_us = 0.1, patch_mm = 0;
-  std::optional<double> dt_us;
+  double E_GPa = 0, nu = 0, rho = 0, mesh_mm = 1, alpha = 0;
+  // Unset: the experiment's (--experiment), else FemCase's defaults (100 kHz, 5 cycles, 1 N, 1.5 ms, 0.1 us, a point).
+  std::optional<double> dt_us, f_kHz, cycles, force_N, duration_ms, sample_dt_us, patch_mm;
   int threads = 0;
   bool quiet = false;
-  std::string quantity = "acceleration";
+  std::optional<std::string> quantity;
   std::vector<std::string> sensors;
-  fs::path signals_path, out;
+  fs::path signals_path, out, experiment_path;
   const auto common = [&](CLI::App* sub) {
     // The second names are mw-upv's: a wave test's continuum reference takes the dynamic moduli, and
     // `mw-fem --from upv.json box ...` fills them (and --density-kg-m3) from its E_d_GPa and nu_d.
@@ -55,21 +53,21 @@ int main(int argc, char** argv) {
         ->required();
     sub->add_option("--density-kg-m3", rho, "Density [kg/m3]")->required();
     sub->add_option("--mesh-mm", mesh_mm, "Element size [mm]")->capture_default_str();
-    sub->add_option("--frequency-kHz", f_kHz, "Centre frequency of the Hann burst [kHz]")->capture_default_str();
-    sub->add_option("--cycles", cycles, "Cycles in the burst")->capture_default_str();
-    sub->add_option("--force-N", force_N, "Peak force amplitude [N]")->capture_default_str();
+    sub->add_option("--experiment", experiment_path, "The study's experiment (lab-data/<study>/experiment.toml): "
+                    "specimen, transducers, burst and record; the options below beat its values");
+    sub->add_option("--frequency-kHz", f_kHz, "Centre frequency of the Hann burst [kHz] (100)");
+    sub->add_option("--cycles", cycles, "Cycles in the burst (5)");
+    sub->add_option("--force-N", force_N, "Peak force amplitude [N] (1)");
     sub->add_option("--alpha-damping", alpha, "Rayleigh mass-proportional damping alpha [1/s] (rod paper: 2000)")
         ->capture_default_str();
-    sub->add_option("--duration-ms", duration_ms, "Simulated time [ms]")->capture_default_str();
-    sub->add_option("--sample-dt-us", sample_dt_us, "Sampling interval of the signals [us]")->capture_default_str();
+    sub->add_option("--duration-ms", duration_ms, "Simulated time [ms] (1.5)");
+    sub->add_option("--sample-dt-us", sample_dt_us, "Sampling interval of the signals [us] (0.1)");
     sub->add_option("--dt-us", dt_us, "Time step [us] (default: the largest that divides the sampling interval "
                                       "and stays below the stable step)");
-    sub->add_option("--quantity", quantity, "Recorded quantity: displacement | velocity | acceleration")
-        ->capture_default_str();
+    sub->add_option("--quantity", quantity, "Recorded quantity: displacement | velocity | acceleration (acceleration)");
     sub->add_option("--sensor", sensors, "NAME=X,Y,Z in mm, optionally /x|/y|/z|/r|/normal; repeatable");
     sub->add_option("--patch-radius-mm", patch_mm,
-                    "Spread the force as a uniform traction over the face within this radius (0: point force)")
-        ->capture_default_str();
+                    "Spread the force as a uniform traction over the face within this radius (0: point force)");
     sub->add_option("--signals", signals_path, "Signal file to write (HDF5, mesowave signal layout)")->required();
     sub->add_option("--threads", threads,
                     "OpenMP threads (default: the cores the machine is not busy with; same bits for any count)");
@@ -91,22 +89,32 @@ int main(int argc, char** argv) {
   auto* box = cli.add_subcommand("box", "Block [0,X] x [0,Y] x [0,Z], force normal to a face");
   common(box);
   std::string size_text, source_text;
-  box->add_option("--size-mm", size_text, "Edge length, or X,Y,Z [mm]")->required();
-  box->add_option("--source-mm", source_text, "Where the force acts, a point on a face X,Y,Z [mm]")->required();
+  box->add_option("--size-mm", size_text, "Edge length, or X,Y,Z [mm] (with --experiment: its box scaled to this edge X)");
+  box->add_option("--source-mm", source_text, "Where the force acts, a point on a face X,Y,Z [mm] (or --experiment's actuator)");
+  auto* cylinder = cli.add_subcommand("cylinder", "An --experiment's cylinder: axisymmetric rings, the actuator on the axis "
+                                      "of its z- end, sensors on the ends and the curved face");
+  common(cylinder);
 
   return tool.run(argc, argv, [&](app::Run& run) {
     fem::FemCase c;
+    if (!experiment_path.empty()) {
+      run.input(experiment_path);
+      const auto lab = experiment::read_experiment_file(experiment_path);
+      const double scale = size_text.empty() ? 1.0 : std::stod(size_text) / (lab.specimen.size_m[0] / units::mm);
+      if (!source_text.empty() || !sensors.empty()) throw InputError("--experiment places the transducers: no --source-mm, --sensor");
+      fem::apply_experiment(c, lab, scale);
+    } else if (cylinder->parsed()) throw InputError("mw-fem cylinder needs --experiment (the cylinder and its transducers)");
     c.material = {require_positive("--E-GPa", E_GPa, "GPa") * units::GPa, nu, rho};
     c.mesh_m = require_positive("--mesh-mm", mesh_mm, "mm") * units::mm;
-    c.frequency_hz = require_positive("--frequency-kHz", f_kHz, "kHz") * units::kHz;
-    c.cycles = require_positive("--cycles", cycles);
-    c.force_N = require_finite("--force-N", force_N, "N");
-    c.patch_radius_m = patch_mm * units::mm;
+    if (f_kHz) c.frequency_hz = require_positive("--frequency-kHz", *f_kHz, "kHz") * units::kHz;
+    if (cycles) c.cycles = require_positive("--cycles", *cycles);
+    if (force_N) c.force_N = require_finite("--force-N", *force_N, "N");
+    if (patch_mm) c.patch_radius_m = *patch_mm * units::mm;
     c.alpha_damping_per_s = alpha;
-    c.duration_s = require_positive("--duration-ms", duration_ms, "ms") * units::ms;
-    c.sample_dt_s = sample_dt_us * units::us;
+    if (duration_ms) c.duration_s = require_positive("--duration-ms", *duration_ms, "ms") * units::ms;
+    if (sample_dt_us) c.sample_dt_s = *sample_dt_us * units::us;
     if (dt_us) c.dt_s = *dt_us * units::us;
-    c.quantity = fem::parse_quantity(quantity);
+    if (quantity) c.quantity = fem::parse_quantity(*quantity);
     for (const auto& s : sensors) c.sensors.push_back(fem::parse_sensor_spec(s));
     c.threads = threads;
     if (rod->parsed()) {
@@ -114,7 +122,8 @@ int main(int argc, char** argv) {
       c.length_m = require_positive("--length-mm", length_mm, "mm") * units::mm;
       c.rod_model = model_kind;
       if (!spacetime_path.empty()) c.spacetime_step_m = st_step_mm * units::mm;
-    } else {
+    } else if (experiment_path.empty()) {
+      if (size_text.empty() || source_text.empty()) throw InputError("mw-fem box needs --size-mm and --source-mm, or --experiment");
       c.body = fem::FemCase::Body::box;
       if (size_text.find(',') == std::string::npos) c.size_m.fill(std::stod(size_text) * units::mm);
       else c.size_m = fem::parse_point_mm(size_text, "--size-mm");

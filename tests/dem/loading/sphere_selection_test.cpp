@@ -2,6 +2,9 @@
 // checked on hand-placed spheres whose answer is known by construction.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "mesowave/core/error.hpp"
 #include "mesowave/dem/loading/sphere_selection.hpp"
 #include "dem/test_packings.hpp"
@@ -96,4 +99,48 @@ TEST(SphereSelection, NearestSphereAndLineEnds) {
   const SphereSet line = make_sphere_set(mesowave::dem::testing::line_packing(7, 1e-3, 2e-3, 2000), 2000);
   EXPECT_EQ(line.packing_index[sphere_at_end(line, false)], 0u);
   EXPECT_EQ(line.packing_index[sphere_at_end(line, true)], 6u);
+}
+
+// The curved face of a cylinder: a ring of twelve 1 mm spheres touching the surface of
+// radius 10 mm every 30 degrees (at two heights), and one sphere on the axis. A 6 mm
+// (arc) x 3 mm patch at azimuth 90 degrees takes the ring sphere there at the patch's
+// height only: its neighbours lie 2 pi 10 mm / 12 = 5.2 mm of arc away, beyond the
+// patch's 3 mm half-width; the axis sphere lies 8 mm inside, beyond the depth.
+TEST(SphereSelection, CurvedFaceTakesTheSpheresUnderTheArc) {
+  Packing p;
+  std::int64_t id = 0;
+  const double R = 10e-3, r = 1e-3;
+  for (double z : {1e-3, 5e-3})
+    for (int k = 0; k < 12; ++k) {
+      const double phi = k * std::numbers::pi / 6;
+      p.centres_m.push_back({R + (R - r) * std::cos(phi), R + (R - r) * std::sin(phi), z});
+      p.radii_m.push_back(r);
+      p.ids.push_back(id++);
+    }
+  p.centres_m.push_back({R, R, 3e-3});
+  p.radii_m.push_back(r);
+  p.ids.push_back(id++);
+  const SphereSet s = make_sphere_set(p, 2000);
+  const Box box = bounding_box(s);
+  EXPECT_THROW(Face::parse("curved"), mesowave::InputError);  // only where the caller places patches on it
+  Patch patch;
+  patch.face = Face::parse("curved", true);
+  EXPECT_TRUE(patch.face.curved);
+  EXPECT_EQ(patch.face.name(), "curved");
+  patch.face.azimuth_rad = std::numbers::pi / 2;
+  patch.relative = true;
+  patch.centre_rel = {0.5, 1.0, 5e-3 / box.upper.z};
+  patch.size_m[0] = 6e-3;
+  patch.size_m[1] = 3e-3;
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, patch, "C")), (std::vector<std::int64_t>{15}));  // k = 3 of the upper ring
+  const Vec3 n = patch.face.outward_normal();
+  EXPECT_NEAR(n.x, 0.0, 1e-15);
+  EXPECT_DOUBLE_EQ(n.y, 1.0);
+  // An arc wide enough for the neighbours (2 x 5.3 mm) takes them too, in packing order.
+  patch.size_m[0] = 10.6e-3;
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, patch, "C")), (std::vector<std::int64_t>{14, 15, 16}));
+  // Across the axis (azimuth -90 degrees: y = 0).
+  patch.centre_rel = {0.5, 0.0, 1e-3 / box.upper.z};
+  patch.size_m[0] = 6e-3;
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, patch, "C")), (std::vector<std::int64_t>{9}));
 }

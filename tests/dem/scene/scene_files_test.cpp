@@ -1,5 +1,5 @@
 // The shipped scenes parse, and the cube scene's transducers are the ones in
-// lab-data/concrete-cube/sensors.toml (as fractions of the cube), with D/F and E/G mirror pairs on
+// lab-data/concrete-cube/experiment.toml (as fractions of the cube), with D/F and E/G mirror pairs on
 // opposite faces (the paper: G = E and F = D for an ideal cube).
 #include <gtest/gtest.h>
 
@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <map>
 
+#include "mesowave/core/units.hpp"
 #include "mesowave/dem/scene/scene.hpp"
+#include "mesowave/experiment/experiment.hpp"
 
 using namespace mesowave::dem;
 namespace fs = std::filesystem;
@@ -24,17 +26,15 @@ struct Transducer {
 };
 
 std::map<std::string, Transducer> lab_positions() {
-  const auto root = toml::parse_file((kSource / "lab-data/concrete-cube/sensors.toml").string());
+  const auto lab = mesowave::experiment::read_experiment_file(kSource / "lab-data/concrete-cube/experiment.toml");
   std::map<std::string, Transducer> out;
-  for (const auto& [key, node] : root) {
-    const auto& t = *node.as_table();
-    EXPECT_EQ(t["source"].value_or(std::string()), "assumed") << key.str();
-    EXPECT_FALSE(t["cite"].value_or(std::string()).empty()) << key.str();
+  for (const auto& t : lab.transducers) {
+    EXPECT_EQ(t.source, "assumed") << t.name;
+    EXPECT_FALSE(t.cite.empty()) << t.name;
     Transducer x;
-    x.face = t["face"].value_or(std::string());
-    const auto& c = *t["centre_mm"].as_array();
-    for (std::size_t i = 0; i < 3; ++i) x.centre_mm[i] = c[i].value_or(0.0);
-    out[std::string(key.str())] = x;
+    x.face = t.face;
+    for (std::size_t i = 0; i < 3; ++i) x.centre_mm[i] = t.centre_m[i] / mesowave::units::mm;
+    out[t.name] = x;
   }
   return out;
 }
@@ -48,10 +48,14 @@ TEST(SceneFiles, CubeSceneMatchesTheLabDataPositions) {
   ASSERT_EQ(s.actuators.size(), 1u);
   ASSERT_EQ(s.sensors.size(), 6u);
   // The scene places them as fractions of the packing's extent (so that it fits the quick
-  // pipeline's smaller cube too); on the wave test's cube of porosity.toml they are sensors.toml's.
+  // pipeline's smaller cube too); on the wave test's cube of porosity.toml they are experiment.toml's.
   const double side_mm =
       toml::parse_file((kSource / "lab-data/concrete-cube/porosity.toml").string())["cube_side"]["value"].value_or(0.0);
   ASSERT_EQ(side_mm, 50.0);
+  // porosity.toml's cube (mw-pack's) is the experiment's specimen.
+  const auto specimen = mesowave::experiment::read_experiment_file(kSource / "lab-data/concrete-cube/experiment.toml").specimen;
+  for (double a : specimen.size_m) EXPECT_DOUBLE_EQ(a, side_mm * 1e-3);
+  EXPECT_DOUBLE_EQ(s.actuators[0].amplitude, 0.01);
   auto check = [&](const std::string& name, const SphereTarget& t) {
     ASSERT_TRUE(lab.count(name)) << name;
     EXPECT_EQ(t.patch.face.name(), lab.at(name).face) << name;

@@ -86,6 +86,11 @@ std::vector<Probe> make_probes(const FemModel& model, const std::vector<SensorSp
       sign = face->second ? 1.0 : -1.0;
       label = (face->second ? "" : "-") + comp;
     }
+    if (comp.size() == 2 && comp[0] == '-') {
+      comp = comp.substr(1);
+      sign = -1.0;
+      label = "-" + comp;
+    }
     std::size_t c = 0;
     if (model.dim == 3) {
       if (comp == "x") c = 0;
@@ -179,6 +184,61 @@ void write_spacetime_file(const std::filesystem::path& path, const std::vector<d
   h5::set_attribute(g.id(), "quantity", quantity_name(req.quantity));
   h5::set_attribute(g.id(), "unit", quantity_unit(req.quantity));
   h5::set_attribute(g.id(), "component", component);
+}
+
+void apply_experiment(FemCase& c, const experiment::Experiment& lab, double scale) {
+  using experiment::Transducer;
+  const experiment::Experiment e = experiment::scaled(lab, scale);
+  const auto actuators = e.actuators();
+  const auto sensors = e.sensors();
+  const std::string where = e.source.empty() ? std::string("the experiment") : e.source.string();
+  if (actuators.size() != 1)
+    throw InputError(where + ": mw-fem drives one actuator, the experiment has " + std::to_string(actuators.size()));
+  const Transducer& a = *actuators.front();
+  if (a.direction != "inward") throw InputError(where + ": actuator " + a.name + " must push inward (mw-fem loads normal to its face)");
+  if (e.burst.delay_s != 0) throw InputError(where + ": mw-fem starts the burst at t = 0 (the experiment delays it)");
+  c.frequency_hz = e.burst.frequency_hz;
+  c.cycles = e.burst.cycles;
+  c.force_N = e.burst.amplitude_N;
+  c.duration_s = e.record.duration_s;
+  c.sample_dt_s = e.record.sample_interval_s;
+  c.patch_radius_m = experiment::patch_disc_radius_m(a);  // the square PZT as the disc of the same area
+  c.quantity = parse_quantity(sensors.front()->quantity);
+  const bool cylinder = e.specimen.shape == experiment::Specimen::Shape::cylinder;
+  const double R = e.specimen.radius_m();
+  c.sensors.clear();
+  for (const Transducer* s : sensors) {
+    if (s->quantity != sensors.front()->quantity)
+      throw InputError(where + ": sensor " + s->name + " records " + s->quantity + ", " + sensors.front()->name + " " +
+                       sensors.front()->quantity + ": mw-fem records one quantity a run");
+    if (s->component == "magnitude") throw InputError(where + ": sensor " + s->name + ": mw-fem records a component, not the magnitude");
+    std::string component = s->component;
+    std::array<double, 3> p = s->centre_m;
+    if (cylinder) {
+      if (component == "normal") component = s->face == "curved" ? "r" : s->face == "z+" ? "z" : "-z";
+      else if (component != "z" && component != "-z")
+        throw InputError(where + ": sensor " + s->name + " component " + component +
+                         " breaks the axial symmetry of the cylinder's ring model (it records r and z: give normal or z)");
+      p[0] -= R;
+      p[1] -= R;
+    }
+    c.sensors.push_back({s->name, p, component});
+  }
+  if (!cylinder) {
+    c.body = FemCase::Body::box;
+    c.size_m = e.specimen.size_m;
+    c.source_m = a.centre_m;
+    return;
+  }
+  const double off_axis = std::hypot(a.centre_m[0] - R, a.centre_m[1] - R);
+  if (a.face != "z-" || off_axis > 1e-3 * units::mm)
+    throw InputError(where + ": actuator " + a.name + " on face " + a.face + " at " + format_quantity(off_axis / units::mm, "mm") +
+                     " from the axis: mw-fem models a cylinder with axisymmetric rings, which need the load on the axis of "
+                     "the z- end (there is no 3D cylinder reference yet)");
+  c.body = FemCase::Body::rod;
+  c.rod_model = "axisymmetric";
+  c.radius_m = R;
+  c.length_m = e.specimen.length_m();
 }
 
 FemSetup assemble_fem_case(const FemCase& spec) {

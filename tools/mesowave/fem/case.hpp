@@ -13,12 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "mesowave/core/threads.hpp"
+#include "mesowave/experiment/experiment.hpp"
 #include "mesowave/fem/solver.hpp"
 
 namespace mesowave::fem {
 
 /// "S=0,0,1000" or "B=25,50,25/y": a named point in mm with an optional
-/// component (x | y | z | r | normal).
+/// component (x | y | z | r | normal; built in code also -x | -y | -z | -r: the opposite sign).
 struct SensorSpec {
   std::string name;
   std::array<double, 3> position_m{};
@@ -77,6 +78,18 @@ struct FemCase {
   std::vector<SensorSpec> sensors;
   int threads = 0;  ///< requested (core/threads.hpp; 0: the machine's free cores)
 };
+
+/// The case of a study's experiment (experiment/experiment.hpp), on a specimen `scale` times
+/// its size: a box as Body::box (the actuator's centre the source, its patch the equal-area
+/// disc, its sensors at their positions, "normal" their face's outward normal); a cylinder as
+/// Body::rod, axisymmetric rings about its axis. InputError, naming the transducer and the
+/// reason, for what this FEM cannot represent: more than one actuator, a burst delay, sensors
+/// of different quantities, a magnitude component; on a cylinder, an actuator anywhere but on
+/// the axis of the z- end pushing inward (the load would not be axisymmetric and the ring
+/// model needs it to be; there is no 3D cylinder reference) or a sensor component other than
+/// normal (radial on the curved face, axial on the ends) or z. The burst and record come from
+/// the experiment; set a field after this call to override it.
+void apply_experiment(FemCase& c, const experiment::Experiment& e, double scale = 1.0);
 
 /// The case as a model ready to run: mesh, load, probes, stepping.
 struct FemSetup {

@@ -96,6 +96,7 @@ void read_extensometer(SceneKeys& k, SensorSpec& spec, const std::string&, const
     throw InputError(k.where() + ": an extensometer sits on a face (face, centre_mm, gauge_mm, patch_mm) or between the "
                      "ends of a line (between = [\"first\", \"last\"])");
   if (spec.component == "line") throw InputError(k.where() + ": component \"line\" needs between = [\"first\", \"last\"]");
+  if (centre.patch.face.curved) throw InputError(k.where() + ": an extensometer sits on a flat face, not on the curved one");
   const int axis = spec.component[0] - 'x';
   if (axis == centre.patch.face.axis)
     throw InputError(k.where() + ": component " + spec.component + " is normal to face " + centre.patch.face.name() +

@@ -3,21 +3,24 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 
 namespace mesowave::dem {
 
-Face Face::parse(const std::string& text) {
+Face Face::parse(const std::string& text, bool allow_curved) {
   if (text.size() == 2 && (text[0] == 'x' || text[0] == 'y' || text[0] == 'z') && (text[1] == '-' || text[1] == '+'))
     return Face{text[0] - 'x', text[1] == '+'};
-  throw InputError("face \"" + text + "\" must be one of x-, x+, y-, y+, z-, z+");
+  if (allow_curved && text == "curved") return Face{2, false, true};
+  throw InputError("face \"" + text + "\" must be one of x-, x+, y-, y+, z-, z+" + (allow_curved ? " or curved" : ""));
 }
 
-std::string Face::name() const { return std::string(1, char('x' + axis)) + (upper ? "+" : "-"); }
+std::string Face::name() const { return curved ? "curved" : std::string(1, char('x' + axis)) + (upper ? "+" : "-"); }
 
 Vec3 Face::outward_normal() const {
+  if (curved) return {std::cos(azimuth_rad), std::sin(azimuth_rad), 0.0};
   Vec3 n;
   n[axis] = upper ? 1.0 : -1.0;
   return n;
@@ -57,7 +60,21 @@ std::vector<std::size_t> spheres_under_patch(const SphereSet& s, const Box& box,
   const int a = patch.face.axis, p = patch.face.in_plane(0), q = patch.face.in_plane(1);
   const double plane = patch.face.upper ? box.upper[a] : box.lower[a];
   std::vector<std::size_t> chosen;
-  for (std::size_t k = 0; k < s.size(); ++k) {
+  if (patch.face.curved) {
+    const double cx = 0.5 * (box.lower.x + box.upper.x), cy = 0.5 * (box.lower.y + box.upper.y);
+    const double R = 0.5 * (box.upper.x - box.lower.x);
+    const double phi0 = std::atan2(centre.y - cy, centre.x - cx);
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      const Vec3 c = s.centre_m[k];
+      const double rho = std::hypot(c.x - cx, c.y - cy);
+      if (R - (rho + s.radius_m[k]) > depth) continue;
+      const double around = std::remainder(std::atan2(c.y - cy, c.x - cx) - phi0, 2 * std::numbers::pi);
+      if (std::abs(R * around) > 0.5 * patch.size_m[0]) continue;
+      if (std::abs(c.z - centre.z) > 0.5 * patch.size_m[1]) continue;
+      chosen.push_back(k);
+    }
+  }
+  for (std::size_t k = 0; k < s.size() && !patch.face.curved; ++k) {
     const Vec3 c = s.centre_m[k];
     const double r = s.radius_m[k];
     const double gap = patch.face.upper ? plane - (c[a] + r) : (c[a] - r) - plane;

@@ -1,7 +1,9 @@
 #pragma once
 // Which spheres an actuator drives or a sensor reads: those under a
 // rectangular patch on a face of the specimen (a PZT glued on the surface),
-// the one nearest to a point, or the first/last sphere of a line.
+// the one nearest to a point, or the first/last sphere of a line. A face is
+// one of a box's six (a cylinder's flat ends are z- and z+ of its bounding
+// box) or a cylinder's curved face (experiment/experiment.hpp's shapes).
 #include <string>
 #include <vector>
 
@@ -10,13 +12,18 @@
 
 namespace mesowave::dem {
 
-/// Faces of an axis-aligned box: "x-" is the plane x = x_min, "x+" x = x_max, ...
+/// Faces of an axis-aligned box: "x-" is the plane x = x_min, "x+" x = x_max, ...;
+/// or "curved": the lateral face of a cylinder whose axis is parallel to z through the
+/// centre of the packing's bounding box (mw-pack's cylinder), radius half its x extent.
 struct Face {
   int axis = 0;       ///< 0, 1, 2
   bool upper = false; ///< the + face
-  static Face parse(const std::string& text);  ///< InputError for anything but x-, x+, y-, y+, z-, z+
+  bool curved = false;     ///< the cylinder's curved face (axis and upper unused)
+  double azimuth_rad = 0;  ///< curved: where around the axis the patch sits (from +x towards +y)
+  /// InputError for anything but x-, x+, y-, y+, z-, z+ (and curved, where the caller places patches on it).
+  static Face parse(const std::string& text, bool allow_curved = false);
   std::string name() const;
-  Vec3 outward_normal() const;
+  Vec3 outward_normal() const;  ///< curved: the radial direction at azimuth_rad
   /// The two in-plane axes in increasing order (for x faces: y, z).
   int in_plane(int which) const { return which == 0 ? (axis == 0 ? 1 : 0) : (axis == 2 ? 1 : 2); }
 };
@@ -33,7 +40,8 @@ struct Patch {
   Vec3 centre_m;               ///< a point on the face (its coordinate along the face normal is ignored) ...
   bool relative = false;       ///< ... or, if set, centre_rel: fractions of the bounding box (0 lower, 1 upper face)
   Vec3 centre_rel;
-  double size_m[2] = {0, 0};   ///< extent along the face's two in-plane axes (in_plane(0), in_plane(1))
+  double size_m[2] = {0, 0};   ///< extent along the face's two in-plane axes (in_plane(0), in_plane(1));
+                               ///< curved: around the circumference (arc length), along the axis
   double depth_m = -1;         ///< spheres whose surface comes within this of the face plane; < 0: the smallest radius
 };
 
@@ -41,7 +49,9 @@ struct Patch {
 Vec3 patch_centre(const Patch& patch, const Box& box);
 
 /// Spheres whose centre projects inside the patch and whose surface lies
-/// within the patch depth of the face plane; InputError naming `who` if none.
+/// within the patch depth of the face plane (curved: of the cylinder's surface, the
+/// patch measured as arc length around the axis and length along it); InputError
+/// naming `who` if none.
 std::vector<std::size_t> spheres_under_patch(const SphereSet& spheres, const Box& box, const Patch& patch,
                                              const std::string& who);
 /// The sphere whose centre is nearest to `point` (ties: lowest packing index).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -17,6 +18,7 @@
 #include "mesowave/dem/contact/material_parameters.hpp"
 #include "mesowave/dem/scene/plugins.hpp"
 #include "mesowave/dem/scene/scene_keys.hpp"
+#include "mesowave/experiment/experiment.hpp"
 
 namespace mesowave::dem {
 namespace {
@@ -100,6 +102,20 @@ UniaxialTestSpec read_test(SceneKeys& k, const std::vector<SensorSpec>& sensors)
 }
 }  // namespace
 
+namespace {
+
+/// A curved-face patch's azimuth from its relative centre (the bounding box of a cylinder is square
+/// in x-y, so fractions give the angle); InputError for a centre off the circle.
+void place_on_curved_face(Patch& patch, const std::string& where) {
+  const double u = patch.centre_rel.x - 0.5, v = patch.centre_rel.y - 0.5;
+  if (std::abs(std::hypot(u, v) - 0.5) > 1e-6)
+    throw InputError(where + ".centre_rel (" + format_number(patch.centre_rel.x) + ", " + format_number(patch.centre_rel.y) +
+                     ", ...) is not on the curved face: x and y must lie on the circle of radius 0.5 about (0.5, 0.5)");
+  patch.face.azimuth_rad = std::atan2(v, u);
+}
+
+}  // namespace
+
 SphereTarget read_target(SceneKeys& k) {
   SphereTarget t;
   const bool has_face = k.has("face"), has_point = k.has("point_mm"), has_sphere = k.has("sphere");
@@ -107,8 +123,11 @@ SphereTarget read_target(SceneKeys& k) {
     throw InputError(k.where() + " needs exactly one of face (with centre_mm and patch_mm), point_mm or sphere");
   if (has_face) {
     t.kind = SphereTarget::Kind::patch;
-    t.patch.face = Face::parse(*k.text("face"));
+    t.patch.face = Face::parse(*k.text("face"), true);
     if (k.has("centre_mm") && k.has("centre_rel")) throw InputError(k.where() + ": give centre_mm or centre_rel, not both");
+    if (t.patch.face.curved && !k.has("centre_rel"))
+      throw InputError(k.where() + ": a patch on the curved face takes centre_rel (fractions of the packing's extent: "
+                       "the cylinder's axis is the centre of its bounding box)");
     auto centre = k.numbers(k.has("centre_rel") ? "centre_rel" : "centre_mm", 3);
     auto size = k.numbers("patch_mm", 2);
     if (!centre || !size)
@@ -118,6 +137,7 @@ SphereTarget read_target(SceneKeys& k) {
     if (t.patch.relative) {
       for (int d = 0; d < 3; ++d)
         t.patch.centre_rel[d] = require_in_range(k.where() + ".centre_rel", (*centre)[std::size_t(d)], 0.0, 1.0);
+      if (t.patch.face.curved) place_on_curved_face(t.patch, k.where());
     } else {
       t.patch.centre_m = vec_mm(*centre);
     }
@@ -137,6 +157,48 @@ SphereTarget read_target(SceneKeys& k) {
   return t;
 }
 
+
+namespace {
+
+void add_experiment_transducers(Scene& s, const experiment::Experiment& e,
+                                const std::function<void(const std::string&)>& check_name) {
+  for (const experiment::Transducer& t : e.transducers) {
+    check_name(t.name);
+    SphereTarget target;
+    target.kind = SphereTarget::Kind::patch;
+    Patch& patch = target.patch;
+    patch.face = Face::parse(t.face, true);
+    if (patch.face.curved) patch.face.azimuth_rad = experiment::azimuth(e.specimen, t.centre_m);
+    // The same fractions of the packing's extent as of the specimen's: the scene fits a smaller model of the test.
+    patch.relative = true;
+    const auto rel = experiment::relative_position(e.specimen, t.centre_m);
+    patch.centre_rel = {rel[0], rel[1], rel[2]};
+    patch.size_m[0] = t.patch_m[0];
+    patch.size_m[1] = t.patch_m[1];
+    if (t.role == experiment::Transducer::Role::actuator) {
+      ActuatorSpec a;
+      a.name = t.name;
+      a.kind = "force";
+      a.target = target;
+      a.direction = t.direction;
+      a.amplitude = e.burst.amplitude_N;
+      a.frequency_hz = e.burst.frequency_hz;
+      a.cycles = e.burst.cycles;
+      a.delay_s = e.burst.delay_s;
+      s.actuators.push_back(std::move(a));
+    } else {
+      SensorSpec m;
+      m.kind = "motion";
+      m.name = t.name;
+      m.quantity = parse_motion_quantity(t.quantity);
+      m.component = t.component;
+      m.target = target;
+      s.sensors.push_back(std::move(m));
+    }
+  }
+}
+
+}  // namespace
 
 double read_ramp(SceneKeys& k) {
   return require_in_range(k.where() + ".ramp_us", k.number("ramp_us", 0.0), 0.0, 1e12, "us") * units::us;
@@ -226,14 +288,14 @@ void set_material_value(Scene& s, const std::string& key, double value, const st
   if (p.field == &CohesiveFrictionalMaterial::density_kg_m3) s.density_given = true;
 }
 
-Scene parse_scene(const std::string& text, const std::string& origin) {
+Scene parse_scene(const std::string& text, const std::string& origin, const std::filesystem::path& base) {
   toml::table root;
   try {
     root = toml::parse(text, origin);
   } catch (const toml::parse_error& e) {
     throw InputError(origin + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
   }
-  static const std::set<std::string> sections = {"scene", "packing", "material", "time", "model",
+  static const std::set<std::string> sections = {"scene", "packing", "experiment", "material", "time", "model",
                                                  "actuator", "sensor", "test", "output"};
   for (const auto& [key, node] : root)
     if (!sections.count(std::string(key.str())))
@@ -263,10 +325,24 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
       s.law_parameters[p.key] = require_in_range(k.where() + "." + p.key, k.number(p.key, p.fallback), p.min, p.max, p.unit);
     k.finish();
   }
+  std::optional<experiment::Experiment> lab;
+  if (root.contains("experiment")) {
+    SceneKeys k(table_or_empty(root, "experiment", origin), origin + ": [experiment]");
+    auto file = k.text("file");
+    if (!file || file->empty())
+      throw InputError(k.where() + " needs file (an experiment description, lab-data/<study>/experiment.toml)");
+    s.experiment_file = (base / *file).lexically_normal();
+    k.finish();
+    lab = experiment::read_experiment_file(s.experiment_file);
+  }
   {
     SceneKeys k(table_or_empty(root, "time", origin), origin + ": [time]");
     s.dt_s = require_positive(k.where() + ".dt_ns", k.required_number("dt_ns"), "ns") * units::ns;
-    s.duration_s = require_positive(k.where() + ".duration_ms", k.required_number("duration_ms"), "ms") * units::ms;
+    if (lab && k.has("duration_ms"))
+      throw InputError(k.where() + ".duration_ms: the experiment's [record] gives the duration (" +
+                       s.experiment_file.string() + "; --duration-ms overrides it for one run)");
+    s.duration_s = lab ? lab->record.duration_s
+                       : require_positive(k.where() + ".duration_ms", k.required_number("duration_ms"), "ms") * units::ms;
     k.finish();
   }
   {
@@ -286,6 +362,7 @@ Scene parse_scene(const std::string& text, const std::string& origin) {
       if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.'))
         throw InputError(where + ": name \"" + name + "\" may hold only letters, digits, - _ and .");
   };
+  if (lab) add_experiment_transducers(s, *lab, [&](const std::string& name) { unique_name(name, origin + ": " + s.experiment_file.string()); });
   if (const toml::node* list = root.get("actuator")) {
     const toml::array* a = list->as_array();
     if (!a) throw InputError(origin + ": actuators are [[actuator]] tables");
@@ -342,7 +419,7 @@ Scene read_scene_file(const std::filesystem::path& path) {
   if (!in) throw InputError("scene file " + path.string() + " cannot be read");
   std::stringstream text;
   text << in.rdbuf();
-  Scene s = parse_scene(text.str(), path.string());
+  Scene s = parse_scene(text.str(), path.string(), path.parent_path());
   s.source = path;
   return s;
 }

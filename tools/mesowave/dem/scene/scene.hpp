@@ -8,6 +8,11 @@
 //
 //   [scene]     name, description
 //   [packing]   file (relative paths are relative to the working directory)
+//   [experiment] file (relative to the scene file's folder): the study's experiment (experiment/experiment.hpp: specimen, transducers,
+//               burst, record); its actuators become force actuators driven by its burst, its
+//               sensors motion sensors, each at the same fractions of the packing's extent as of
+//               the specimen's (patches keep their size); its record gives the duration. The
+//               scene may add [[actuator]]s and [[sensor]]s of its own.
 //   [material]  E_dem_GPa, nu_dem, friction_angle_deg, T_MPa, C_MPa (both optional:
 //               absent = bonds never break), density_kg_m3 (optional: the packing's),
 //               damping (alpha_d), bond_factor (C_f)
@@ -77,6 +82,7 @@ struct Scene {
   std::filesystem::path source;  ///< the file it was read from, if any
   std::string name, description;
   std::filesystem::path packing_file;
+  std::filesystem::path experiment_file;  ///< [experiment] file, if the transducers come from one
   std::string contact_law = "cohesive_frictional";  ///< a registered contact law (plugins.hpp)
   CohesiveFrictionalMaterial material;
   LawParameters law_parameters;  ///< the law's own [material] keys, SI
@@ -91,7 +97,8 @@ struct Scene {
   double snapshot_interval_s = 0;
 };
 
-Scene parse_scene(const std::string& text, const std::string& origin);
+/// `base`: the folder a relative [experiment] file is found in (read_scene_file: the scene's own).
+Scene parse_scene(const std::string& text, const std::string& origin, const std::filesystem::path& base = {});
 
 /// The keys of a scene's [material] table, in order (E_dem_GPa, nu_dem, ...).
 const std::vector<std::string>& material_keys();
