@@ -47,6 +47,9 @@ void add_bending_options(CLI::App& app, BendingCommandLine& v) {
   app.add_option("--step-ratio", o.step_ratio,
                  "Each deflection step this times the last, in [1, 2] (small through the peak, long in the tail)")
       ->capture_default_str();
+  app.add_option("--stop-load-fraction", o.stop_load_fraction,
+                 "Stop once the crack is through and the load is below this fraction of the peak (the complete "
+                 "curve's end: 1e-4 leaves a tail below 0.5 % of G_f x ligament)")->capture_default_str();
   app.add_flag("--ligament-interface", o.ligament_interface,
                "The whole ligament a cohesive interface from the start (the complete curve to separation: the "
                "St. Venant crack cannot cut through the top face, efg/three_point_bending.hpp says why)");
@@ -83,7 +86,8 @@ BendingOutputs three_point_bending_outputs(const ThreePointBendingOptions& o, co
   j["material"] = {{"E_GPa", o.E_Pa * 1e-9}, {"nu", o.nu}, {"f_t_MPa", o.f_t_Pa * 1e-6}, {"G_f_N_m", o.G_f_J_m2}};
   j["discretisation"] = {{"spacing_mm", o.spacing_m * 1e3}, {"load_width_mm", o.load_width_m * 1e3}, {"gauss", o.gauss}, {"support_scale", o.support_scale},
                          {"cohesive_gauss", o.cohesive_gauss}, {"steps", o.steps}, {"step_ratio", o.step_ratio},
-                         {"ligament_interface", o.ligament_interface}, {"max_deflection_mm", o.max_deflection_m * 1e3}};
+                         {"ligament_interface", o.ligament_interface}, {"stop_load_fraction", o.stop_load_fraction},
+                         {"max_deflection_mm", o.max_deflection_m * 1e3}};
   j["peak_load_N"] = r.peak_load_N;
   j["deflection_at_peak_mm"] = r.deflection_at_peak_m * 1e3;
   // The identity: the work done on the beam until it carries nothing is G_f times the ligament area.
