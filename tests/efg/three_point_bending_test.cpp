@@ -9,11 +9,11 @@
 #include <cstdio>
 
 #include "mesowave/efg/beam_theory.hpp"
+#include "mesowave/efg/bending_reference.hpp"
 #include "mesowave/efg/cohesive_law.hpp"
 #include "mesowave/efg/discretisation.hpp"
 #include "mesowave/efg/material.hpp"
 #include "mesowave/efg/three_point_bending.hpp"
-#include "mesowave/fem/plane_static.hpp"
 #include "support/input_error.hpp"
 
 namespace mesowave::efg {
@@ -29,21 +29,6 @@ ThreePointBendingOptions coarse(const std::string& law) {
 }
 
 /// The Q4 FEM's stiffness of the same notched beam (n x 2n/9 elements), loaded at the same two top points.
-double fem_stiffness_N_per_m(const ThreePointBendingOptions& o, int n) {
-  fem::PlaneStaticProblem p;
-  p.mesh = fem::structured_plane_mesh({0, 0, o.span_m, o.depth_m, n, 2 * n / 9, 0.5 * o.span_m, o.notch_m});
-  p.D = ElasticMaterial2D{o.E_Pa, o.nu, o.thickness_m, 0, PlaneState::plane_stress}.D();
-  p.thickness_m = o.thickness_m;
-  const double mid = 0.5 * o.span_m, half = 0.5 * o.load_width_m;
-  p.constraints = {{{0, 0}, 1, 0, "left u_y"},
-                   {{0, 0}, 0, 0, "left u_x"},
-                   {{o.span_m, 0}, 1, 0, "right u_y"},
-                   {{mid - half, o.depth_m}, 1, -1e-3, "load left"},
-                   {{mid + half, o.depth_m}, 1, -1e-3, "load right"}};
-  const auto s = fem::solve_plane_static(p);
-  return -(s.reactions_N[3] + s.reactions_N[4]) / 1e-3;
-}
-
 double efg_stiffness_N_per_m(double spacing_m) {
   auto o = coarse("exponential");
   o.spacing_m = spacing_m;
@@ -66,7 +51,9 @@ TEST(ThreePointBending, ElasticStiffnessAgainstBeamTheoryAndFem) {
   }
   // the Q4 FEM: its stiffness falls as the mesh refines (the point supports and load points are singular), the
   // EFG's rises (the MLS field near the notch tip gains freedom): they close in on each other
-  const double f90 = fem_stiffness_N_per_m(o, 90), f180 = fem_stiffness_N_per_m(o, 180);
+  // the Q4 FEM of the same notched beam, 5 and 2.5 mm cells (efg/bending_reference.hpp)
+  const double f90 = three_point_bending_reference(o, 1).fem_notched_N_per_m,
+               f180 = three_point_bending_reference(o, 2).fem_notched_N_per_m;
   EXPECT_LT(f180, f90);
   EXPECT_GT(k5, k10);
   EXPECT_LT(std::abs(k5 - f180), std::abs(k10 - f90));
