@@ -73,7 +73,13 @@ TEST(MwEfg, BendingWritesCurvePlotCrackAndSummary) {
   EXPECT_EQ(read_file(dir / "crack.csv").rfind("x_mm,y_mm\n225,0\n225,50", 0), 0u);
   const auto v = run_command(fs::path(MESOWAVE_SOURCE_DIR) / "scripts/check-vtk", {(dir / "vtk/bending.pvd").string()});
   ASSERT_EQ(v.exit_status, 0) << v.out << v.err;
-  EXPECT_EQ(json::parse(v.out)[0]["datasets"].size(), 2 * points);
+  const auto datasets = json::parse(v.out)[0]["datasets"];
+  EXPECT_EQ(datasets.size(), 2 * points);
+  // the last point's nodes: every node with its displacement and stress, the beam bent downward
+  const auto& nodes = datasets[datasets.size() - 2];
+  EXPECT_EQ(nodes["point_data"]["displacement"]["tuples"], nodes["points"]);
+  EXPECT_EQ(nodes["point_data"]["stress"]["components"], 6);
+  EXPECT_GT(nodes["point_data"]["displacement"]["range"][1].get<double>(), 0.0);
 }
 
 TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {

@@ -79,12 +79,13 @@ int main(int argc, char** argv) {
   bend->add_option("--curve", curve, "Load-deflection CSV: deflection_mm, load_N, iterations, crack_tip_mm, dissipated_Nmm");
   bend->add_option("--plot", plot, "Load-deflection plot (.png | .svg, gnuplot)");
   bend->add_option("--crack-path", crack_path, "Crack path CSV: x_mm, y_mm (mouth, notch tip, grown points)");
-  bend->add_option("--snapshots", snapshots, "Folder for ParaView files of the crack per step (bending.pvd)");
+  bend->add_option("--snapshots", snapshots, "Folder for ParaView files per curve point: nodes (displacement, stress) and the crack (bending.pvd)");
   app::add_out_option(*bend, out);
 
   return tool.run(argc, argv, [&](app::Run& run) {
     if (bend->parsed()) {
-      const auto bo = bending.resolve();
+      auto bo = bending.resolve();
+      bo.node_snapshots = !snapshots.empty();
       if (!plot.empty()) io::require_plot_extension(plot);
       std::optional<efg::BendingReference> ref;
       if (bending.fem_refinement > 0) ref = efg::three_point_bending_reference(bo, bending.fem_refinement);
@@ -99,7 +100,8 @@ int main(int argc, char** argv) {
       if (!plot.empty()) io::render_plot(o.plot, plot, run.output(plot));
       if (!snapshots.empty()) {
         efg::VtkSeries series(snapshots, "bending", [&](const fs::path& p) { return run.output(p); });
-        for (const auto& [deflection_mm, crack] : o.crack_steps) series.add(deflection_mm, {}, crack);
+        for (std::size_t i = 0; i < o.crack_steps.size(); ++i)
+          series.add(o.crack_steps[i].first, result.node_steps.at(i), o.crack_steps[i].second);
         series.finish();
       }
       run.emit_json(o.summary, out);

@@ -122,6 +122,16 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
       if (p.w_hist_m > interface.w_initial_m()) y = std::max(y, p.x.y());
     return y;
   };
+  auto snapshot = [&](const Eigen::VectorXd& u) {
+    if (!o.node_snapshots) return;
+    NodeSnapshot n;
+    n.positions_m = disc.nodes;
+    for (const auto& x : disc.nodes) {
+      n.displacement_m.push_back(model.displacement(x, u));
+      n.stress_Pa.push_back(model.stress(x, u));
+    }
+    result.node_steps.push_back(std::move(n));
+  };
   auto inside = [&](const Vec2& x) { return x.x() > 0 && x.x() < o.span_m && x.y() > 0 && x.y() < o.depth_m; };
   AfterConverged grow = [&](const Eigen::VectorXd& v, double lambda) {
     if (through) return false;
@@ -144,6 +154,7 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
     if (!((*next - tip).norm() > 1e-9 * h)) return through = true, false;
     // the point before the extension: at this deflection the load drops when the crack extends (the curve keeps both)
     result.curve.push_back({lambda, load_of(problem.internal_force(u)), 0, tip.y(), interface.dissipated_energy_J()});
+    snapshot(u);
     cracks.extend(crack, *next);
     interface.add_segment({tip, *next});
     tip = *next;
@@ -152,6 +163,7 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
   };
 
   result.curve.push_back({0, 0, 0, tip_height(), 0});
+  snapshot(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.dof_count())));
   Eigen::VectorXd v = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(constraints.reduced_size()));
   ControlOptions control;
   control.newton = o.newton;
@@ -164,6 +176,7 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
     const Eigen::VectorXd u = constraints.expand(x, lam);
     const double P = load_of(problem.internal_force(u));
     result.curve.push_back({lam, P, rep.iterations, tip_height(), interface.dissipated_energy_J()});
+    snapshot(u);
     result.steps.push_back(rep);
     result.newton_iterations += rep.iterations;
     result.re_solves += rep.re_solves;

@@ -52,6 +52,7 @@
 #include "mesowave/efg/geometry.hpp"
 #include "mesowave/efg/mls.hpp"
 #include "mesowave/efg/nonlinear_solver.hpp"
+#include "mesowave/efg/vtk_output.hpp"
 
 namespace mesowave::efg {
 
@@ -86,6 +87,8 @@ struct ThreePointBendingOptions {
   /// Stop early when the crack tip has reached its highest point (half a segment below the top face, see the
   /// .cpp) and the load has fallen below this fraction of the peak.
   double stop_load_fraction = 0.005;
+  /// Keep the nodes' displacement u^h and stress at every curve point (ParaView snapshots of the run).
+  bool node_snapshots = false;
   /// InputError naming the value: sizes <= 0, a notch not inside the depth, nu outside (-1, 0.5), f_t or G_f <= 0,
   /// steps < 1, spacing above the ligament.
   void validate() const;
@@ -114,6 +117,7 @@ struct ThreePointBendingResult {
   int newton_iterations = 0, re_solves = 0, line_search_cuts = 0;
   double wall_s = 0;
   std::vector<StepReport> steps;          ///< per accepted step
+  std::vector<NodeSnapshot> node_steps;   ///< per curve point, when options.node_snapshots
 };
 
 ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& options);
