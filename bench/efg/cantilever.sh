@@ -17,7 +17,6 @@ efg_spacings=${2:-"4 2 1 0.5 0.25"}
 fem_spacings=${3:-"4 2 1 0.5 0.25 0.125 0.0625"}
 reps=${4:-5}
 bin=${BIN:-build/bin}
-export OMP_NUM_THREADS=1
 mkdir -p "$out"
 echo "method,spacing_m,nodes,gauss_points,displacement_error_L2,energy_error,solution_s,process_s,peak_rss_MiB" > "$out/runs.csv"
 echo "# $(uname -m) $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), load $(cut -d' ' -f1-3 /proc/loadavg), $(date -u +%FT%TZ)"
@@ -26,7 +25,7 @@ for method in efg fem; do
   for s in $spacings; do
     for ((k = 0; k < reps; k++)); do
       t0=$(date +%s.%N)
-      /usr/bin/time -f "%M" -o "$out/rss" "$bin/mw-efg" cantilever --method "$method" --spacing-m "$s" \
+      /usr/bin/time -f "%M" -o "$out/rss" "$bin/mw-efg" cantilever --threads 1 --method "$method" --spacing-m "$s" \
         --out "$out/r.json" > /dev/null
       t1=$(date +%s.%N)
       jq -r --arg m "$method" --arg s "$s" --arg p "$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')" --arg rss "$(cat "$out/rss")" \

@@ -10,6 +10,7 @@
 
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
+#include "mesowave/core/threads.hpp"
 #include "mesowave/efg/bending_report.hpp"
 #include "mesowave/efg/cantilever.hpp"
 #include "mesowave/io/csv.hpp"
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
   auto& cli = tool.cli();
   cli.require_subcommand(1);
   fs::path out, table, snapshots, curve, plot, crack_path;
+  int threads = 0;
 
   // cantilever
   efg::CantileverBeam beam;
@@ -70,6 +72,7 @@ int main(int argc, char** argv) {
                  "EFG: the clamp collocated at the edge's nodes instead of weakly (it fails the patch test)");
   cant->add_option("--table", table, "Runs as CSV: method, cells, nodes, Gauss points, errors, wall time, memory");
   cant->add_option("--snapshots", snapshots, "Folder for ParaView files of the last (finest) run: cantilever.pvd");
+  cant->add_option("--threads", threads, "Threads (0: the cores the machine is not busy with, core/threads.hpp)");
   app::add_out_option(*cant, out);
 
   // bending
@@ -80,9 +83,12 @@ int main(int argc, char** argv) {
   bend->add_option("--plot", plot, "Load-deflection plot (.png | .svg, gnuplot)");
   bend->add_option("--crack-path", crack_path, "Crack path CSV: x_mm, y_mm (mouth, notch tip, grown points)");
   bend->add_option("--snapshots", snapshots, "Folder for ParaView files per curve point: nodes (displacement, stress) and the crack (bending.pvd)");
+  bend->add_option("--threads", threads, "Threads (0: the cores the machine is not busy with, core/threads.hpp)");
   app::add_out_option(*bend, out);
 
   return tool.run(argc, argv, [&](app::Run& run) {
+    const ThreadChoice thread_choice = use_threads(threads);  // same bits for any count (efg/elastic_model.hpp)
+    const nlohmann::ordered_json thread_json = {{"count", thread_choice.count}, {"reason", thread_choice.reason}};
     if (bend->parsed()) {
       auto bo = bending.resolve();
       bo.node_snapshots = !snapshots.empty();
@@ -104,7 +110,9 @@ int main(int argc, char** argv) {
           series.add(o.crack_steps[i].first, result.node_steps.at(i), o.crack_steps[i].second);
         series.finish();
       }
-      run.emit_json(o.summary, out);
+      auto summary = o.summary;
+      summary["threads"] = thread_json;
+      run.emit_json(summary, out);
       return;
     }
     if (cant->parsed()) {
@@ -126,7 +134,9 @@ int main(int argc, char** argv) {
         series.add(0.0, study.runs.back().snapshot, {});
         series.finish();
       }
-      run.emit_json(study.summary, out);
+      auto summary = study.summary;
+      summary["threads"] = thread_json;
+      run.emit_json(summary, out);
     }
   });
 }
