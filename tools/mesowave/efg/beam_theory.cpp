@@ -8,6 +8,7 @@
 
 #include "mesowave/core/check.hpp"
 #include "mesowave/efg/discretisation.hpp"
+#include "mesowave/efg/elastic_model.hpp"
 #include "mesowave/efg/material.hpp"
 
 namespace mesowave::efg {
@@ -52,28 +53,16 @@ CantileverErrors cantilever_errors(const CantileverBeam& beam,
   if (cells_x < 1 || cells_y < 1)
     throw InputError("error integration over " + std::to_string(cells_x) + " x " + std::to_string(cells_y) +
                      " cells: both counts must be >= 1");
-  const GaussRule rule = gauss_legendre(gauss);
-  const auto& xi = rule.x;
-  const auto& wi = rule.w;
-  const Eigen::Matrix3d C = ElasticMaterial2D{beam.E_Pa, beam.nu, beam.t_m}.D().inverse();  // plane stress
-  auto energy_density = [&](const Eigen::Vector3d& s) { return s.dot(C * s); };
-  const double hx = beam.L_m / cells_x, hy = beam.D_m / cells_y;
-  double du = 0, u = 0, de = 0, e = 0;
-  for (int i = 0; i < cells_x; ++i)
-    for (int j = 0; j < cells_y; ++j)
-      for (int a = 0; a < gauss; ++a)
-        for (int b = 0; b < gauss; ++b) {
-          const Eigen::Vector2d x((i + 0.5 * (1 + xi[std::size_t(a)])) * hx,
-                                  -0.5 * beam.D_m + (j + 0.5 * (1 + xi[std::size_t(b)])) * hy);
-          const double w = wi[std::size_t(a)] * wi[std::size_t(b)] * 0.25 * hx * hy;
-          const CantileverSolution exact = beam.at(x);
-          du += w * (u_h(x) - exact.u_m).squaredNorm();
-          u += w * exact.u_m.squaredNorm();
-          de += w * energy_density(stress_h(x) - exact.stress_Pa);
-          e += w * energy_density(exact.stress_Pa);
-        }
+  const auto cells = rectangular_grid({0, -0.5 * beam.D_m, beam.L_m, 0.5 * beam.D_m}, cells_x, cells_y, gauss);
+  const auto e = relative_error(
+      cells.points, ElasticMaterial2D{beam.E_Pa, beam.nu, beam.t_m}.D(),  // plane stress
+      [&](const Vec2& x) { return std::pair<Eigen::Vector2d, Eigen::Vector3d>{u_h(x), stress_h(x)}; },
+      [&](const Vec2& x) {
+        const CantileverSolution exact = beam.at(x);
+        return std::pair<Eigen::Vector2d, Eigen::Vector3d>{exact.u_m, exact.stress_Pa};
+      });
   const double tip = beam.at({beam.L_m, 0}).u_m.y();
-  return {std::sqrt(du / u), std::sqrt(de / e), u_h({beam.L_m, 0}).y() / tip - 1};
+  return {e.displacement_l2, e.energy, u_h({beam.L_m, 0}).y() / tip - 1};
 }
 
 double three_point_bending_deflection_m(double P_N, double span_m, double depth_m, double t_m, double E_Pa,

@@ -236,23 +236,28 @@ Eigen::VectorXd ElasticModel::body_load(const Eigen::Vector2d& b_N_m3) const {
   return f;
 }
 
-ErrorNorms relative_error(const ElasticModel& model, const Eigen::VectorXd& u, const std::vector<GaussPoint>& quadrature,
-                          const std::function<std::pair<Eigen::Vector2d, Eigen::Vector3d>(const Vec2&)>& exact) {
-  const Eigen::Matrix3d C = model.D().inverse();  // compliance: the exact strain from the exact stress
+ErrorNorms relative_error(const std::vector<GaussPoint>& quadrature, const Eigen::Matrix3d& D, const ElasticFieldAt& approx,
+                          const ElasticFieldAt& exact) {
+  const Eigen::Matrix3d C = D.inverse();  // compliance
   double du = 0, uu = 0, de = 0, ee = 0;
-  for (std::size_t p = 0; p < quadrature.size(); ++p) {
-    const GaussPoint& g = quadrature[p];
-    const ShapeFunctions sf = model.mls().evaluate(g.x, "error quadrature point " + std::to_string(p));
-    const auto [u_exact, stress_exact] = exact(g.x);
-    const Eigen::Vector3d eps_exact = C * stress_exact;
-    const Eigen::Vector2d e_u = displacement_of(sf, u) - u_exact;
-    const Eigen::Vector3d e_eps = strain_of(sf, u) - eps_exact;
-    du += g.weight_m2 * e_u.squaredNorm();
+  for (const GaussPoint& g : quadrature) {
+    const auto [u_h, s_h] = approx(g.x);
+    const auto [u_exact, s_exact] = exact(g.x);
+    const Eigen::Vector3d e_s = s_h - s_exact;
+    du += g.weight_m2 * (u_h - u_exact).squaredNorm();
     uu += g.weight_m2 * u_exact.squaredNorm();
-    de += g.weight_m2 * e_eps.dot(model.D() * e_eps);
-    ee += g.weight_m2 * eps_exact.dot(stress_exact);
+    de += g.weight_m2 * e_s.dot(C * e_s);
+    ee += g.weight_m2 * s_exact.dot(C * s_exact);
   }
   return {std::sqrt(du / uu), std::sqrt(de / ee)};
+}
+
+ErrorNorms relative_error(const ElasticModel& model, const Eigen::VectorXd& u, const std::vector<GaussPoint>& quadrature,
+                          const ElasticFieldAt& exact) {
+  return relative_error(quadrature, model.D(), [&](const Vec2& x) {
+    const ShapeFunctions sf = model.mls().evaluate(x, "error quadrature point");
+    return std::pair<Eigen::Vector2d, Eigen::Vector3d>{displacement_of(sf, u), model.D() * strain_of(sf, u)};
+  }, exact);
 }
 
 }  // namespace mesowave::efg

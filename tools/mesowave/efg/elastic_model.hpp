@@ -85,12 +85,18 @@ private:
 
 /// Relative errors of a solution against a closed form over a quadrature (e.g. the Gauss points of a
 /// finer rectangular_grid, so the measure does not change with the model's own rule):
-///   displacement: ||u^h - u|| / ||u|| (L2),  energy: sqrt(int e^T D e / int eps^T D eps), e = eps^h - eps.
+///   displacement: ||u^h - u|| / ||u|| (L2),
+///   energy: sqrt(int (s^h - s) : C (s^h - s) / int s : C s), C = D^-1 (= the strain form e^T D e).
 struct ErrorNorms {
   double displacement_l2 = 0, energy = 0;
 };
-/// `exact(x)` returns the displacement [m] and stress (Voigt) [Pa] at x.
+/// A field at x: displacement [m] and stress (Voigt) [Pa].
+using ElasticFieldAt = std::function<std::pair<Eigen::Vector2d, Eigen::Vector3d>(const Vec2&)>;
+/// The one norm loop: any approximation (the EFG, the Q4 FEM) against the exact field.
+ErrorNorms relative_error(const std::vector<GaussPoint>& quadrature, const Eigen::Matrix3d& D, const ElasticFieldAt& approx,
+                          const ElasticFieldAt& exact);
+/// The EFG solution u (nodal parameters) of `model`.
 ErrorNorms relative_error(const ElasticModel& model, const Eigen::VectorXd& u, const std::vector<GaussPoint>& quadrature,
-                          const std::function<std::pair<Eigen::Vector2d, Eigen::Vector3d>(const Vec2&)>& exact);
+                          const ElasticFieldAt& exact);
 
 }  // namespace mesowave::efg
