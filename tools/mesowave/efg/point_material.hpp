@@ -1,0 +1,45 @@
+#pragma once
+// The constitutive update at one Gauss point of the explicit EFG model (shock paper Sections 3.2,
+// 3.3): the explicit integrator (efg/explicit_dynamics) asks each point for its stress from its
+// total strain, and the point keeps what its law remembers (the largest Y reached, for the
+// unloading rule Eq. (27); the last strain and stress, for an incremental law). The linear law
+// needs none of it. `modulus_scale` is the ratio of the law's current tangent stiffness to D()'s:
+// the integrator shrinks the stable step by 1 / sqrt(largest scale) when the Y-function stiffens
+// the material (Eq. (24)).
+#include <Eigen/Core>
+
+#include "mesowave/efg/material.hpp"
+
+namespace mesowave::efg {
+
+struct PointState {
+  Eigen::Vector3d strain = Eigen::Vector3d::Zero();  ///< at the last update, Voigt (xx, yy, xy)
+  Eigen::Vector3d stress = Eigen::Vector3d::Zero();  ///< at the last update [Pa]
+  double max_Y = 1.0;          ///< the largest Y(eps_v) reached on loading, Eq. (27)
+  double modulus_scale = 1.0;  ///< tangent stiffness / D() at the last update
+};
+
+class PointMaterial {
+ public:
+  virtual ~PointMaterial() = default;
+  /// The stress [Pa] for the total `strain` (Voigt, engineering shear), updating `state` (its
+  /// strain, stress, max_Y and modulus_scale) for the next call.
+  virtual Eigen::Vector3d update(const Eigen::Vector3d& strain, PointState& state) const = 0;
+};
+
+/// sigma = D eps, modulus_scale 1: the linear continuum of the static solver, for the dynamic one.
+class LinearElasticPoint final : public PointMaterial {
+ public:
+  explicit LinearElasticPoint(const ElasticMaterial2D& material) : D_(material.D()) {}
+  Eigen::Vector3d update(const Eigen::Vector3d& strain, PointState& state) const override {
+    state.strain = strain;
+    state.stress = D_ * strain;
+    state.modulus_scale = 1.0;
+    return state.stress;
+  }
+
+ private:
+  Eigen::Matrix3d D_;
+};
+
+}  // namespace mesowave::efg
