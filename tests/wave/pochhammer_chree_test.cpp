@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <utility>
 
 #include "mesowave/core/error.hpp"
 #include "rod_safe.hpp"
@@ -160,6 +162,81 @@ TEST(PochhammerChree, FirstModeGroupVelocityMinimum) {
   const double k_safe = 0.5 * (lo + hi);
   EXPECT_NEAR(safe.group_velocity(k_safe, 0) / c0, cg_min, 2e-5);
   EXPECT_NEAR(k_safe * kA, ka_min, 0.01);
+}
+
+// The refined L(0,1) minimum against a brute-force search that shares nothing with the
+// library: the frequency equation (rod paper Eq. (1), divided by beta) written in k and omega
+// with the standard library's Bessel functions, its lowest root at fixed k by a scan and
+// bisection, c_g = d omega / dk by central differences, minimised over a fine ka grid.
+TEST(PochhammerChree, RefinedGroupVelocityMinimumMatchesABruteForceSearch) {
+  const auto pc = rod(0.3);
+  const double cP = pc.speeds().cP, cS = pc.speeds().cS, c0 = pc.speeds().c0, cR = pc.speeds().cR;
+  const auto F = [&](double k, double w) {
+    const double a2 = w * w / (cP * cP) - k * k, b2 = w * w / (cS * cS) - k * k;
+    double aJ1, J0a, J1b_b, J0b;  // alpha J1(alpha a), J0(alpha a), J1(beta a) / beta, J0(beta a)
+    if (a2 > 0) {
+      const double al = std::sqrt(a2);
+      aJ1 = al * std::cyl_bessel_j(1.0, al * kA), J0a = std::cyl_bessel_j(0.0, al * kA);
+    } else {
+      const double s = std::sqrt(-a2);
+      aJ1 = -s * std::cyl_bessel_i(1.0, s * kA), J0a = std::cyl_bessel_i(0.0, s * kA);
+    }
+    if (b2 > 0) {
+      const double be = std::sqrt(b2);
+      J1b_b = std::cyl_bessel_j(1.0, be * kA) / be, J0b = std::cyl_bessel_j(0.0, be * kA);
+    } else {
+      const double t = std::sqrt(-b2);
+      J1b_b = std::cyl_bessel_i(1.0, t * kA) / t, J0b = std::cyl_bessel_i(0.0, t * kA);
+    }
+    return (2 / kA) * (b2 + k * k) * aJ1 * J1b_b - (b2 - k * k) * (b2 - k * k) * J0a * J1b_b -
+           4 * k * k * aJ1 * J0b;
+  };
+  // The lowest root at fixed k: L(0,1)'s phase velocity lies between cR and c0.
+  const auto omega_of_k = [&](double k) {
+    double lo = 0.9 * cR * k, flo = F(k, lo);
+    const double step = (1.01 * c0 - 0.9 * cR) * k / 400;
+    double hi = lo + step, fhi = F(k, hi);
+    while ((flo > 0) == (fhi > 0)) lo = hi, flo = fhi, hi += step, fhi = F(k, hi);
+    for (int i = 0; i < 200 && hi - lo > 0; ++i) {
+      const double mid = 0.5 * (lo + hi), fm = F(k, mid);
+      if (mid == lo || mid == hi) break;
+      ((fm > 0) == (flo > 0) ? lo : hi) = mid;
+      if ((fm > 0) == (flo > 0)) flo = fm;
+    }
+    return 0.5 * (lo + hi);
+  };
+  const double dx = 1e-5;  // central-difference step in k a
+  const auto c_group = [&](double x) { return (omega_of_k((x + dx) / kA) - omega_of_k((x - dx) / kA)) / (2 * dx / kA); };
+  const auto brute = [&](double from, double to, double h) {
+    std::pair<double, double> best{from, c_group(from)};
+    for (double x = from + h; x <= to; x += h)
+      if (const double c = c_group(x); c < best.second) best = {x, c};
+    return best;
+  };
+  const auto coarse = brute(2.0, 3.5, 1e-3);
+  const auto fine = brute(coarse.first - 2e-3, coarse.first + 2e-3, 1e-5);
+
+  TraceOptions opt;
+  opt.f_max_Hz = 600e3;  // the default trace (ka step 0.01), as mw-dispersion theory runs it
+  const auto trace = trace_longitudinal_modes(pc, opt);
+  const auto m = l01_group_velocity_minimum(pc, trace);
+  ASSERT_TRUE(m.has_value());
+  const double ka = m->k_rad_m * kA;
+  std::printf("L(0,1) minimum: refined ka %.8f, c_g/c0 %.12f; brute force ka %.5f, c_g/c0 %.12f\n", ka,
+              m->c_group_m_s / c0, fine.first, fine.second / c0);
+  EXPECT_NEAR(ka, fine.first, 5e-5);
+  EXPECT_NEAR(m->c_group_m_s / c0, fine.second / c0, 1e-9);
+  EXPECT_NEAR(m->omega_rad_s, omega_of_k(m->k_rad_m), 1e-9 * m->omega_rad_s);
+  EXPECT_NEAR(m->f_Hz, m->omega_rad_s / (2 * std::numbers::pi), 1e-9 * m->f_Hz);
+
+  // What the trace's grid alone reported: a grid point, slower-looking only to the step.
+  const auto& l01 = trace.modes.at(0).points;
+  std::size_t imin = 0;
+  for (std::size_t i = 1; i < l01.size(); ++i)
+    if (l01[i].c_group_m_s < l01[imin].c_group_m_s) imin = i;
+  std::printf("trace grid point: ka %.8f, c_g/c0 %.12f\n", l01[imin].k_rad_m * kA, l01[imin].c_group_m_s / c0);
+  EXPECT_GE(l01[imin].c_group_m_s, m->c_group_m_s);
+  EXPECT_GT(std::abs(l01[imin].k_rad_m * kA - ka), 10 * 5e-5);  // the grid point is off by more than the check's tolerance
 }
 
 TEST(PochhammerChree, GroupVelocityFromTheImplicitDerivativeMatchesFiniteDifferences) {

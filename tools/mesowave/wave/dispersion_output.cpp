@@ -247,17 +247,11 @@ nlohmann::ordered_json theory_summary(const PochhammerChree& pc, const Dispersio
     modes.push_back(m);
   }
   j["modes"] = modes;
-  if (!trace.modes.empty()) {
-    const auto& l01 = trace.modes.front().points;
-    std::size_t imin = 0;
-    for (std::size_t i = 1; i < l01.size(); ++i)
-      if (l01[i].c_group_m_s < l01[imin].c_group_m_s) imin = i;
-    if (imin > 0 && imin + 1 < l01.size()) {
-      j["L01_min_group_velocity_m_s"] = l01[imin].c_group_m_s;
-      j["L01_min_group_velocity_over_c0"] = l01[imin].c_group_m_s / c.c0;
-      j["L01_min_group_velocity_f_kHz"] = l01[imin].f_Hz / units::kHz;
-      j["L01_min_group_velocity_ka"] = l01[imin].k_rad_m * pc.radius_m();
-    }
+  if (const auto m = l01_group_velocity_minimum(pc, trace)) {  // refined off the trace's ka grid
+    j["L01_min_group_velocity_m_s"] = m->c_group_m_s;
+    j["L01_min_group_velocity_over_c0"] = m->c_group_m_s / c.c0;
+    j["L01_min_group_velocity_f_kHz"] = m->f_Hz / units::kHz;
+    j["L01_min_group_velocity_ka"] = m->k_rad_m * pc.radius_m();
   }
   j["trace_step_refinements"] = trace.step_refinements;
   return j;

@@ -326,6 +326,31 @@ DispersionTrace trace_longitudinal_modes(const PochhammerChree& pc, const TraceO
   return trace;
 }
 
+std::optional<GroupVelocityMinimum> l01_group_velocity_minimum(const PochhammerChree& pc, const DispersionTrace& trace) {
+  if (trace.modes.empty() || trace.modes.front().mode != 1) return std::nullopt;
+  const auto& l01 = trace.modes.front().points;
+  std::size_t imin = 0;
+  for (std::size_t i = 1; i < l01.size(); ++i)
+    if (l01[i].c_group_m_s < l01[imin].c_group_m_s) imin = i;
+  if (imin == 0 || imin + 1 >= l01.size()) return std::nullopt;
+  const double x_lo = pc.x_of(l01[imin - 1].k_rad_m), x_hi = pc.x_of(l01[imin + 1].k_rad_m);
+  // Omega(x) rises along L(0,1) (c_g > 0), so the neighbours' Omega bracket the root at any x
+  // between them; L(0,2) lies far above.
+  const double W_lo = pc.Omega_of(l01[imin - 1].omega_rad_s), W_hi = pc.Omega_of(l01[imin + 1].omega_rad_s);
+  const auto root = [&](double x) {
+    const auto g = [&](double W) { return pc.D(x, W); };
+    return brent_root(g, W_lo, W_hi, g(W_lo), g(W_hi));
+  };
+  const auto c_group = [&](double x) { return slope_at(pc, x, root(x)) * pc.speeds().cS; };
+  const Minimum m = golden_section_minimum(c_group, x_lo, x_hi);
+  GroupVelocityMinimum out;
+  out.k_rad_m = pc.k_of(m.x);
+  out.omega_rad_s = pc.omega_of(root(m.x));
+  out.f_Hz = out.omega_rad_s / (2 * std::numbers::pi);
+  out.c_group_m_s = m.f;
+  return out;
+}
+
 std::vector<DispersionPoint> sample_at_frequencies(const PochhammerChree& pc, const DispersionTrace& trace,
                                                    const std::vector<double>& f_Hz) {
   std::vector<DispersionPoint> out;

@@ -24,6 +24,7 @@
 // At k = 0 the equation factors: q C1(q) [2 A1(p) - q A0(p)] = 0, i.e. the cut-off
 // frequencies are the roots of J1(omega a / cS) = 0 and of 2 J1(y) = kappa^2 y J0(y) with
 // y = omega a / cP, kappa = cP / cS.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,18 @@ DispersionTrace trace_longitudinal_modes(const PochhammerChree& pc, const TraceO
 /// method in k at fixed omega. Sorted by mode, branch, frequency.
 std::vector<DispersionPoint> sample_at_frequencies(const PochhammerChree& pc, const DispersionTrace& trace,
                                                    const std::vector<double>& f_Hz);
+
+/// The L(0,1) group-velocity minimum, where a pulse's Airy phase travels (Graff 1975, 8.2):
+/// the traced curve's lowest interior point brackets it between its two neighbours, and
+/// golden-section search in x = k a refines it there, the L(0,1) root Omega(x) solved by
+/// Brent's method at each trial x and c_g = -cS D_x / D_Omega taken at the root. The
+/// trace's own grid (ka step 0.01) places it only to the step; refined, c_g is the minimum
+/// to rounding and k a to ~1e-8. nullopt when the traced L(0,1) has no interior minimum
+/// (f_max below it).
+struct GroupVelocityMinimum {
+  double k_rad_m = 0, omega_rad_s = 0, f_Hz = 0, c_group_m_s = 0;
+};
+std::optional<GroupVelocityMinimum> l01_group_velocity_minimum(const PochhammerChree& pc, const DispersionTrace& trace);
 
 /// "L(0,2)".
 std::string mode_name(int mode);

@@ -1,5 +1,7 @@
 #include "mesowave/wave/roots.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -59,6 +61,31 @@ double brent_root(const std::function<double(double)>& f, double a, double b, do
     fb = f(b);
   }
   return b;
+}
+
+Minimum golden_section_minimum(const std::function<double(double)>& f, double a, double b, double xtol,
+                               int max_iterations) {
+  if (!(a < b)) throw std::logic_error("golden_section_minimum: empty interval");
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double r = 0.5 * (std::sqrt(5.0) - 1);  // 1/phi
+  double c = b - r * (b - a), d = a + r * (b - a);
+  double fc = f(c), fd = f(d);
+  for (int it = 0; it < max_iterations && b - a > xtol + 4 * eps * std::max(std::abs(a), std::abs(b)); ++it) {
+    if (fc <= fd) {  // the minimum lies in [a, d]
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - r * (b - a);
+      fc = f(c);
+    } else {  // in [c, b]
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + r * (b - a);
+      fd = f(d);
+    }
+  }
+  return fc <= fd ? Minimum{c, fc} : Minimum{d, fd};
 }
 
 }  // namespace mesowave::wave
