@@ -2,9 +2,15 @@
 // for bad input exit 1 with one line `error: ...` and nothing written.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
 #include <nlohmann/json.hpp>
 
 #include "mesowave/io/csv.hpp"
+#include "mesowave/signal/correlation.hpp"
 #include "mesowave/signal/signal_csv.hpp"
 #include "mesowave/signal/signal_file.hpp"
 #include "support/run_tool.hpp"
@@ -162,6 +168,42 @@ TEST(PccCli, TwoFilesPerSensorTableAndMean) {
   const std::size_t k100 = 15;  // 100 kHz on the 150 us record's 6.67 kHz grid
   EXPECT_NEAR(spectra.number(k100, 0), 100.0, 1e-9);
   EXPECT_NEAR(spectra.number(k100, 2) / spectra.number(k100, 1), 0.5, 1e-9);
+}
+
+// The table keeps four decimals (concrete paper Table 3 prints two); the JSON carries the
+// coefficients to the last bit, so a later tool reads the library's own doubles.
+TEST(PccCli, JsonHoldsTheLibrarysCoefficientsBitForBitAndTheCsvFourDecimals) {
+  TempDir dir;
+  make_burst(dir, "a.h5", {"--delay-us", "30", "--name", "B"});
+  make_burst(dir, "b.h5", {"--delay-us", "31.37", "--name", "B", "--amplitude", "0.5"});
+  const auto r = run_tool("mw-pcc", {(dir / "a.h5").string(), (dir / "b.h5").string(), "--csv",
+                                     (dir / "pcc.csv").string(), "--out", (dir / "pcc.json").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const auto a = signal::read_signals(dir / "a.h5"), b = signal::read_signals(dir / "b.h5");
+  const auto table = signal::correlate_sensors(a, b);
+  ASSERT_EQ(table.sensors.size(), 1u);
+  const auto j = json::parse(read_file(dir / "pcc.json"));
+  const auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+  EXPECT_EQ(bits(j["sensors"][0]["pcc_signal"].get<double>()), bits(table.sensors[0].pcc_signal));
+  EXPECT_EQ(bits(j["sensors"][0]["pcc_envelope"].get<double>()), bits(table.sensors[0].pcc_envelope));
+  EXPECT_EQ(bits(j["mean_pcc_signal"].get<double>()), bits(table.mean_pcc_signal));
+  EXPECT_EQ(bits(j["mean_pcc_envelope"].get<double>()), bits(table.mean_pcc_envelope));
+  // Not a value that four decimals hold: the JSON's digits matter.
+  EXPECT_NE(std::round(table.sensors[0].pcc_signal * 1e4) / 1e4, table.sensors[0].pcc_signal);
+
+  const auto csv = io::read_csv(dir / "pcc.csv");
+  for (std::size_t row : {std::size_t(0), csv.rows.size() - 1})
+    for (std::size_t col : {std::size_t(1), std::size_t(2)}) {
+      const std::string cell = csv.text(row, col);
+      ASSERT_NE(cell.find('.'), std::string::npos) << cell;
+      EXPECT_EQ(cell.size() - cell.find('.') - 1, 4u) << cell;
+    }
+  char four[32];
+  std::snprintf(four, sizeof four, "%.4f", table.sensors[0].pcc_signal);
+  EXPECT_EQ(csv.text(0, 1), four);
+
+  const auto help = run_tool("mw-pcc", {"--help"});
+  EXPECT_NE(help.out.find("full precision"), std::string::npos) << help.out;
 }
 
 TEST(PccCli, TimeBasesAndBadRecordsAreRefused) {

@@ -38,7 +38,10 @@ int main(int argc, char** argv) {
   cli.add_option("--window-end-us", q.end_us, "Compare up to this time [us]");
   cli.add_option("--detrend", q.detrend, "Envelopes: none | mean | linear")->capture_default_str();
   cli.add_option("--pad", q.pad, "Envelopes: none | double | pow2 | an FFT length")->capture_default_str();
-  cli.add_option("--csv", csv_out, "Write the table as CSV (a last row 'mean')")->type_name("FILE");
+  cli.add_option("--csv", csv_out,
+                 "Write the table as CSV (a last row 'mean'), the coefficients to four decimals as printed; "
+                 "--out's JSON holds them at full precision (the shortest text that reads back as the same double)")
+      ->type_name("FILE");
   cli.add_option("--spectra", spectra_out,
                  "Also write the amplitude spectra of both sets (concrete paper Fig. 15) as CSV: f_kHz, then "
                  "'<sensor> a [unit]', '<sensor> b [unit]' per sensor")
@@ -61,7 +64,7 @@ int main(int argc, char** argv) {
       ->expected(2)
       ->capture_default_str();
   cli.add_option("--title", q.title, "Title of the figures (default: the two files)");
-  app::add_out_option(cli, out, "the JSON result");
+  app::add_out_option(cli, out, "the JSON result (every coefficient at full precision: it reads back bit for bit)");
 
   return tool.run(argc, argv, [&](app::Run& run) {
     q.spectra = !spectra_out.empty();
