@@ -21,7 +21,7 @@ CREATE TABLE IF NOT EXISTS runs (
   host          TEXT    NOT NULL,
   started_at    TEXT    NOT NULL,  -- ISO 8601, UTC, milliseconds
   ended_at      TEXT    NOT NULL,
-  exit_status   INTEGER NOT NULL,  -- 0 success, 1 bad input, 2 internal failure
+  exit_status   INTEGER NOT NULL,  -- 0 success, 1 bad input, 2 internal failure, 128+N interrupted by signal N
   error         TEXT,              -- the one-line message of a failed run
   wall_s        REAL    NOT NULL,
   cpu_s         REAL    NOT NULL,  -- user + system time of the process

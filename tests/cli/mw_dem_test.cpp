@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstdint>
 
 #include <nlohmann/json.hpp>
 
@@ -152,4 +154,45 @@ TEST(MwDem, SnapshotsAreVtkPolyDataWithATimeSeries) {
   }
   const std::string pvd = test::read_file(dir / "snap" / "snapshots.pvd");
   EXPECT_NE(pvd.find("timestep=\"1e-05\" part=\"0\" file=\"snapshot-2.vtp\""), std::string::npos) << pvd;
+}
+
+// SIGTERM while the run steps (app/interrupt.hpp): the run stops at its next progress
+// report, writes nothing, exits with 128 + 15 by itself (not killed by the signal) and is in
+// the provenance database as interrupted, with the step it reached.
+TEST(MwDem, ASigtermStopsTheRunWritesNothingAndRecordsItAsInterrupted) {
+  test::TempDir dir, db_dir;
+  dem::write_packing_file(dir / "rod.h5", rod(191, 5.1e-3, 1.03 * 5.1e-3));
+  test::write_file(dir / "rod.toml", rod_scene(dir / "rod.h5"));
+  const std::string db = (db_dir / "p.sqlite").string();
+  const std::int64_t steps = 4'000'000;  // 200 ms at 50 ns: seconds of stepping, stopped after its first 10 %
+  const auto r = test::run_tool_and_signal(
+      "mw-dem", {"run", (dir / "rod.toml").string(), "--frequency-kHz", "80", "--duration-ms", "200", "--signals",
+                 (dir / "s.h5").string(), "--summary", (dir / "s.json").string(), "--db", db},
+      " 10% ", SIGTERM);  // the progress line at 10 % (lines at 0, 10, 20, ... % off a terminal)
+  ASSERT_TRUE(r.signal_sent) << "the run ended before its first progress line: " << r.err;
+  EXPECT_FALSE(r.killed_by_signal);
+  EXPECT_EQ(r.exit_status, 143) << r.err;
+  EXPECT_NE(r.err.find("error: interrupted by SIGTERM after "), std::string::npos) << r.err;
+  EXPECT_EQ(test::count_files(dir.path()), 2u);  // rod.h5 and rod.toml: no signals, summary or staged temporary
+
+  const auto runs = nlohmann::json::parse(run_tool("mw-prov", {"--db", db, "runs", "--json"}).out);
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0]["tool"], "mw-dem");
+  EXPECT_EQ(runs[0]["exit_status"], 143);
+  EXPECT_EQ(runs[0]["status"], "interrupted");
+  const auto show = nlohmann::json::parse(run_tool("mw-prov", {"--db", db, "show", "1", "--json"}).out);
+  const auto& where = show["params"]["interrupted"];
+  EXPECT_EQ(where["signal"], "SIGTERM");
+  EXPECT_EQ(where["unit"], "steps");
+  EXPECT_EQ(where["total"].get<std::int64_t>(), steps);
+  const auto done = where["done"].get<std::int64_t>();
+  EXPECT_GE(done, steps / 10);  // the signal came after the 10 % line
+  EXPECT_LT(done, steps);
+  EXPECT_TRUE(show["outputs"].empty());
+  const std::string reached = "after " + std::to_string(done) + " of " + std::to_string(steps) + " steps (mw-dem rod-wave)";
+  EXPECT_NE(runs[0]["error"].get<std::string>().find(reached), std::string::npos) << runs[0]["error"];
+
+  const auto text = run_tool("mw-prov", {"--db", db, "runs"});
+  EXPECT_NE(text.out.find("interrupted"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(reached), std::string::npos) << text.out;
 }

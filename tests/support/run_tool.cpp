@@ -1,15 +1,18 @@
 #include "support/run_tool.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 extern char** environ;
 
@@ -22,8 +25,12 @@ ToolResult run_tool(const std::string& tool, const std::vector<std::string>& arg
   return run_command(tool_path(tool), args, env);
 }
 
-ToolResult run_command(const fs::path& program, const std::vector<std::string>& args, const std::vector<std::string>& env) {
-  TempDir capture;
+namespace {
+
+// Starts `program` with stdout and stderr going to files in `capture`; the environment is the
+// test's own without MESOWAVE_DB (tests name their database explicitly), plus `env`.
+pid_t spawn(const fs::path& program, const std::vector<std::string>& args, const std::vector<std::string>& env,
+            const TempDir& capture) {
   const fs::path out_file = capture / "stdout", err_file = capture / "stderr";
   std::vector<std::string> argv_s = {program.string()};
   argv_s.insert(argv_s.end(), args.begin(), args.end());
@@ -34,7 +41,7 @@ ToolResult run_command(const fs::path& program, const std::vector<std::string>& 
   std::vector<std::string> env_s;
   for (char** e = environ; *e; ++e) {
     const std::string entry = *e;
-    if (entry.rfind("MESOWAVE_DB=", 0) == 0) continue;  // tests name their database explicitly
+    if (entry.rfind("MESOWAVE_DB=", 0) == 0) continue;
     env_s.push_back(entry);
   }
   env_s.insert(env_s.end(), env.begin(), env.end());
@@ -50,12 +57,45 @@ ToolResult run_command(const fs::path& program, const std::vector<std::string>& 
   const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   if (rc != 0) throw std::runtime_error("cannot start " + argv_s[0]);
-  int status = 0;
-  waitpid(pid, &status, 0);
+  return pid;
+}
+
+ToolResult collect(int status, const TempDir& capture) {
   ToolResult result;
   result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  result.out = read_file(out_file);
-  result.err = read_file(err_file);
+  result.killed_by_signal = WIFSIGNALED(status);
+  result.out = read_file(capture / "stdout");
+  result.err = read_file(capture / "stderr");
+  return result;
+}
+
+}  // namespace
+
+ToolResult run_command(const fs::path& program, const std::vector<std::string>& args, const std::vector<std::string>& env) {
+  TempDir capture;
+  const pid_t pid = spawn(program, args, env, capture);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return collect(status, capture);
+}
+
+ToolResult run_tool_and_signal(const std::string& tool, const std::vector<std::string>& args,
+                               const std::string& marker, int signal, double timeout_s) {
+  TempDir capture;
+  const pid_t pid = spawn(tool_path(tool), args, {}, capture);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  int status = 0;
+  bool sent = false;
+  for (;;) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return collect(status, capture);  // ended before the signal
+    if (read_file(capture / "stderr").find(marker) != std::string::npos) break;
+    if (std::chrono::steady_clock::now() > deadline) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  sent = ::kill(pid, signal) == 0;
+  waitpid(pid, &status, 0);
+  auto result = collect(status, capture);
+  result.signal_sent = sent;
   return result;
 }
 
@@ -89,6 +129,7 @@ ToolResult run_tool_as(unsigned uid, const std::string& tool, const std::vector<
   waitpid(pid, &status, 0);
   ToolResult result;
   result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.killed_by_signal = WIFSIGNALED(status);
   result.out = read_file(out_file);
   result.err = read_file(err_file);
   return result;

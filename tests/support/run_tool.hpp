@@ -7,7 +7,9 @@
 namespace mesowave::test {
 
 struct ToolResult {
-  int exit_status = -1;
+  int exit_status = -1;         ///< the exit code, or 128 + N for a process signal N ended
+  bool killed_by_signal = false;  ///< a signal ended it (it did not exit by itself)
+  bool signal_sent = false;       ///< run_tool_and_signal: the signal was delivered while it ran
   std::string out;
   std::string err;
 };
@@ -20,6 +22,11 @@ ToolResult run_tool(const std::string& tool, const std::vector<std::string>& arg
 /// Runs any program (absolute path) the same way.
 ToolResult run_command(const std::filesystem::path& program, const std::vector<std::string>& args,
                        const std::vector<std::string>& env = {});
+
+/// As run_tool, but sends `signal` to the tool once its stderr holds `marker` (or after
+/// `timeout_s`), then waits for it. If it ends before, signal_sent stays false.
+ToolResult run_tool_and_signal(const std::string& tool, const std::vector<std::string>& args,
+                               const std::string& marker, int signal, double timeout_s = 120);
 
 /// As run_tool, but the tool runs as user `uid` (for read-only checks when
 /// the tests run as root, who can write anywhere). Only root can do this.

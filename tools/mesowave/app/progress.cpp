@@ -24,10 +24,15 @@ Progress::Progress(std::string label, std::int64_t total, std::string unit, bool
       last_draw_(start_) {}
 
 Progress::~Progress() {
+  mark_progress(mark());
   if (!finished_ && enabled_ && tty_) std::fputc('\n', stderr);
 }
 
+ProgressMark Progress::mark() const { return {label_, unit_, done_, total_}; }
+
 void Progress::update(std::int64_t done) {
+  if (!finished_) done_ = done;
+  if (const int signal = interrupt_signal()) throw Interrupted{signal, mark()};
   if (!enabled_ || finished_) return;
   const auto now = std::chrono::steady_clock::now();
   if (tty_) {
@@ -44,6 +49,8 @@ void Progress::update(std::int64_t done) {
 }
 
 void Progress::finish() {
+  if (!finished_) done_ = total_;
+  mark_progress(mark());
   if (!enabled_ || finished_) return;
   draw(total_, true);
   finished_ = true;

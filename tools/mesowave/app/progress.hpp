@@ -2,9 +2,16 @@
 // Progress of a long run (DEM, FEM, calibration) on stderr: a bar redrawn in
 // place on a terminal (steps, rate, ETA); plain lines every ~10 % otherwise,
 // so logs from `make -j` stay readable. Cheap enough to call every step.
+//
+// update() is also where a long loop notices an interruption: once SIGINT or
+// SIGTERM has arrived (app/interrupt.hpp), it throws app::Interrupted with the
+// step reached, whether the bar is shown or not. Call it from the loop's serial
+// part, never inside an OpenMP region.
 #include <chrono>
 #include <cstdint>
 #include <string>
+
+#include "mesowave/app/interrupt.hpp"
 
 namespace mesowave::app {
 
@@ -13,13 +20,17 @@ public:
   /// `label` names the work ("mw-dem cube-100kHz"), `unit` the steps ("steps").
   Progress(std::string label, std::int64_t total, std::string unit = "steps", bool enabled = true);
   ~Progress();
+  /// Shows `done` of `total`; throws app::Interrupted if a signal arrived.
   void update(std::int64_t done);
   void finish();
+  /// Where the loop is: label, unit, the last `done` given, total.
+  ProgressMark mark() const;
 
 private:
   void draw(std::int64_t done, bool final);
+  PollingScope polling_;  // a signal while this loop runs waits for its update()
   std::string label_, unit_;
-  std::int64_t total_;
+  std::int64_t total_, done_ = 0;
   bool enabled_, tty_, finished_ = false;
   int last_decile_ = -1;
   std::chrono::steady_clock::time_point start_, last_draw_;

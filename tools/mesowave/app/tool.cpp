@@ -7,11 +7,13 @@
 #include <optional>
 #include <sstream>
 
+#include "mesowave/app/interrupt.hpp"
 #include "mesowave/app/process_info.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/version.hpp"
 #include "mesowave/io/quantity_file.hpp"
 #include "mesowave/prov/database.hpp"
+#include "mesowave/prov/run_status.hpp"
 
 namespace mesowave::app {
 namespace fs = std::filesystem;
@@ -280,8 +282,14 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
     return 1;
   }
 
+  // From here on a SIGINT or SIGTERM stops the body at its next Progress::update (or is seen
+  // when the body returns) and the run is recorded as interrupted (app/interrupt.hpp).
+  InterruptGuard interrupt_guard;
+  std::optional<Interrupted> interrupted;
   try {
     body(run);
+  } catch (const Interrupted& i) {
+    interrupted = i;
   } catch (const InputError& e) {
     record.exit_status = 1;
     record.error = one_line(e.what());
@@ -292,9 +300,22 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
     record.exit_status = 2;
     record.error = "internal error: " + one_line(e.what());
   }
+  if (!interrupted && interrupt_signal()) interrupted = Interrupted{interrupt_signal(), last_progress()};
 
   record.params = collect_params(app_);
   for (auto& [key, value] : run.extra_params_.items()) record.params[key] = value;
+  if (interrupted) {
+    record.exit_status = prov::interrupted_exit_status(interrupted->signal);
+    record.error = "interrupted by " + signal_name(interrupted->signal);
+    nlohmann::ordered_json where = {{"signal", signal_name(interrupted->signal)}};
+    if (const auto& m = interrupted->reached) {
+      record.error += " after " + std::to_string(m->done) + " of " + std::to_string(m->total) + " " + m->unit + " (" +
+                      m->label + ")";
+      where.update({{"label", m->label}, {"done", m->done}, {"total", m->total}, {"unit", m->unit}});
+    }
+    record.error += "; nothing was written";
+    record.params["interrupted"] = where;
+  }
   record.inputs = run.inputs_;
   record.metrics = run.metrics_;
   try {

@@ -13,7 +13,10 @@
 //    "from_ignored": {"FILE": ["entry", ...]};
 //  - `--db PATH` or MESOWAVE_DB: the provenance database that records the run;
 //  - exit status 0 on success, 1 on bad input (one line: `error: <what>`),
-//    2 on internal failure;
+//    2 on internal failure, 128 + N when signal N (SIGINT 130, SIGTERM 143)
+//    interrupted a run's app::Progress loop (app/interrupt.hpp): the body
+//    stops at its next Progress::update, nothing is written and the run is
+//    recorded as interrupted with the step it reached;
 //  - outputs staged and renamed into place only when the run succeeded.
 #include <CLI/CLI.hpp>
 #include <filesystem>

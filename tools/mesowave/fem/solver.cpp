@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 
 #include "mesowave/core/check.hpp"
@@ -208,6 +209,7 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
   const Assembler A(model);
   const auto start = std::chrono::steady_clock::now();
   bool blew_up = false;
+  std::exception_ptr callback_error;
   double ke_max = 0, ke_last = 0;
   const std::int64_t check_every = 200;
   std::vector<double> ke_part;
@@ -262,14 +264,21 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
           if (!std::isfinite(sum)) blew_up = true;
           ke_max = std::max(ke_max, sum);
           ke_last = sum;
-          if (opt.progress) opt.progress(n);
+          // An exception may not leave an OpenMP region: the callback's (an interrupted run's,
+          // app/interrupt.hpp) is kept, every thread leaves the loop, and it is rethrown after.
+          if (opt.progress && !callback_error) try {
+              opt.progress(n);
+            } catch (...) {
+              callback_error = std::current_exception();
+            }
         }
-        if (blew_up) break;
+        if (blew_up || callback_error) break;
       } else {
 #pragma omp barrier
       }
     }
   }
+  if (callback_error) std::rethrow_exception(callback_error);
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (blew_up && !opt.allow_unstable)
     throw std::runtime_error("the explicit solution stopped being finite (unstable step or bad input)");

@@ -53,7 +53,9 @@ struct ExplicitOptions {
   std::int64_t steps = 0;            ///< number of steps; samples at n dt, n = 0, stride, 2 stride, ... <= steps
   std::int64_t sample_stride = 1;
   double alpha_damping_per_s = 0;    ///< Rayleigh mass-proportional coefficient alpha [1/s]
-  std::function<void(std::int64_t)> progress;  ///< called with the step count now and then (from one thread)
+  /// Called with the step count now and then (from one thread); what it throws stops the
+  /// run and is rethrown once the threads have left the loop (an interrupted run's stop).
+  std::function<void(std::int64_t)> progress;
   bool allow_unstable = false;       ///< tests only: run above the stable step to watch it diverge
   /// Threads used: at most one per this many elements (and at most OpenMP's maximum;
   /// core/threads.hpp), so that small meshes do not pay for barriers they cannot amortise.

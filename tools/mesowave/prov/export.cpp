@@ -7,6 +7,7 @@
 #include "mesowave/io/sha256.hpp"
 #include "mesowave/prov/queries.hpp"
 #include "mesowave/prov/report.hpp"
+#include "mesowave/prov/run_status.hpp"
 
 namespace mesowave::prov {
 namespace {
@@ -114,7 +115,9 @@ std::string export_dot(const Database& db, const std::filesystem::path& base) {
         << "];\n";
   for (std::size_t k = 0; k < g.runs.size(); ++k)
     out << "  \"r" << g.run_ids[k] << "\" [shape=box, style=rounded, label=\"run " << g.run_ids[k] << "\\n"
-        << escape(g.runs[k].tool) << (g.runs[k].exit_status ? "\\n(failed)" : "") << "\"];\n";
+        << escape(g.runs[k].tool)
+        << (is_interrupted(g.runs[k].exit_status) ? "\\n(interrupted)" : g.runs[k].exit_status ? "\\n(failed)" : "")
+        << "\"];\n";
   for (const auto& e : g.used) out << "  \"f" << e.file_id << "\" -> \"r" << e.run << "\";\n";
   for (const auto& e : g.generated) out << "  \"r" << e.run << "\" -> \"f" << e.file_id << "\";\n";
   out << "}\n";

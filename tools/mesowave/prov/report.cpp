@@ -6,6 +6,7 @@
 
 #include "mesowave/core/format.hpp"
 #include "mesowave/io/text_table.hpp"
+#include "mesowave/prov/run_status.hpp"
 
 namespace mesowave::prov {
 namespace fs = std::filesystem;
@@ -14,11 +15,12 @@ namespace {
 
 std::string short_hash(const std::string& sha) { return sha.empty() ? "(none)" : sha.substr(0, 16); }
 
-std::string status_text(int status) { return status == 0 ? "ok" : status == 1 ? "bad input" : "failed"; }
+std::string status_text(int status) { return status_name(status); }
 
 nlohmann::ordered_json summary_json(const RunSummary& r) {
   return {{"id", r.id},         {"tool", r.tool},       {"version", r.version}, {"started_at", r.started_at},
-          {"exit_status", r.exit_status}, {"wall_s", r.wall_s}, {"error", r.error}};
+          {"exit_status", r.exit_status}, {"status", status_text(r.exit_status)}, {"wall_s", r.wall_s},
+          {"error", r.error}};
 }
 
 std::string producer_text(const RunSummary& r) {

@@ -38,7 +38,7 @@ struct RunRecord {
   std::string host;
   std::string started_at;
   std::string ended_at;
-  int exit_status = 0;
+  int exit_status = 0;  ///< prov/run_status.hpp
   std::string error;
   double wall_s = 0;
   double cpu_s = 0;
