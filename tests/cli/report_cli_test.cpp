@@ -104,3 +104,39 @@ TEST_F(SmallReport, AMissingItemIsNamedAndNothingIsWritten) {
   EXPECT_NE(r.err.find("sketch.svg"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "report"));
 }
+
+// Table 3's per-sensor tables are wider than a laptop's window: the report keeps them in a
+// box of their own that scrolls, and the page itself fits 1280 px (scripts/check-report
+// measures document.documentElement.scrollWidth in Chromium at that width). The same page
+// without the box has the horizontal scrollbar the check exists for.
+TEST_F(SmallReport, AWideTableScrollsInItsOwnBoxAndThePageFits1280Px) {
+  std::string csv = "f_kHz";
+  for (const char* s : {"B", "C", "D", "E", "F", "G"})
+    for (const char* q : {"pcc_signal", "pcc_envelope", "samples", "from_us"}) csv += std::string(",") + s + " " + q;
+  csv += "\n";
+  for (int f = 100; f <= 500; f += 50) {
+    csv += std::to_string(f);
+    for (int i = 0; i < 24; ++i) csv += ",0.123456789012";
+    csv += "\n";
+  }
+  write_file(dir / "wide.csv", csv);
+  write_file(dir / "spec.toml", read_file(dir / "spec.toml") +
+                                    "[[section.item]]\ntable = \"wide.csv\"\ncaption = \"per-sensor PCC, 9 frequencies\"\n");
+  ASSERT_EQ(report().exit_status, 0);
+  const auto c = check({"2", "2"});
+  EXPECT_EQ(c.exit_status, 0) << c.out << c.err;
+  const auto at = c.out.find(" px wide in a 1280 px window");
+  ASSERT_NE(at, std::string::npos) << c.out;
+  const auto from = c.out.rfind(", ", at) + 2;
+  EXPECT_LE(std::stoi(c.out.substr(from, at - from)), 1280) << c.out;
+
+  // Unboxed, the same table pushes the page past the window.
+  auto html = read_file(dir / "report/index.html");
+  ASSERT_NE(html.find("<div class=\"table-box\">"), std::string::npos);
+  for (auto p = html.find("<div class=\"table-box\">"); p != std::string::npos; p = html.find("<div class=\"table-box\">"))
+    html.replace(p, std::string("<div class=\"table-box\">").size(), "<div>");
+  write_file(dir / "report/unboxed.html", html);
+  const auto u = run_command(kSource / "scripts/check-report", {(dir / "report/unboxed.html").string(), "2", "2"});
+  EXPECT_EQ(u.exit_status, 1) << u.out;
+  EXPECT_NE(u.out.find("a horizontal scrollbar"), std::string::npos) << u.out;
+}
