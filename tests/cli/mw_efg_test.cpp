@@ -80,6 +80,58 @@ TEST(MwEfg, BendingWritesCurvePlotCrackAndSummary) {
   EXPECT_EQ(nodes["point_data"]["displacement"]["tuples"], nodes["points"]);
   EXPECT_EQ(nodes["point_data"]["stress"]["components"], 6);
   EXPECT_GT(nodes["point_data"]["displacement"]["range"][1].get<double>(), 0.0);
+  // the last point's crack: the notch (one traction-free segment, damage 1) and the grown cohesive crack, a piece
+  // per cohesive Gauss point, with its opening [mm], traction [MPa] (at most f_t = 2.4 MPa) and damage in [0, 1]
+  const auto& crack = datasets.back();
+  const std::size_t cells = j["cost"]["cohesive_points"].get<std::size_t>() + 1;
+  EXPECT_GT(cells, 1u);
+  EXPECT_EQ(crack["lines"], cells);
+  for (const char* a : {"opening_mm", "traction_MPa", "damage"}) EXPECT_EQ(crack["cell_data"][a]["tuples"], cells) << a;
+  const auto& w = crack["cell_data"]["opening_mm"]["range"];
+  EXPECT_GT(w[1].get<double>(), 1e-3);  // opened past a micrometre at 0.2 mm deflection, beyond the peak
+  EXPECT_LT(w[1].get<double>(), j["w_max_mm"].get<double>() * 2);
+  EXPECT_LE(crack["cell_data"]["traction_MPa"]["range"][1].get<double>(), 2.4 * (1 + 1e-9));
+  EXPECT_EQ(crack["cell_data"]["damage"]["range"][1].get<double>(), 1.0);
+  EXPECT_GE(crack["cell_data"]["damage"]["range"][0].get<double>(), 0.0);
+  EXPECT_EQ(crack["bounds"][0].get<double>(), 0.225);  // vertical at mid-span, from the mouth
+  EXPECT_EQ(crack["bounds"][2].get<double>(), 0.0);
+}
+
+// --from the lab-data file gives the law what the file holds (f_c: the bilinear law's beta_t by Eq. (22)) and the same
+// run spelled out option by option gives the same bits; a different f_c reaches the law and moves the curve; the law's
+// own constants come from the registry (alpha_t = 0.14) unless an option names them.
+TEST(MwEfg, LabDataReachesTheLawAsTheExplicitOptionsDo) {
+  TempDir dir;
+  const fs::path lab = fs::path(MESOWAVE_SOURCE_DIR) / "lab-data/shock-concrete/three-point-bending.toml";
+  const std::vector<std::string> run = {"bending", "--spacing-mm", "10", "--max-deflection-mm", "0.2", "--steps", "8",
+                                        "--fem-refinement", "0"};
+  auto bending = [&](const std::string& name, std::vector<std::string> extra, const std::string& law = "bilinear") {
+    auto args = run;
+    args.insert(args.end(), {"--law", law});
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.insert(args.end(), {"--curve", (dir / (name + ".csv")).string(), "--out", (dir / (name + ".json")).string()});
+    const auto r = run_tool("mw-efg", args);
+    EXPECT_EQ(r.exit_status, 0) << name << ": " << r.err;
+    return json::parse(read_file(dir / (name + ".json")));
+  };
+  const json from = bending("from", {"--from", lab.string()});
+  const json spelled = bending("spelled", {"--E-GPa", "20", "--nu", "0.2", "--f-t-MPa", "2.4", "--G-f-N-m", "113",
+                                           "--span-mm", "450", "--depth-mm", "100", "--notch-mm", "50", "--thickness-mm",
+                                           "100", "--f-c-MPa", "22.6", "--alpha-t", "0.14"});
+  const json strong = bending("strong", {"--from", lab.string(), "--f-c-MPa", "50"});
+  EXPECT_EQ(read_file(dir / "from.csv"), read_file(dir / "spelled.csv"));
+  for (const char* key : {"material", "geometry_mm", "law_parameters", "peak_load_N", "work_of_fracture_Nmm", "dissipated_Nmm"})
+    EXPECT_EQ(from[key], spelled[key]) << key;
+  EXPECT_NEAR(from["material"]["f_c_MPa"].get<double>(), 22.6, 1e-12);
+  EXPECT_EQ(from["law_parameters"]["alpha_t"], 0.14);
+  EXPECT_EQ(from["law_parameters"]["beta_t"], 0.25);  // Eq. (22) below 30 MPa
+  EXPECT_EQ(from["law_keys"].size(), 0u);             // alpha_t from the registry's one default
+  EXPECT_NEAR(strong["law_parameters"]["beta_t"].get<double>(), 0.22, 1e-12);  // 0.25 - 0.0015 (50 - 30)
+  EXPECT_NE(read_file(dir / "from.csv"), read_file(dir / "strong.csv"));
+  // the exponential law takes the same file: f_c is no concern of it, alpha is the registry's
+  const json exponential = bending("exponential", {"--from", lab.string()}, "exponential");
+  EXPECT_EQ(exponential["law_parameters"]["alpha"], 2.0);
+  EXPECT_NEAR(exponential["w_max_mm"].get<double>(), 3 * 113.0 / 2.4e6 * 1e3, 1e-12);  // Eq. (20)
 }
 
 TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
@@ -99,7 +151,12 @@ TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
       {{"bending", "--f-t-MPa", "-1"}, "f_t"},
       {{"bending", "--support-scale", "0.5", "--fem-refinement", "0"}, "nodes reach"},  // a support with too few nodes
       {{"bending", "--law", "linear"}, "linear"},
-      {{"bending", "--law-key", "alpha"}, "alpha"},
+      {{"bending", "--law", "bilinear", "--alpha", "3"}, "unknown key alpha"},  // a key of the other law
+      {{"bending", "--alpha", "0"}, "alpha (0)"},
+      {{"bending", "--law", "bilinear", "--f-c-MPa", "-30"}, "f_c (-30 MPa)"},
+      {{"bending", "--notch-x-mm", "460"}, "notch: point 0 (0.46, 0) m lies outside the body"},  // a crack outside the body
+      {{"bending", "--notch-x-mm", "0"}, "lies on the boundary"},
+      {{"bending", "--notch-x-mm", "150", "--spacing-mm", "10"}, "node column at x = 0.15 m"},
   };
   for (const auto& c : cases) {
     TempDir dir;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "mesowave/core/format.hpp"
 #include "mesowave/efg/cohesive_law.hpp"
 #include "support/input_error.hpp"
 
@@ -81,12 +82,30 @@ TEST(CohesiveLaw, BilinearWmaxKinkAndEnergy) {
   // Eq. (22): f_c enters only through beta_t
   EXPECT_DOUBLE_EQ(bilinear_beta_t(25e6), 0.25);
   EXPECT_NEAR(bilinear_beta_t(50e6), 0.25 - 0.0015 * 20, 1e-15);
-  auto strong = make_cohesive_law("bilinear", beam({{"f_c_Pa", 50e6}}));
+  CohesiveParameters strong_concrete = beam();
+  strong_concrete.f_c_Pa = 50e6;  // a concrete property, not a key of the law
+  auto strong = make_cohesive_law("bilinear", strong_concrete);
   EXPECT_NEAR(dynamic_cast<const BilinearCohesiveLaw&>(*strong).beta_t(), 0.22, 1e-15);
   EXPECT_NEAR(strong->w_max_m(), 2 * G_f / (f_t * (0.14 + 0.22)), 1e-18);
   EXPECT_NEAR(integrate([&](double w) { return strong->traction_Pa(w); }, 0, 0.14 * strong->w_max_m(), 2) +
                   integrate([&](double w) { return strong->traction_Pa(w); }, 0.14 * strong->w_max_m(), strong->w_max_m(), 2),
               G_f, 1e-9);
+  const auto parameters = strong->parameters();
+  ASSERT_EQ(parameters.size(), 2u);
+  EXPECT_EQ(parameters.at("alpha_t"), 0.14);
+  EXPECT_NEAR(parameters.at("beta_t"), 0.22, 1e-15);
+  // below 30 MPa (the beam's 22.6 MPa, lab-data) the same as no f_c; f_c out of Eq. (22)'s useful range refused
+  strong_concrete.f_c_Pa = 22.6e6;
+  EXPECT_DOUBLE_EQ(dynamic_cast<const BilinearCohesiveLaw&>(*make_cohesive_law("bilinear", strong_concrete)).beta_t(), 0.25);
+  for (double f_c : {0.0, -5e6, 200e6}) {
+    strong_concrete.f_c_Pa = f_c;
+    EXPECT_NE(test::input_error_of([&] { make_cohesive_law("bilinear", strong_concrete); }).find("f_c (" + format_number(f_c * 1e-6) + " MPa)"),
+              std::string::npos);
+  }
+  // the exponential law has no use for f_c and takes it (a lab-data file gives it for either law)
+  EXPECT_EQ(make_cohesive_law("exponential", strong_concrete)->parameters(), (std::map<std::string, double>{{"alpha", 2.0}}));
+  EXPECT_NE(test::input_error_of([] { make_cohesive_law("bilinear", beam({{"f_c_Pa", 50e6}})); }).find("unknown key f_c_Pa"),
+            std::string::npos);
 }
 
 TEST(CohesiveLaw, TangentsAgainstFiniteDifferences) {

@@ -86,6 +86,46 @@ TEST(Crack, AddExtendAndVersion) {
   EXPECT_NE(test::input_error_of([] { parse_crack_weight_method("opaque"); }).find("'opaque'"), std::string::npos);
 }
 
+// A crack as the user places it must lie in the body; only its mouth may touch the boundary, on the face where it
+// opens (an edge notch from the bottom face). The body [0, 0.3] x [0, 0.2] m.
+TEST(Crack, APolylineThatLeavesTheBodyOrStartsOutsideIsRefused) {
+  const Rect body{0, 0, kLx, kLy};
+  auto error = [&](std::vector<Vec2> line, BodyFace mouth) {
+    return test::input_error_of([&] { require_crack_inside(line, body, mouth, "notch"); });
+  };
+  // legal: an edge notch opening on the bottom face, a kinked one, an interior crack
+  EXPECT_EQ(error({Vec2(0.15, 0), Vec2(0.15, 0.05)}, BodyFace::bottom), "");
+  EXPECT_EQ(error({Vec2(0.15, 0), Vec2(0.15, 0.05), Vec2(0.2, 0.19)}, BodyFace::bottom), "");
+  EXPECT_EQ(error({Vec2(0.3, 0.1), Vec2(0.2, 0.1)}, BodyFace::right), "");
+  EXPECT_EQ(error({Vec2(0.1, 0.1), Vec2(0.2, 0.1)}, BodyFace::none), "");
+  // starts outside (below the bottom face; beyond the right end)
+  EXPECT_EQ(error({Vec2(0.15, -0.01), Vec2(0.15, 0.05)}, BodyFace::bottom),
+            "notch: point 0 (0.15, -0.01) m lies outside the body [0, 0.3] x [0, 0.2] m");
+  EXPECT_EQ(error({Vec2(0.35, 0), Vec2(0.35, 0.05)}, BodyFace::bottom),
+            "notch: point 0 (0.35, 0) m lies outside the body [0, 0.3] x [0, 0.2] m");
+  // leaves the body: a point beyond the top face or the right end, after a legal start
+  EXPECT_EQ(error({Vec2(0.15, 0), Vec2(0.15, 0.05), Vec2(0.15, 0.25)}, BodyFace::bottom),
+            "notch: point 2 (0.15, 0.25) m lies outside the body [0, 0.3] x [0, 0.2] m");
+  EXPECT_NE(error({Vec2(0.15, 0), Vec2(0.31, 0.1)}, BodyFace::bottom).find("point 1 (0.31, 0.1) m lies outside"),
+            std::string::npos);
+  // touches the boundary elsewhere: its tip on the top face (a cut through the depth), back on the bottom face, a
+  // mouth at a corner or on a face it does not open on, or a mouth when none is allowed
+  EXPECT_EQ(error({Vec2(0.15, 0), Vec2(0.15, 0.2)}, BodyFace::bottom),
+            "notch: point 1 (0.15, 0.2) m lies on the boundary of the body [0, 0.3] x [0, 0.2] m (only the first "
+            "point may, on the bottom face where the crack opens)");
+  EXPECT_NE(error({Vec2(0.1, 0), Vec2(0.15, 0.05), Vec2(0.2, 0)}, BodyFace::bottom).find("point 2"), std::string::npos);
+  EXPECT_NE(error({Vec2(0, 0), Vec2(0.05, 0.05)}, BodyFace::bottom).find("point 0 (0, 0) m lies on the boundary"),
+            std::string::npos);
+  EXPECT_NE(error({Vec2(0, 0.1), Vec2(0.05, 0.1)}, BodyFace::bottom).find("point 0 (0, 0.1) m lies on the boundary"),
+            std::string::npos);
+  EXPECT_EQ(error({Vec2(0.15, 0), Vec2(0.15, 0.05)}, BodyFace::none),
+            "notch: point 0 (0.15, 0) m lies on the boundary of the body [0, 0.3] x [0, 0.2] m (the crack must lie inside)");
+  // within the tolerance (1e-9 of the larger side) a point on a face counts as on it
+  EXPECT_EQ(error({Vec2(0.15, -1e-11), Vec2(0.15, 0.05)}, BodyFace::bottom), "");
+  EXPECT_NE(error({Vec2(0.15, 0), Vec2(0.15, std::nan(""))}, BodyFace::bottom).find("not finite"), std::string::npos);
+  EXPECT_NE(error({Vec2(0.15, 0)}, BodyFace::bottom).find("1 points"), std::string::npos);
+}
+
 TEST(Crack, WeightDistancesMatchTheirClosedForms) {
   const CrackSet cracks = straight_crack();
   const Vec2 node(0, -1), x(0, 1);  // s0 = 2, s1 = s2 = sqrt 2 around the tip (1, 0)

@@ -45,6 +45,7 @@ TEST(VtkOutput, SeriesIsReadBackByVtk) {
   cracks.polylines = {{{0.1, 0.0}, {0.1, 0.02}, {0.1, 0.03}}, {{0.2, 0.0}, {0.21, 0.01}}};
   cracks.opening_m = {2e-5, 1e-5, 3e-6};
   cracks.traction_Pa = {0.5e6, 1.2e6, 2.0e6};
+  cracks.damage = {0.8, 0.5, 0.0};
   series.add(0.0, nodes(0.0), efg::CrackSnapshot{});
   series.add(1e-4, nodes(1.0), cracks);
   const fs::path pvd = series.finish();
@@ -78,9 +79,14 @@ TEST(VtkOutput, SeriesIsReadBackByVtk) {
   const json& k = sets[3];
   EXPECT_EQ(k["points"], 5);
   EXPECT_EQ(k["lines"], 3);
-  EXPECT_EQ(k["cell_data"]["opening"]["tuples"], 3);
-  EXPECT_DOUBLE_EQ(k["cell_data"]["opening"]["range"][1].get<double>(), 2e-5);
-  EXPECT_DOUBLE_EQ(k["cell_data"]["traction"]["range"][0].get<double>(), 0.5e6);
+  // the crack's cell data in the units its name says: 2e-5 m = 0.02 mm, 0.5e6 Pa = 0.5 MPa
+  EXPECT_EQ(k["cell_data"]["opening_mm"]["tuples"], 3);
+  EXPECT_DOUBLE_EQ(k["cell_data"]["opening_mm"]["range"][0].get<double>(), 3e-3);
+  EXPECT_DOUBLE_EQ(k["cell_data"]["opening_mm"]["range"][1].get<double>(), 2e-2);
+  EXPECT_DOUBLE_EQ(k["cell_data"]["traction_MPa"]["range"][0].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(k["cell_data"]["traction_MPa"]["range"][1].get<double>(), 2.0);
+  EXPECT_EQ(k["cell_data"]["damage"]["tuples"], 3);
+  EXPECT_DOUBLE_EQ(k["cell_data"]["damage"]["range"][1].get<double>(), 0.8);
   EXPECT_EQ(sets[1]["points"], 0);  // no crack yet: an empty but valid file
 }
 
@@ -102,5 +108,8 @@ TEST(VtkOutput, MismatchedArraysAreRefused) {
   efg::CrackSnapshot c;
   c.polylines = {{{0, 0}, {0, 1}}};
   c.opening_m = {1, 2};
+  EXPECT_THROW(efg::write_crack_vtp(dir / "c.vtp", c, 0.0), std::invalid_argument);
+  c.opening_m = {1};
+  c.damage = {0.1, 0.2};
   EXPECT_THROW(efg::write_crack_vtp(dir / "c.vtp", c, 0.0), std::invalid_argument);
 }

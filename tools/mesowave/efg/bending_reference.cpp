@@ -16,7 +16,7 @@ namespace {
 double fem_stiffness(const ThreePointBendingOptions& o, int cells_x, int cells_y, double notch_m, std::size_t* nodes) {
   fem::PlaneStaticProblem p;
   const double mid = 0.5 * o.span_m;
-  p.mesh = fem::structured_plane_mesh({0, 0, o.span_m, o.depth_m, cells_x, cells_y, notch_m > 0 ? mid : 0, notch_m});
+  p.mesh = fem::structured_plane_mesh({0, 0, o.span_m, o.depth_m, cells_x, cells_y, notch_m > 0 ? o.notch_position_m() : 0, notch_m});
   p.D = ElasticMaterial2D{o.E_Pa, o.nu, o.thickness_m, 0, PlaneState::plane_stress}.D();
   p.thickness_m = o.thickness_m;
   const double half_plate = 0.5 * o.load_width_m;
@@ -50,8 +50,11 @@ BendingReference three_point_bending_reference(const ThreePointBendingOptions& o
   r.fem_unnotched_N_per_m = fem_stiffness(o, r.fem_cells_x, r.fem_cells_y, 0, &unnotched_nodes);
   const double beam = three_point_bending_deflection_m(1.0, o.span_m, o.depth_m, o.thickness_m, o.E_Pa, o.nu);
   r.beam_theory_N_per_m = 1.0 / beam;
+  // an eccentric notch: the moment at it over the moment at mid-span, squared (the header)
+  const double x = o.notch_position_m(), moment_ratio = std::min(x, o.span_m - x) / (0.5 * o.span_m);
   r.beam_theory_notched_N_per_m =
-      1.0 / (beam + three_point_bending_notch_deflection_m(1.0, o.span_m, o.depth_m, o.notch_m, o.thickness_m, o.E_Pa));
+      1.0 / (beam + moment_ratio * moment_ratio *
+                        three_point_bending_notch_deflection_m(1.0, o.span_m, o.depth_m, o.notch_m, o.thickness_m, o.E_Pa));
   return r;
 }
 

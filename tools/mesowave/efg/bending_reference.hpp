@@ -15,6 +15,9 @@ namespace mesowave::efg {
 struct BendingReference {
   double beam_theory_N_per_m = 0;    ///< unnotched: 1 / three_point_bending_deflection_m per newton
   /// Notched: beam theory plus the notch's LEFM deflection (Tada's fit, three_point_bending_notch_deflection_m).
+  /// An eccentric notch at x (ThreePointBendingOptions::notch_x_m): the crack's compliance is driven by the bending
+  /// moment there, M(x) = P min(x, S - x) / 2, so by Castigliano its share of the mid-span deflection scales with
+  /// (M(x) / M(S/2))^2 - a first estimate (Tada's fit is for the central notch; the shear at x is ignored).
   double beam_theory_notched_N_per_m = 0;
   double fem_unnotched_N_per_m = 0;  ///< the Q4 FEM without the notch (checks the FEM against the beam)
   double fem_notched_N_per_m = 0;    ///< the Q4 FEM of the notched beam: the EFG's elastic stiffness' reference

@@ -17,7 +17,10 @@ ThreePointBendingOptions BendingCommandLine::resolve() const {
   o.load_width_m = load_width_mm * 1e-3;
   o.max_deflection_m = max_deflection_mm * 1e-3;
   o.crack_method = parse_crack_weight_method(crack_weight);
-  o.law_keys = parse_law_keys(law_keys);
+  if (notch_x_option && notch_x_option->count() > 0) o.notch_x_m = notch_x_mm * 1e-3;
+  if (f_c_option && f_c_option->count() > 0) o.f_c_Pa = f_c_MPa * 1e6;
+  for (const auto& [key, option] : law_key_options)
+    if (option->count() > 0) o.law_keys[key] = law_key_values.at(key);  // the law refuses a key it does not have
   o.validate();
   return o;
 }
@@ -25,14 +28,29 @@ ThreePointBendingOptions BendingCommandLine::resolve() const {
 void add_bending_options(CLI::App& app, BendingCommandLine& v) {
   ThreePointBendingOptions& o = v.options;
   app.add_option("--law", o.law, "Cohesive law: exponential (Eqs. 19-20) | bilinear (Eqs. 21-23)")->capture_default_str();
-  app.add_option("--law-key", v.law_keys, "A law's own key, KEY=VALUE (exponential: alpha; bilinear: alpha_t, f_c_Pa)");
+  for (const auto& law : cohesive_laws())
+    for (const auto& key : law.keys) {
+      if (v.law_key_options.count(key.key)) continue;  // a key two laws share: one option
+      v.law_key_values[key.key] = key.fallback;
+      v.law_key_options[key.key] =
+          app.add_option("--" + law_key_option_name(key), v.law_key_values[key.key],
+                         "The " + law.name + " law's " + key.key + ": " + key.meaning + " [default " +
+                             format_number(key.fallback) + ", in [" + format_number(key.min) + ", " +
+                             format_number(key.max) + "]]");
+    }
   app.add_option("--E-GPa", v.E_GPa, "Young's modulus")->capture_default_str();
   app.add_option("--nu", o.nu, "Poisson's ratio")->capture_default_str();
   app.add_option("--f-t-MPa", v.f_t_MPa, "Tensile strength f_t")->capture_default_str();
   app.add_option("--G-f-N-m", o.G_f_J_m2, "Fracture energy G_f [N/m]")->capture_default_str();
+  v.f_c_option = app.add_option("--f-c-MPa", v.f_c_MPa,
+                                "Compressive strength f_c: the bilinear law's beta_t by Eq. (22) (not given: 0.25, "
+                                "Eq. (22) below 30 MPa; the exponential law does not use it)");
   app.add_option("--span-mm", v.span_mm, "Span between the supports (the model's length)")->capture_default_str();
   app.add_option("--depth-mm", v.depth_mm, "Beam depth")->capture_default_str();
-  app.add_option("--notch-mm", v.notch_mm, "Central notch depth from the bottom face")->capture_default_str();
+  app.add_option("--notch-mm", v.notch_mm, "Notch depth from the bottom face")->capture_default_str();
+  v.notch_x_option = app.add_option("--notch-x-mm", v.notch_x_mm,
+                                    "Where the notch opens on the bottom face, from the left support (default: mid-span; "
+                                    "the load stays at mid-span; a quarter cell off the node columns)");
   app.add_option("--thickness-mm", v.thickness_mm, "Out-of-plane thickness (plane stress)")->capture_default_str();
   app.add_option("--load-width-mm", v.load_width_mm, "Distance of the two load points (a loading plate's edges)")
       ->capture_default_str();
@@ -57,22 +75,14 @@ void add_bending_options(CLI::App& app, BendingCommandLine& v) {
                  "Q4 reference: cells of load width / (2 x this) (0: no FEM run)")->capture_default_str();
 }
 
-std::map<std::string, double> parse_law_keys(const std::vector<std::string>& texts) {
-  std::map<std::string, double> keys;
-  for (const auto& t : texts) {
-    const auto eq = t.find('=');
-    std::size_t used = 0;
-    double value = 0;
-    try {
-      if (eq != std::string::npos) value = std::stod(t.substr(eq + 1), &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (eq == std::string::npos || eq == 0 || used == 0 || used != t.size() - eq - 1)
-      throw InputError("--law-key '" + t + "' must be KEY=VALUE with a number (e.g. alpha=2)");
-    keys[t.substr(0, eq)] = value;
-  }
-  return keys;
+std::string law_key_option_name(const CohesiveKeySpec& key) {
+  std::string name = key.key;
+  const std::string suffix = "_" + key.unit;
+  const bool ends_in_unit = name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+  if (!key.unit.empty() && key.unit != "1" && !ends_in_unit) name += suffix;
+  for (char& c : name)
+    if (c == '_') c = '-';
+  return name;
 }
 
 BendingOutputs three_point_bending_outputs(const ThreePointBendingOptions& o, const ThreePointBendingResult& r,
@@ -80,10 +90,14 @@ BendingOutputs three_point_bending_outputs(const ThreePointBendingOptions& o, co
   BendingOutputs out;
   nlohmann::ordered_json& j = out.summary;
   j["law"] = o.law;
-  j["law_keys"] = o.law_keys;
+  j["law_keys"] = o.law_keys;  // given; the rest are the law's fallbacks
+  j["law_parameters"] = r.law_parameters;
+  j["w_max_mm"] = r.w_max_m * 1e3;
   j["geometry_mm"] = {{"span", o.span_m * 1e3}, {"depth", o.depth_m * 1e3}, {"notch", o.notch_m * 1e3},
+                      {"notch_x", o.notch_position_m() * 1e3},
                       {"thickness", o.thickness_m * 1e3}};
   j["material"] = {{"E_GPa", o.E_Pa * 1e-9}, {"nu", o.nu}, {"f_t_MPa", o.f_t_Pa * 1e-6}, {"G_f_N_m", o.G_f_J_m2}};
+  if (o.f_c_Pa) j["material"]["f_c_MPa"] = *o.f_c_Pa * 1e-6;
   j["discretisation"] = {{"spacing_mm", o.spacing_m * 1e3}, {"load_width_mm", o.load_width_m * 1e3}, {"gauss", o.gauss}, {"support_scale", o.support_scale},
                          {"cohesive_gauss", o.cohesive_gauss}, {"steps", o.steps}, {"step_ratio", o.step_ratio},
                          {"ligament_interface", o.ligament_interface}, {"stop_load_fraction", o.stop_load_fraction},
@@ -123,15 +137,13 @@ BendingOutputs three_point_bending_outputs(const ThreePointBendingOptions& o, co
 
   out.curve_header = {"deflection_mm", "load_N", "iterations", "crack_tip_mm", "dissipated_Nmm"};
   io::PlotSeries series{o.law + " law (EFG)", {}, {}, "linespoints lw 2 pt 7 ps 0.5"};
-  const double mid = 0.5 * o.span_m;
-  for (const auto& p : r.curve) {
+  for (std::size_t i = 0; i < r.curve.size(); ++i) {
+    const auto& p = r.curve[i];
     out.curve_rows.push_back({format_number(p.deflection_m * 1e3), format_number(p.load_N), std::to_string(p.iterations),
                               format_number(p.crack_tip_y_m * 1e3), format_number(p.dissipated_J * 1e3)});
     series.x.push_back(p.deflection_m * 1e3);
     series.y.push_back(p.load_N * 1e-3);
-    CrackSnapshot c;
-    c.polylines = {{Eigen::Vector2d(mid, 0), Eigen::Vector2d(mid, std::max(p.crack_tip_y_m, o.notch_m))}};
-    out.crack_steps.emplace_back(p.deflection_m * 1e3, c);
+    if (i < r.crack_steps.size()) out.crack_steps.emplace_back(p.deflection_m * 1e3, r.crack_steps[i]);
   }
   out.crack_header = {"x_mm", "y_mm"};
   for (const auto& x : r.crack_path) out.crack_rows.push_back({format_number(x.x() * 1e3), format_number(x.y() * 1e3)});

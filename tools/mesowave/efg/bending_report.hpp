@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "mesowave/efg/bending_reference.hpp"
+#include "mesowave/efg/cohesive_law.hpp"
 #include "mesowave/efg/three_point_bending.hpp"
 #include "mesowave/efg/vtk_output.hpp"
 #include "mesowave/io/plot.hpp"
@@ -23,7 +24,7 @@ struct BendingOutputs {
   std::vector<std::string> crack_header;  ///< x_mm, y_mm
   std::vector<std::vector<std::string>> crack_rows;
   io::PlotSpec plot;                      ///< load [kN] against deflection [mm]
-  /// Per curve point: the crack as the run had it (the notch and the grown part up to the tip).
+  /// Per curve point, when the run kept snapshots: the crack as the run had it (ThreePointBendingResult::crack_steps).
   std::vector<std::pair<double, CrackSnapshot>> crack_steps;  ///< (deflection [mm], crack)
 };
 
@@ -34,7 +35,13 @@ struct BendingCommandLine {
   ThreePointBendingOptions options;  ///< nu, G_f, law, gauss, support_scale, steps are bound directly
   double E_GPa = 20, f_t_MPa = 2.4, span_mm = 450, depth_mm = 100, notch_mm = 50, thickness_mm = 100;
   double spacing_mm = 5, load_width_mm = 10, max_deflection_mm = 1.0;
-  std::vector<std::string> law_keys;   ///< KEY=VALUE
+  double notch_x_mm = 0, f_c_MPa = 0;  ///< taken only when given (notch_x_option, f_c_option)
+  const CLI::Option* notch_x_option = nullptr;
+  const CLI::Option* f_c_option = nullptr;
+  /// One option per key the law registry declares (cohesive_laws(): --alpha, --alpha-t), so that a lab-data file
+  /// fills them as it fills --f-t-MPa; a key not given is left to the law's fallback (the one place it lives).
+  std::map<std::string, double> law_key_values;
+  std::map<std::string, const CLI::Option*> law_key_options;
   std::string crack_weight = "visibility";
   int fem_refinement = 2;              ///< 0: no FEM reference
   /// The options in SI, validated (InputError naming the value).
@@ -42,9 +49,9 @@ struct BendingCommandLine {
 };
 void add_bending_options(CLI::App& app, BendingCommandLine& values);
 
-/// The cohesive law's own keys from KEY=VALUE texts (mw-efg --law-key alpha=2); the law checks
-/// names and ranges. InputError for a text without '=' or a value that is not a number.
-std::map<std::string, double> parse_law_keys(const std::vector<std::string>& texts);
+/// The option a law key is given by: the key, its unit appended unless it is "1" or the key ends in it,
+/// '_' as '-' (alpha_t -> alpha-t): the name a lab-data entry [alpha_t] fills (docs/formats.md, --from).
+std::string law_key_option_name(const CohesiveKeySpec& key);
 
 /// `reference` may be null (no FEM run asked for).
 BendingOutputs three_point_bending_outputs(const ThreePointBendingOptions& options, const ThreePointBendingResult& result,

@@ -89,6 +89,20 @@ void CohesiveInterface::assemble(const Eigen::VectorXd& u, Eigen::VectorXd& forc
   }
 }
 
+std::vector<CohesivePointState> CohesiveInterface::point_states(const Eigen::VectorXd& u) const {
+  std::vector<CohesivePointState> out;
+  out.reserve(points_.size());
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    CohesivePointState s;
+    s.opening_m = opening_m(k, u);
+    s.traction_Pa = cohesive_response(*law_, s.opening_m, points_[k].w_hist_m, w_initial_).traction_Pa;
+    const double reached = std::max(points_[k].w_hist_m, s.opening_m);
+    s.damage = reached <= w_initial_ ? 0.0 : 1.0 - law_->traction_Pa(reached) / law_->f_t_Pa();
+    out.push_back(s);
+  }
+  return out;
+}
+
 void CohesiveInterface::commit(const Eigen::VectorXd& u) {
   for (std::size_t k = 0; k < points_.size(); ++k) points_[k].w_hist_m = std::max(points_[k].w_hist_m, opening_m(k, u));
 }

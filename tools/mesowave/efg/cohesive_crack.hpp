@@ -44,6 +44,15 @@ struct CohesivePoint {
   std::size_t segment = 0;
 };
 
+/// What a cohesive point carries at a displacement (ParaView's crack cell data, efg/vtk_output.hpp).
+struct CohesivePointState {
+  double opening_m = 0;    ///< normal opening w = [u] . n (< 0: the faces pressed together)
+  double traction_Pa = 0;  ///< the normal traction of cohesive_response at w with the committed history
+  /// 1 - sigma_env(max(w_hist, w)) / f_t: the share of the strength lost (0 on the initial secant, 1 once
+  /// traction-free: w_hist >= w_max).
+  double damage = 0;
+};
+
 class CohesiveInterface {
 public:
   /// `law` is shared by every point; `w_initial_m` the initial opening (cohesive_law.hpp).
@@ -57,6 +66,8 @@ public:
   void assemble(const Eigen::VectorXd& u, Eigen::VectorXd& force, std::vector<Eigen::Triplet<double>>* triplets) const;
   /// Normal opening at point p.
   double opening_m(std::size_t p, const Eigen::VectorXd& u) const;
+  /// Every point's state at u, in points() order.
+  std::vector<CohesivePointState> point_states(const Eigen::VectorXd& u) const;
   /// The history moves on: w_hist = max(w_hist, w).
   void commit(const Eigen::VectorXd& u);
   /// Energy dissipated so far [J]: sum over points of the area under the envelope up to w_hist, minus the

@@ -37,20 +37,25 @@ std::vector<CohesiveLawEntry> build_registry() {
   laws.push_back({"exponential",
                   "sigma = f_t (1 - w/w_max)^alpha, w_max = (1 + alpha) G_f / f_t, Eqs. (19)-(20)",
                   {{"alpha", "1", 0.1, 20, 2.0,
-                    "exponent of Eq. (19); not given in the paper (assumed: 2, a convex curve with w_max = 3 G_f/f_t)"}},
+                    "exponent of Eq. (19); not given in the paper, assumed 2: a convex curve like the measured softening "
+                    "curves of concrete, w_max = 3 G_f / f_t by Eq. (20), and a lower initial slope than the bilinear "
+                    "law's, so that it carries more load just after the peak, as the paper finds (Section 4.1)"}},
                   [](const CohesiveParameters& p) -> std::unique_ptr<CohesiveLaw> {
                     auto k = read_keys(cohesive_law_entry("exponential"), p);
                     return std::make_unique<ExponentialCohesiveLaw>(p.f_t_Pa, p.G_f_J_m2, k["alpha"]);
                   }});
   laws.push_back({"bilinear",
                   "Akkermann: f_t to beta_t f_t at alpha_t w_max, then to 0 at w_max = 2 G_f / (f_t (alpha_t + beta_t)), "
-                  "Eqs. (21)-(23)",
-                  {{"alpha_t", "1", 0.01, 0.99, 0.14, "kink opening over w_max, Eq. (21) (Roelfstra: 0.14)"},
-                   {"f_c_Pa", "Pa", 0, 190e6, 0, "compressive strength; enters only beta_t, Eq. (22) (0: below 30 MPa)"}},
+                  "Eqs. (21)-(23); beta_t from the concrete's f_c by Eq. (22)",
+                  {{"alpha_t", "1", 0.01, 0.99, 0.14, "kink opening over w_max, Eq. (21) (the paper after Roelfstra: 0.14)"}},
                   [](const CohesiveParameters& p) -> std::unique_ptr<CohesiveLaw> {
                     auto k = read_keys(cohesive_law_entry("bilinear"), p);
-                    return std::make_unique<BilinearCohesiveLaw>(p.f_t_Pa, p.G_f_J_m2, k["alpha_t"],
-                                                                 bilinear_beta_t(k["f_c_Pa"]));
+                    double beta_t = 0.25;  // Eq. (22) below 30 MPa
+                    if (p.f_c_Pa && !(*p.f_c_Pa > 0 && *p.f_c_Pa <= 190e6))
+                      throw InputError("cohesive law bilinear: f_c (" + format_number(*p.f_c_Pa * 1e-6) +
+                                       " MPa) must be in (0, 190] MPa (Eq. (22) keeps beta_t above 0.01 there)");
+                    if (p.f_c_Pa) beta_t = bilinear_beta_t(*p.f_c_Pa);
+                    return std::make_unique<BilinearCohesiveLaw>(p.f_t_Pa, p.G_f_J_m2, k["alpha_t"], beta_t);
                   }});
   return laws;
 }

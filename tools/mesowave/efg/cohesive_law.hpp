@@ -22,18 +22,24 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace mesowave::efg {
 
-/// What every law takes. SI: Pa, J/m^2 = N/m. `keys` holds the law's own keys
-/// (CohesiveLawEntry::keys; absent keys take their fallback).
+/// What every law takes. SI: Pa, J/m^2 = N/m. The concrete's properties (f_t, G_f, f_c: a lab-data
+/// file gives them, lab-data/shock-concrete/three-point-bending.toml) apart from the law's own
+/// shape parameters in `keys` (CohesiveLawEntry::keys; absent keys take their fallback, the one place
+/// their default lives).
 struct CohesiveParameters {
   double f_t_Pa = 0;     ///< tensile strength f_t (f_t,dyn, f_ct in the paper: the static one here)
   double G_f_J_m2 = 0;   ///< fracture energy G_f, Eq. (20) / Eq. (23)
   std::map<std::string, double> keys;
+  /// Compressive strength f_c: the bilinear law's beta_t by Eq. (22) - the paper's input, beta_t is derived
+  /// (the exponential law does not use it). Unset: beta_t = 0.25, Eq. (22)'s value for f_c below 30 MPa.
+  std::optional<double> f_c_Pa;
 };
 
 class CohesiveLaw {
@@ -44,6 +50,8 @@ public:
   virtual double w_max_m() const = 0;                ///< Eq. (20) / Eq. (23)
   virtual double traction_Pa(double w_m) const = 0;  ///< on the softening envelope, 0 <= w; 0 beyond w_max
   virtual double tangent_Pa_per_m(double w_m) const = 0;  ///< d traction / dw on the envelope
+  /// The shape parameters the law was made with, derived ones included (alpha; alpha_t, beta_t): for the record.
+  virtual std::map<std::string, double> parameters() const = 0;
 };
 
 /// One law's own key: the unit is in its name (f_c_Pa); values outside [min, max] are an InputError.
@@ -66,7 +74,8 @@ struct CohesiveLawEntry {
 const std::vector<CohesiveLawEntry>& cohesive_laws();
 /// The entry named `name`; InputError "cohesive law (\"x\") must be exponential or bilinear".
 const CohesiveLawEntry& cohesive_law_entry(std::string_view name);
-/// InputError for f_t <= 0, G_f <= 0, an unknown key or a key out of its range (naming the value).
+/// InputError for f_t <= 0, G_f <= 0, f_c <= 0 or above 190 MPa (where Eq. (22) gives beta_t <= 0.01), an
+/// unknown key or a key out of its range (naming the value).
 std::unique_ptr<CohesiveLaw> make_cohesive_law(std::string_view name, const CohesiveParameters& parameters);
 
 /// The exponential (power) law, Eqs. (19)-(20): sigma = f_t (1 - w/w_max)^alpha, w_max = (1 + alpha) G_f / f_t.
@@ -78,6 +87,7 @@ public:
   double w_max_m() const override { return w_max_; }
   double traction_Pa(double w_m) const override;
   double tangent_Pa_per_m(double w_m) const override;
+  std::map<std::string, double> parameters() const override { return {{"alpha", alpha_}}; }
   double alpha() const { return alpha_; }
 
 private:
@@ -94,6 +104,7 @@ public:
   double w_max_m() const override { return w_max_; }
   double traction_Pa(double w_m) const override;
   double tangent_Pa_per_m(double w_m) const override;
+  std::map<std::string, double> parameters() const override { return {{"alpha_t", alpha_t_}, {"beta_t", beta_t_}}; }
   double alpha_t() const { return alpha_t_; }
   double beta_t() const { return beta_t_; }
 

@@ -48,7 +48,48 @@ double polyline_length(const std::vector<Vec2>& p, std::size_t i, std::size_t j)
   return l;
 }
 
+std::string_view face_name(BodyFace f) {
+  switch (f) {
+    case BodyFace::bottom: return "bottom";
+    case BodyFace::right: return "right";
+    case BodyFace::top: return "top";
+    case BodyFace::left: return "left";
+    case BodyFace::none: break;
+  }
+  return "none";
+}
+
 }  // namespace
+
+void require_crack_inside(const std::vector<Vec2>& polyline, const Rect& body, BodyFace mouth, std::string_view what) {
+  const std::string name(what);
+  if (!(body.x1 > body.x0 && body.y1 > body.y0))
+    throw InputError(name + ": the body [" + format_number(body.x0) + ", " + format_number(body.x1) + "] x [" +
+                     format_number(body.y0) + ", " + format_number(body.y1) + "] m is empty");
+  if (polyline.size() < 2)
+    throw InputError(name + ": " + std::to_string(polyline.size()) + " points, a crack needs at least 2");
+  const double tol = 1e-9 * std::max(body.x1 - body.x0, body.y1 - body.y0);
+  const std::string box = "the body [" + format_number(body.x0) + ", " + format_number(body.x1) + "] x [" +
+                          format_number(body.y0) + ", " + format_number(body.y1) + "] m";
+  for (std::size_t k = 0; k < polyline.size(); ++k) {
+    const Vec2& p = polyline[k];
+    const std::string where = name + ": point " + std::to_string(k) + " " + point_text(p);
+    if (!p.allFinite()) throw InputError(where + " is not finite");
+    // signed distances inside each face (> 0: inside)
+    const double d[4] = {p.y() - body.y0, body.x1 - p.x(), body.y1 - p.y(), p.x() - body.x0};  // bottom, right, top, left
+    const double inner = *std::min_element(d, d + 4);
+    if (inner < -tol) throw InputError(where + " lies outside " + box);
+    if (inner > tol) continue;
+    // on the boundary: only the mouth, on its own face (not at a corner, where it touches another face too)
+    const int on = int(std::count_if(d, d + 4, [&](double x) { return std::abs(x) <= tol; }));
+    const bool at_mouth = k == 0 && mouth != BodyFace::none && on == 1 && std::abs(d[int(mouth) - 1]) <= tol;
+    if (!at_mouth)
+      throw InputError(where + " lies on the boundary of " + box +
+                       (mouth == BodyFace::none ? std::string(" (the crack must lie inside)")
+                                                : " (only the first point may, on the " + std::string(face_name(mouth)) +
+                                                      " face where the crack opens)"));
+  }
+}
 
 std::size_t CrackSet::add(Crack crack) {
   const std::size_t index = cracks_.size();

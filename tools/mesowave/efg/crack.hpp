@@ -24,6 +24,19 @@
 namespace mesowave::efg {
 
 enum class CrackWeightMethod { visibility, diffraction, transparency };
+
+/// A face of a rectangular body, where a crack may open (the mouth of a notch).
+enum class BodyFace { none, bottom, right, top, left };
+
+/// A crack or notch as the user places it must lie in the body: InputError, one line naming the point
+/// (its index and coordinates [m]) and the body, when a point lies outside `body` or on its boundary.
+/// The one exception is the first point (the mouth), which may lie on the face `mouth` - an edge
+/// notch opens there; with BodyFace::none it must be inside too. The body is convex, so a polyline
+/// whose points are inside stays inside: no segment can leave it between them. Touching is judged
+/// within 1e-9 of the body's larger side. `what` starts the message ("three-point bending: notch").
+/// (Solvers may run a crack's line on beyond a face - the notch below the bottom face so that the
+/// bottom edge's weights are cut too - but that is their construction, not the user's crack.)
+void require_crack_inside(const std::vector<Vec2>& polyline, const Rect& body, BodyFace mouth, std::string_view what);
 /// "visibility" | "diffraction" | "transparency"; InputError otherwise.
 CrackWeightMethod parse_crack_weight_method(std::string_view name);
 std::string_view to_string(CrackWeightMethod method);

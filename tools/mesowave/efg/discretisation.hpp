@@ -14,10 +14,6 @@
 
 namespace mesowave::efg {
 
-struct Rect {
-  double x0, y0, x1, y1;
-};
-
 struct GaussPoint {
   Vec2 x;
   double weight_m2;   ///< Gauss weight times the cell's Jacobian (an area; times t it is a volume)

@@ -7,6 +7,11 @@ namespace mesowave::efg {
 
 using Vec2 = Eigen::Vector2d;
 
+/// An axis-aligned rectangle [x0, x1] x [y0, y1]: a body, a background cell.
+struct Rect {
+  double x0, y0, x1, y1;
+};
+
 /// The straight segment from a to b.
 struct Segment {
   Vec2 a, b;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
@@ -31,14 +32,28 @@ void ThreePointBendingOptions::validate() const {
   positive(notch_m, "notch_m");
   if (!(notch_m < depth_m))
     throw InputError("three-point bending: notch_m (" + text(notch_m) + ") must be less than the depth (" + text(depth_m) + ")");
+  if (notch_x_m) require_finite("three-point bending: notch_x_m", *notch_x_m, "m");
+  require_crack_inside(notch_polyline(), {0, 0, span_m, depth_m}, BodyFace::bottom, "three-point bending: notch");
   positive(E_Pa, "E_Pa");
   if (!(nu > -1 && nu < 0.5)) throw InputError("three-point bending: nu (" + text(nu) + ") must be in (-1, 0.5)");
   positive(f_t_Pa, "f_t_Pa");
   positive(G_f_J_m2, "G_f_J_m2");
+  make_cohesive_law(law, {f_t_Pa, G_f_J_m2, law_keys, f_c_Pa});  // the law checks its name, keys and f_c
   positive(spacing_m, "spacing_m");
   if (!(spacing_m <= 0.5 * (depth_m - notch_m)))
     throw InputError("three-point bending: spacing_m (" + text(spacing_m) + ") must be at most half the ligament (" +
                      text(0.5 * (depth_m - notch_m)) + ")");
+  {  // the notch line off the node columns (the cell corners i span / nx)
+    const double cell = span_m / cells_along_span(), x = notch_position_m();
+    const double column = std::round(x / cell) * cell;
+    if (std::abs(x - column) < 0.25 * cell) {
+      const double centre = column - 0.5 * cell;
+      throw InputError("three-point bending: notch_x_m (" + text(x) + ") lies within a quarter cell (" + text(0.25 * cell) +
+                       " m) of the node column at x = " + text(column) +
+                       " m, which the notch would hide from both sides: place it between the columns, e.g. at the cell "
+                       "centre x = " + text(centre) + " or " + text(centre + cell) + " m");
+    }
+  }
   positive(max_deflection_m, "max_deflection_m");
   if (!(load_width_m > 0 && load_width_m < 0.5 * span_m))
     throw InputError("three-point bending: load_width_m (" + text(load_width_m) + ") must be in (0, span / 2)");
@@ -47,22 +62,26 @@ void ThreePointBendingOptions::validate() const {
   if (steps < 1) throw InputError("three-point bending: steps (" + std::to_string(steps) + ") must be >= 1");
 }
 
+int ThreePointBendingOptions::cells_along_span() const {
+  int nx = std::max(3, static_cast<int>(std::lround(span_m / spacing_m)));
+  return nx % 2 == 0 ? nx + 1 : nx;
+}
+
 ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   o.validate();
-  auto law = std::shared_ptr<const CohesiveLaw>(make_cohesive_law(o.law, {o.f_t_Pa, o.G_f_J_m2, o.law_keys}));
+  auto law = std::shared_ptr<const CohesiveLaw>(make_cohesive_law(o.law, {o.f_t_Pa, o.G_f_J_m2, o.law_keys, o.f_c_Pa}));
 
   // nodes: an odd number of cells along the span (mid-span is a line of cell centres)
-  int nx = std::max(3, static_cast<int>(std::lround(o.span_m / o.spacing_m)));
-  if (nx % 2 == 0) ++nx;
+  const int nx = o.cells_along_span();
   const int ny = std::max(2, static_cast<int>(std::lround(o.depth_m / o.spacing_m)));
   const Discretisation disc = rectangular_grid({0, 0, o.span_m, o.depth_m}, nx, ny, o.gauss);
-  const double h = std::max(o.span_m / nx, o.depth_m / ny), mid = 0.5 * o.span_m;
+  const double h = std::max(o.span_m / nx, o.depth_m / ny), mid = 0.5 * o.span_m, notch_x = o.notch_position_m();
 
   // the notch: a traction-free crack from below the bottom face (so the bottom edge is cut too) to its tip
   CrackSet cracks;
   Crack notch;
-  notch.points = {Vec2(mid, -h), Vec2(mid, o.notch_m)};
+  notch.points = {Vec2(notch_x, -h), Vec2(notch_x, o.notch_m)};
   notch.tip_at_start = false;
   notch.tip_at_end = true;
   const std::size_t crack = cracks.add(notch);
@@ -81,21 +100,36 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
       {Vec2(mid - half_plate, o.depth_m), 1, -1.0, "load point left u_y"},  // both move down by lambda [m]
       {Vec2(mid + half_plate, o.depth_m), 1, -1.0, "load point right u_y"},
   };
-  const ConstraintSet constraints(model, bc);
+  const ConstraintSet notch_constraints(model, bc);
+  // The rows of the supports and load points are the MLS shape functions at those points, so they must see the
+  // cracks the run has: with the ligament interface its line is cut from the start (below), and the load points,
+  // 5 mm either side of it, must not be tied to the nodes across it (that ties the halves together at the top:
+  // a shear key the interface does not have). A grown crack stops half a segment below the top face, where the
+  // stale rows differ only in the nodes the tip region hides (not rebuilt: ConstraintSet has no update).
+  std::optional<ConstraintSet> cut_constraints;
+  const ConstraintSet* active = &notch_constraints;
 
   ThreePointBendingResult result;
+  result.law_parameters = law->parameters();
+  result.w_max_m = law->w_max_m();
   result.nodes = disc.nodes.size();
   result.gauss_points = disc.points.size();
   result.dofs = model.dof_count();
   auto load_of = [&](const Eigen::VectorXd& full_residual) {
-    const auto R = constraints.reactions(full_residual);
+    const auto R = active->reactions(full_residual);
     return -(R[3] + R[4]);
   };
   {
     const auto elastic = solve_linear(model.stiffness(), Eigen::VectorXd::Zero(static_cast<Eigen::Index>(model.dof_count())),
-                                      constraints, 1.0);
+                                      notch_constraints, 1.0);
     result.elastic_stiffness_N_per_m = load_of(model.stiffness() * elastic.u);
   }
+  if (o.ligament_interface) {  // the whole ligament's line cut from the start, on beyond the top face
+    cracks.extend(crack, Vec2(notch_x, o.depth_m + (o.support_scale + 1) * h));
+    model.update_shape_functions();
+    active = &cut_constraints.emplace(model, bc);
+  }
+  const ConstraintSet& constraints = *active;
 
   CohesiveInterface interface(mls, law, o.thickness_m, 1e-6 * h, o.cohesive_gauss);
   CohesiveCrackProblem problem(model, constraints, interface);
@@ -104,13 +138,13 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
   growth.rule = o.growth;
   growth.prescribed = Vec2::UnitY();
   growth.segment_length_m = h;
-  Vec2 tip(mid, o.notch_m);
+  Vec2 tip(notch_x, o.notch_m);
   bool through = false;
-  if (o.ligament_interface) {  // the whole ligament cohesive from the start, its line beyond the top face
-    cracks.extend(crack, Vec2(mid, o.depth_m + (o.support_scale + 1) * h));
+  if (o.ligament_interface) {  // the whole ligament cohesive from the start
     const int n = static_cast<int>(std::ceil((o.depth_m - o.notch_m) / h - 1e-9));
     for (int k = 0; k < n; ++k)
-      interface.add_segment({Vec2(mid, o.notch_m + (o.depth_m - o.notch_m) * k / n), Vec2(mid, o.notch_m + (o.depth_m - o.notch_m) * (k + 1) / n)});
+      interface.add_segment({Vec2(notch_x, o.notch_m + (o.depth_m - o.notch_m) * k / n),
+                             Vec2(notch_x, o.notch_m + (o.depth_m - o.notch_m) * (k + 1) / n)});
     problem.update();
     through = true;
   }
@@ -122,8 +156,36 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
       if (p.w_hist_m > interface.w_initial_m()) y = std::max(y, p.x.y());
     return y;
   };
+  auto crack_snapshot = [&](const Eigen::VectorXd& u) {
+    CrackSnapshot c;
+    const Vec2 n = Vec2::UnitX(), m(notch_x, 0.5 * o.notch_m);  // the normal the cohesive segments have (b - a up)
+    const double eps = 1e-6 * h;  // off the line on each face, as the cohesive points are
+    c.polylines.push_back(o.notch_polyline());
+    c.opening_m.push_back((model.displacement(m + eps * n, u) - model.displacement(m - eps * n, u)).dot(n));
+    c.traction_Pa.push_back(0);
+    c.damage.push_back(1);
+    const auto states = interface.point_states(u);
+    const auto& points = interface.points();
+    std::vector<Vec2> line;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Segment& seg = interface.segments()[points[k].segment];
+      const bool first = k == 0 || points[k - 1].segment != points[k].segment;
+      const bool last = k + 1 == points.size() || points[k + 1].segment != points[k].segment;
+      if (line.empty()) line.push_back(seg.a);
+      // the segments follow each other (a grown segment starts at the last tip), so the pieces do too
+      const double t = (first ? 0.0 : (line.back() - seg.a).norm() / (seg.b - seg.a).norm()) +
+                       points[k].length_weight_m / (seg.b - seg.a).norm();
+      line.push_back(last ? seg.b : Vec2(seg.a + t * (seg.b - seg.a)));
+      c.opening_m.push_back(states[k].opening_m);
+      c.traction_Pa.push_back(states[k].traction_Pa);
+      c.damage.push_back(states[k].damage);
+    }
+    if (!line.empty()) c.polylines.push_back(std::move(line));
+    return c;
+  };
   auto snapshot = [&](const Eigen::VectorXd& u) {
     if (!o.node_snapshots) return;
+    result.crack_steps.push_back(crack_snapshot(u));
     NodeSnapshot n;
     n.positions_m = disc.nodes;
     for (const auto& x : disc.nodes) {
@@ -211,8 +273,8 @@ ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& 
   result.stored_J = problem.stored_energy_J(constraints.expand(v, result.final_deflection_m));
   result.cohesive_points = interface.points().size();
   result.crack_path = cracks.cracks()[crack].points;
-  result.crack_path.front() = Vec2(mid, 0);  // the notch mouth on the bottom face (the polyline starts below it)
-  if (o.ligament_interface) result.crack_path.back() = Vec2(mid, o.depth_m);  // the line runs on beyond the top face
+  result.crack_path.front() = Vec2(notch_x, 0);  // the notch mouth on the bottom face (the polyline starts below it)
+  if (o.ligament_interface) result.crack_path.back() = Vec2(notch_x, o.depth_m);  // the line runs on beyond the top face
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -11,7 +11,8 @@
 // points of the top face load_width_m apart, on either side of mid-span, both
 // moved down by the deflection (the edges of a narrow loading plate: the crack
 // may then reach the top face between them without cutting a load point off). The notch
-// is a traction-free crack on the mid-span line; the crack grows from its tip
+// is a traction-free crack on the mid-span line (or at notch_x_m: an eccentric notch, the load
+// still at mid-span); the crack grows from its tip
 // in segments of one node spacing, vertical as the paper prescribes (the
 // principal directions at mid-span are too sensitive to follow), whenever the
 // St. Venant criterion holds just ahead of the tip, up to half a segment below
@@ -44,6 +45,7 @@
 // Gauss weight: 3.5 % with 4 points on 10 mm segments) x (1 - the initial
 // secant's triangle, f_t w_initial / 2 of G_f); tests/efg/three_point_bending_test.cpp.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,10 +61,16 @@ namespace mesowave::efg {
 struct ThreePointBendingOptions {
   // geometry [m]
   double span_m = 0.450, depth_m = 0.100, notch_m = 0.050, thickness_m = 0.100;
+  /// Where the notch opens on the bottom face, from the left support (unset: mid-span, under the load, as the
+  /// beam was tested). The notch and the crack growing from it are vertical at this x; the load stays at mid-span.
+  /// It must keep a quarter spacing off the node columns (a node on the crack line is hidden from both sides).
+  std::optional<double> notch_x_m;
   // material (Section 4.1)
   double E_Pa = 20e9, nu = 0.20, f_t_Pa = 2.4e6, G_f_J_m2 = 113;
+  /// Compressive strength (CohesiveParameters::f_c_Pa: the bilinear law's beta_t by Eq. (22); unset: below 30 MPa).
+  std::optional<double> f_c_Pa;
   std::string law = "exponential";             ///< cohesive_law.hpp registry name
-  std::map<std::string, double> law_keys;      ///< the law's own keys (alpha; alpha_t, f_c_Pa)
+  std::map<std::string, double> law_keys;      ///< the law's own keys given (alpha; alpha_t), the rest its fallbacks
   // discretisation
   double spacing_m = 0.005;                    ///< target node spacing (the cells along the span: odd, so the nearest odd count)
   int gauss = 2;                               ///< per direction per cell (the paper's 2)
@@ -87,11 +95,19 @@ struct ThreePointBendingOptions {
   /// Stop early when the crack tip has reached its highest point (half a segment below the top face, see the
   /// .cpp) and the load has fallen below this fraction of the peak.
   double stop_load_fraction = 0.005;
-  /// Keep the nodes' displacement u^h and stress at every curve point (ParaView snapshots of the run).
+  /// Keep the nodes' displacement u^h and stress and the crack (opening, traction, damage) at every curve point
+  /// (ParaView snapshots of the run).
   bool node_snapshots = false;
-  /// InputError naming the value: sizes <= 0, a notch not inside the depth, nu outside (-1, 0.5), f_t or G_f <= 0,
-  /// steps < 1, spacing above the ligament.
+  /// InputError naming the value: sizes <= 0, a notch not inside the depth, a notch that leaves the body
+  /// (require_crack_inside: only its mouth may touch the bottom face) or lies on a node column, nu outside
+  /// (-1, 0.5), f_t or G_f <= 0, steps < 1, spacing above the ligament.
   void validate() const;
+  /// The notch's x: notch_x_m, or mid-span.
+  double notch_position_m() const { return notch_x_m.value_or(0.5 * span_m); }
+  /// The notch as the user places it: from its mouth on the bottom face to its tip.
+  std::vector<Vec2> notch_polyline() const { return {Vec2(notch_position_m(), 0), Vec2(notch_position_m(), notch_m)}; }
+  /// Background cells along the span: round(span / spacing), made odd (mid-span a line of cell centres).
+  int cells_along_span() const;
 };
 
 struct CurvePoint {
@@ -110,6 +126,8 @@ struct ThreePointBendingResult {
   double stored_J = 0;                    ///< elastic energy left at the end (continuum and faces)
   double final_load_N = 0, final_deflection_m = 0;
   double elastic_stiffness_N_per_m = 0;   ///< the notched beam before any crack growth (a linear solve)
+  std::map<std::string, double> law_parameters;  ///< CohesiveLaw::parameters() of the law the run used
+  double w_max_m = 0;                     ///< its critical opening, Eq. (20) / (23)
   bool completed = false;                 ///< every step converged
   std::string stop_reason;
   // cost
@@ -118,6 +136,10 @@ struct ThreePointBendingResult {
   double wall_s = 0;
   std::vector<StepReport> steps;          ///< per accepted step
   std::vector<NodeSnapshot> node_steps;   ///< per curve point, when options.node_snapshots
+  /// Per curve point, when options.node_snapshots: the notch (one traction-free segment, its opening at half
+  /// its depth, damage 1) and the cohesive crack as one polyline cut into a piece per cohesive Gauss point (the
+  /// share of its segment the point's weight stands for), each piece with that point's opening, traction and damage.
+  std::vector<CrackSnapshot> crack_steps;
 };
 
 ThreePointBendingResult run_three_point_bending(const ThreePointBendingOptions& options);

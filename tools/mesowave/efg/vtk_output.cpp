@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <stdexcept>
 
+#include "mesowave/core/units.hpp"
 #include "mesowave/io/vtk_xml.hpp"
 
 namespace mesowave::efg {
@@ -47,7 +48,7 @@ void write_node_vtp(const std::filesystem::path& path, const NodeSnapshot& nodes
 
 void write_crack_vtp(const std::filesystem::path& path, const CrackSnapshot& cracks, double step_time) {
   const std::size_t segments = cracks.segment_count();
-  for (const auto* v : {&cracks.opening_m, &cracks.traction_Pa})
+  for (const auto* v : {&cracks.opening_m, &cracks.traction_Pa, &cracks.damage})
     if (!v->empty() && v->size() != segments)
       throw std::invalid_argument("crack snapshot: " + std::to_string(segments) + " segments, " +
                                   std::to_string(v->size()) + " values");
@@ -59,8 +60,13 @@ void write_crack_vtp(const std::filesystem::path& path, const CrackSnapshot& cra
     for (const auto& x : line) d.points.push_back({x.x(), x.y(), 0.0});
     for (std::size_t k = 0; k + 1 < line.size(); ++k) d.lines.push_back({first + std::int64_t(k), first + std::int64_t(k) + 1});
   }
-  if (!cracks.opening_m.empty()) d.cell_data.push_back({"opening", 1, cracks.opening_m, false, {}});
-  if (!cracks.traction_Pa.empty()) d.cell_data.push_back({"traction", 1, cracks.traction_Pa, false, {}});
+  auto scaled = [](std::vector<double> v, double factor) {
+    for (double& x : v) x *= factor;
+    return v;
+  };
+  if (!cracks.opening_m.empty()) d.cell_data.push_back({"opening_mm", 1, scaled(cracks.opening_m, 1 / units::mm), false, {}});
+  if (!cracks.traction_Pa.empty()) d.cell_data.push_back({"traction_MPa", 1, scaled(cracks.traction_Pa, 1 / units::MPa), false, {}});
+  if (!cracks.damage.empty()) d.cell_data.push_back({"damage", 1, cracks.damage, false, {}});
   io::write_vtp(path, d);
 }
 

@@ -6,8 +6,11 @@
 //    (3 components, z = 0: "Warp By Vector" shows the deformed body), "stress" [Pa] as VTK's symmetric
 //    tensor (xx, yy, zz, xy, yz, xz; zz = 0 as given in plane stress) and "max_principal_stress" [Pa],
 //    the quantity the St. Venant criterion's crack growth follows (paper Section 2.3).
-//  - cracks: every polyline's points, one line cell per segment; cell data "opening" [m] and
-//    "traction" [Pa] (the cohesive law's normal traction, paper Eqs. (19)-(23)) when given.
+//  - cracks: every polyline's points, one line cell per segment; cell data, when given,
+//    "opening_mm" (the normal opening w [mm]), "traction_MPa" (the cohesive law's normal traction
+//    [MPa], paper Eqs. (19)-(23)) and "damage" (the share of f_t lost, 0 to 1: cohesive_crack.hpp).
+//    These two are in the units the papers plot the softening curve in (w ~ 0.01-0.1 mm,
+//    sigma ~ 1 MPa), their names saying so; the nodes' arrays stay SI.
 // Stresses are sampled at the nodes: an MLS approximation is smooth there (no averaging needed); a
 // Q4 mesh's nodal stresses are the element average (fem/plane_static).
 #include <Eigen/Core>
@@ -28,6 +31,7 @@ struct CrackSnapshot {
   std::vector<std::vector<Eigen::Vector2d>> polylines;  ///< one per crack (a notch too), >= 2 points each
   std::vector<double> opening_m;    ///< per segment (cracks in order, then their segments), or empty
   std::vector<double> traction_Pa;  ///< per segment, or empty
+  std::vector<double> damage;       ///< per segment, or empty
   std::size_t segment_count() const;
 };
 
