@@ -53,7 +53,7 @@ done
 
 wait_quiet
 note "rod chain (191 spheres, 30,000 steps)"
-$BIN/mw-pack line --sphere-radius-mm 5.1 --spacing-R 1.03 --length-mm 1000 --density-kg-m3 7850.66 \
+$BIN/mw-pack line --experiment lab-data/steel-rod/experiment.toml --spacing-R 1.03 \
   --packing results/bench/rod.h5 --quiet > /dev/null
 for i in 1 2 3 4 5; do
   $BIN/mw-dem run pipeline/steel-rod/scenes/rod-wave.toml --packing results/bench/rod.h5 --signals /tmp/rod-bench.h5 \

@@ -2,7 +2,8 @@
 # mass (mw-pack line) and the contact modulus E_dem from the quasi-static tension
 # test of the chain (mw-calibrate rod), started from the paper's K_n column read
 # as E_dem (lab-data/steel-rod/paper/table1.csv), so that the first trial is the
-# paper's model and the last one gives the rod's E = 208.72 GPa (Section 4.1).
+# paper's model and the last one gives the rod's E (Section 4.1; mw-calibrate rod reads
+# it from lab-data/steel-rod/experiment.toml, SR_EXPERIMENT).
 # Included by pipeline/steel-rod/study.mk.
 #   make steel-rod-calibration     results/steel-rod/calibration-table.{csv,txt}
 
@@ -11,8 +12,8 @@ SR_CAL_MODELS := 0.95R 1.03R 1.05R 1.15R
 sr_paper_Ec_GPa = $(shell awk -F, -v m=$1 '!/^\#/ && $$1 == m { print $$4 / 1e9 }' $(SR_PAPER)/table1.csv)
 
 define SR_CALIBRATE
-$(SR_OUT)/calibration-$1.json: $(SR_TENSION) $(SR_OUT)/packing-$1.h5 $(SR_PAPER)/table1.csv $(BIN)/mw-calibrate $(BIN)/mw-dem
-	$(BIN)/mw-calibrate rod --scene $(SR_TENSION) --packing $(SR_OUT)/packing-$1.h5 --E-GPa 208.72 \
+$(SR_OUT)/calibration-$1.json: $(SR_TENSION) $(SR_OUT)/packing-$1.h5 $(SR_PAPER)/table1.csv $(SR_EXPERIMENT) $(BIN)/mw-calibrate $(BIN)/mw-dem
+	$(BIN)/mw-calibrate rod --scene $(SR_TENSION) --packing $(SR_OUT)/packing-$1.h5 $(SR_ROD) \
 	  --start-E-dem-GPa $$(call sr_paper_Ec_GPa,$1) --work-dir $(SR_OUT)/calibration-$1 --out $$@ > /dev/null
 endef
 $(foreach m,$(SR_CAL_MODELS),$(eval $(call SR_CALIBRATE,$m)))

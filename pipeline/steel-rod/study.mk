@@ -7,10 +7,16 @@
 #
 #   make steel-rod-summary        everything below, $(RESULTS)/steel-rod/summary.md at the end
 #
-# The quick tree (QUICK=1) runs the same rules on a 500 mm rod, three frequencies and
+# The rod - its diameter, length and steel (rod paper Section 4.1), the actuator and sensor on its
+# ends, the burst - is lab-data/steel-rod/experiment.toml, read by every rod tool (--experiment):
+# mw-pack line (R = D / 2, L, the rod's mass), mw-fem rod, mw-calibrate rod (the target E) and
+# mw-dispersion (Pochhammer-Chree, the FEM echo's round trip 2 L). No value of it is typed here.
+#
+# The quick tree (QUICK=1) runs the same rules on a shorter rod (SR_LENGTH_MM: --length-mm, the
+# one override of the experiment; the sensor stays on the far end), three frequencies and
 # 0.6 ms FEM records (long enough for the echo: it arrives after 3 L / c, about 300 us).
-# The DEM chains keep 1.5 ms (they cost milliseconds): 0.95R spreads its echo over
-# longer than that.
+# The DEM chains keep their scenes' record (they cost milliseconds): 0.95R spreads its echo
+# over longer than 0.6 ms.
 
 # Study prefix: SR (make variables SR_*, functions sr_*; scripts/new-study renames them).
 PIPELINE_GOALS += steel-rod-summary steel-rod-calibration
@@ -18,18 +24,27 @@ PIPELINE_GOALS += steel-rod-summary steel-rod-calibration
 SR_OUT := $(RESULTS)/steel-rod
 SR_SCENES := pipeline/steel-rod/scenes
 SR_PAPER := lab-data/steel-rod/paper
-# Rod paper Section 4.1 (the rod) and Sections 4.2-4.3 (bursts, FEM damping, duration).
-SR_STEEL := --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1
+SR_EXPERIMENT := lab-data/steel-rod/experiment.toml
+# Rod paper Section 4.2 (the bursts) and Section 4.3 (the records).
 ifeq ($(QUICK),1)
 SR_LENGTH_MM := 500
 SR_FREQS := 50 100 150
 SR_DURATION_MS := 0.6
 else
-SR_LENGTH_MM := 1000
 SR_FREQS := 50 60 70 80 90 100 110 120 130 140 150
 SR_DURATION_MS := 1.5
 endif
-SR_ROUND_TRIP_MM := $(shell echo $$((2 * $(SR_LENGTH_MM))))   # the FEM's far-end sensor sees the echo after 2 L
+SR_ROD := --experiment $(SR_EXPERIMENT)
+# The quick tree's rod length; the FEM's far-end sensor sees the echo after the round trip 2 L
+# (mw-dispersion's default with --experiment: the experiment's rod).
+SR_LENGTH := $(if $(SR_LENGTH_MM),--length-mm $(SR_LENGTH_MM))
+SR_ROUND_TRIP := $(if $(SR_LENGTH_MM),--distance-mm $(shell echo $$((2 * $(SR_LENGTH_MM)))))
+# The band of Table 2's RSS: the sweep's ends (Section 4.2: 50-150 kHz in both trees).
+SR_BAND_KHZ := $(firstword $(SR_FREQS)),$(lastword $(SR_FREQS))
+# The FEM reference as the paper's Abaqus model (Section 4.3.1): Rayleigh mass-proportional damping
+# alpha = SR_ALPHA_PER_S, beta = 0; the burst as a concentrated force at the centre of one end
+# (--patch-radius-mm 0: a point force, not the experiment's 2 x 2 mm plate).
+SR_ALPHA_PER_S := 2000
 # The four chains of Table 1, and 0.95R with the contact modulus that reproduces its E_DEM.
 SR_MODELS := 0.95R 1.03R 1.05R 1.15R 0.95R-EDEM
 # The FEM reference: axisymmetric rings (validated against the 3D hexahedra, docs/models.md);
@@ -46,11 +61,10 @@ endif
 sr_base = $(firstword $(subst -, ,$1))
 sr_scene = $(SR_SCENES)/rod-wave$(if $(filter 1.03R,$1),,-$1).toml
 
-# DEM packings: one line of spheres, n = ceil(L / d), particle density from the rod's mass.
-$(SR_OUT)/packing-%R.h5: $(BIN)/mw-pack
+# DEM packings: one line of spheres of R = D / 2, n = ceil(L / d), particle density from the rod's mass.
+$(SR_OUT)/packing-%R.h5: $(SR_EXPERIMENT) $(BIN)/mw-pack
 	@mkdir -p $(@D)
-	$(BIN)/mw-pack line --sphere-radius-mm 5.1 --spacing-R $* --length-mm $(SR_LENGTH_MM) \
-	  --density-kg-m3 7850.66 --packing $@ --out $(SR_OUT)/packing-$*R.json > /dev/null
+	$(BIN)/mw-pack line $(SR_ROD) $(SR_LENGTH) --spacing-R $* --packing $@ --out $(SR_OUT)/packing-$*R.json > /dev/null
 
 # DEM runs: force burst on the first sphere, acceleration of the last (the scene), on
 # this tree's packing.
@@ -61,12 +75,12 @@ $(SR_OUT)/dem-$1-$2kHz.h5: $(call sr_scene,$1) $(SR_OUT)/packing-$(call sr_base,
 endef
 $(foreach m,$(SR_MODELS),$(foreach f,$(SR_FREQS),$(eval $(call SR_DEM_RUN,$m,$f))))
 
-# FEM runs: 1 mm mesh, alpha = 2000 1/s, 1.5 ms (quick: 0.6 ms), force at the centre of one end, far-end sensor S.
+# FEM runs: the experiment's rod, a point force at the centre of one end, far-end sensor S; per mesh and frequency.
 define SR_FEM_RUN
-$(SR_OUT)/fem-$1mm-$2kHz.h5: $(BIN)/mw-fem
+$(SR_OUT)/fem-$1mm-$2kHz.h5: $(SR_EXPERIMENT) $(BIN)/mw-fem
 	@mkdir -p $$(@D)
-	$(BIN)/mw-fem rod $(SR_STEEL) --length-mm $(SR_LENGTH_MM) --model $(SR_FEM_MODEL) --mesh-mm $1 \
-	  --frequency-kHz $2 --alpha-damping 2000 --duration-ms $(SR_DURATION_MS) --quiet --signals $$@ \
+	$(BIN)/mw-fem rod $(SR_ROD) $(SR_LENGTH) --patch-radius-mm 0 --model $(SR_FEM_MODEL) --mesh-mm $1 \
+	  --frequency-kHz $2 --alpha-damping $(SR_ALPHA_PER_S) --duration-ms $(SR_DURATION_MS) --quiet --signals $$@ \
 	  --out $(SR_OUT)/fem-$1mm-$2kHz.json > /dev/null
 endef
 $(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),$(foreach f,$(SR_FREQS),$(eval $(call SR_FEM_RUN,$h,$f))))
@@ -81,19 +95,19 @@ endef
 $(foreach m,$(SR_MODELS),$(foreach f,$(SR_FREQS),$(eval $(call SR_PCC,$m,$f))))
 
 # Group velocity by the echo at the far end (round trip 2 (n - 1) d for a chain, 2 L for the
-# FEM) and its RSS to Pochhammer-Chree over 50-150 kHz (Table 2).
+# FEM) and its RSS to Pochhammer-Chree over SR_BAND_KHZ (Table 2).
 define SR_MEASURE_DEM
-$(SR_OUT)/measure-$1.csv: $(foreach f,$(SR_FREQS),$(SR_OUT)/dem-$1-$(f)kHz.h5) $(SR_OUT)/packing-$(call sr_base,$1).h5 $(BIN)/mw-dispersion
+$(SR_OUT)/measure-$1.csv: $(foreach f,$(SR_FREQS),$(SR_OUT)/dem-$1-$(f)kHz.h5) $(SR_OUT)/packing-$(call sr_base,$1).h5 $(SR_EXPERIMENT) $(BIN)/mw-dispersion
 	$(BIN)/mw-dispersion measure $(foreach f,$(SR_FREQS),--run $(f)=$(SR_OUT)/dem-$1-$(f)kHz.h5) --method echo \
 	  --distance-mm $$$$(jq '2 * (.spheres - 1) * .spacing_mm' $(SR_OUT)/packing-$(call sr_base,$1).json) --label $1 \
-	  $(SR_STEEL) --band-kHz 50,150 --csv $$@ --out $(SR_OUT)/measure-$1.json > /dev/null
+	  $(SR_ROD) --band-kHz $(SR_BAND_KHZ) --csv $$@ --out $(SR_OUT)/measure-$1.json > /dev/null
 endef
 $(foreach m,$(SR_MODELS),$(eval $(call SR_MEASURE_DEM,$m)))
 
 define SR_MEASURE_FEM
-$(SR_OUT)/measure-fem-$1mm.csv: $(foreach f,$(SR_FREQS),$(SR_OUT)/fem-$1mm-$(f)kHz.h5) $(BIN)/mw-dispersion
+$(SR_OUT)/measure-fem-$1mm.csv: $(foreach f,$(SR_FREQS),$(SR_OUT)/fem-$1mm-$(f)kHz.h5) $(SR_EXPERIMENT) $(BIN)/mw-dispersion
 	$(BIN)/mw-dispersion measure $(foreach f,$(SR_FREQS),--run $(SR_OUT)/fem-$1mm-$(f)kHz.h5) --method echo \
-	  --distance-mm $(SR_ROUND_TRIP_MM) --label FEM-$1mm $(SR_STEEL) --band-kHz 50,150 \
+	  $(SR_ROUND_TRIP) --label FEM-$1mm $(SR_ROD) --band-kHz $(SR_BAND_KHZ) \
 	  --csv $$@ --out $(SR_OUT)/measure-fem-$1mm.json > /dev/null
 endef
 $(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),$(eval $(call SR_MEASURE_FEM,$h)))

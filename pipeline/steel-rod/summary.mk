@@ -68,8 +68,8 @@ $(SR_OUT)/speed.md: $(SR_OUT)/speed.csv $(BIN)/mw-table
 	  --significant wall_s=3 --decimals rss_m2_s2=0 --out $@ > /dev/null
 
 # Figure 9: theory, the FEM and the DEM chains' measured group velocities.
-$(SR_OUT)/figure9.png: $(SR_MEASURED) $(BIN)/mw-dispersion
-	$(BIN)/mw-dispersion theory $(SR_STEEL) --f-max-kHz 200 --df-kHz 1 --modes 1 \
+$(SR_OUT)/figure9.png: $(SR_MEASURED) $(SR_EXPERIMENT) $(BIN)/mw-dispersion
+	$(BIN)/mw-dispersion theory $(SR_ROD) --f-max-kHz 200 --df-kHz 1 --modes 1 \
 	  --overlay '$(SR_FEM_LABEL)=$(SR_OUT)/measure-fem-$(SR_FEM_MESH)mm.csv' \
 	  $(foreach m,$(SR_MODELS),--overlay 'DEM $m=$(SR_OUT)/measure-$m.csv') \
 	  --plot-f-range-kHz 45,155 --plot-key outside,right,top --plot $@ > /dev/null
@@ -78,13 +78,15 @@ $(SR_OUT)/figure9.png: $(SR_MEASURED) $(BIN)/mw-dispersion
 $(SR_OUT)/speed-error.png: $(SR_OUT)/speed.csv $(BIN)/mw-table
 	$(BIN)/mw-table plot $< --x wall_s --y rss_m2_s2 --label-column model --log-x --log-y \
 	  --x-label 'wall time of one $(SR_DURATION_MS) ms run, one thread [s]' \
-	  --y-label 'RSS of the group velocity, 50-150 kHz [m^2/s^2]' \
+	  --y-label 'RSS of the group velocity, $(subst $(sr_comma),-,$(SR_BAND_KHZ)) kHz [m^2/s^2]' \
 	  --title 'Steel rod: speed against error (DEM chains, mw-fem axisymmetric; this machine)' --out $@ > /dev/null
 
 SR_SUMMARY_PARTS := $(foreach t,table1 table2 velocity speed,$(SR_OUT)/$t.md) $(SR_OUT)/findings.md
+# The rod's length is the packings' (the experiment's, or the quick tree's override).
 $(SR_OUT)/summary.md: $(SR_SUMMARY_PARTS) $(SR_OUT)/pcc.csv $(SR_OUT)/figure9.png $(SR_OUT)/speed-error.png \
-    pipeline/steel-rod/summarize.sh
-	pipeline/steel-rod/summarize.sh $(SR_OUT) $(SR_FEM_MESH) $(words $(SR_FREQS)) $(SR_DURATION_MS) > $@
+    $(SR_OUT)/packing-1.03R.h5 pipeline/steel-rod/summarize.sh
+	pipeline/steel-rod/summarize.sh $(SR_OUT) $(SR_FEM_MESH) $(words $(SR_FREQS)) $(SR_DURATION_MS) $(SR_ALPHA_PER_S) \
+	  $$(jq .length_mm $(SR_OUT)/packing-1.03R.json) $(subst $(sr_comma),-,$(SR_BAND_KHZ)) > $@
 
 .PHONY: steel-rod-summary
 steel-rod-summary: $(SR_OUT)/summary.md

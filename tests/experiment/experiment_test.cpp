@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include "mesowave/core/error.hpp"
@@ -135,5 +136,58 @@ size_mm = { value = [50.0, 50.0, 50.0], source = "paper", cite = "c" }
   EXPECT_NE(error(sensors_only).find("needs at least one actuator and one sensor (found 0 and 3)"), std::string::npos);
   EXPECT_NE(input_error_of([] { read_experiment_file("/nonexistent/experiment.toml"); })
                 .find("experiment file /nonexistent/experiment.toml cannot be read"),
+            std::string::npos);
+}
+
+// lab-data/steel-rod/experiment.toml against the rod paper (Section 4.1: D = 10.2 mm, l = 1000 mm,
+// rho = 7850.66 kg/m3, E = 208.72 GPa, nu = 0.3; Section 4.2: A and S on the two ends, a five-cycle
+// burst; Sections 4.3.1-4.3.2: 1.5 ms, the FEM's 1e-7 s step), read as the rod every rod tool takes.
+TEST(Experiment, TheSteelRodIsTheRodPapers) {
+  const Experiment e = read_experiment_file(std::filesystem::path(MESOWAVE_SOURCE_DIR) / "lab-data/steel-rod/experiment.toml");
+  const Rod rod = rod_of(e);
+  EXPECT_EQ(rod.radius_m, 5.1 * 1e-3);  // R = D / 2 (Section 4.3.2) to the bit, as --radius-mm 5.1 gives it
+  EXPECT_EQ(rod.length_m, 1.0);
+  EXPECT_EQ(rod.E_Pa, 208.72e9);
+  EXPECT_EQ(rod.nu, 0.3);
+  EXPECT_EQ(rod.density_kg_m3, 7850.66);
+  EXPECT_EQ(e.specimen.describe(), "10.2 x 1000 mm cylinder");
+  ASSERT_EQ(e.actuators().size(), 1u);
+  ASSERT_EQ(e.sensors().size(), 1u);
+  const Transducer& a = *e.actuators().front();
+  const Transducer& s = *e.sensors().front();
+  EXPECT_EQ(a.name, "A");
+  EXPECT_EQ(s.name, "S");
+  EXPECT_EQ(a.face, "z-");
+  EXPECT_EQ(s.face, "z+");
+  EXPECT_EQ(a.patch_m[0], 2e-3);  // the Noliac NAC2011 plate, 2 x 2 x 2 mm
+  EXPECT_EQ(outward_normal(e.specimen, s), (std::array<double, 3>{0, 0, 1}));
+  EXPECT_EQ(relative_position(e.specimen, a.centre_m), (std::array<double, 3>{0.5, 0.5, 0.0}));  // on the axis
+  EXPECT_EQ(relative_position(e.specimen, s.centre_m), (std::array<double, 3>{0.5, 0.5, 1.0}));
+  EXPECT_EQ(s.quantity, "acceleration");
+  EXPECT_EQ(e.burst.cycles, 5.0);
+  EXPECT_EQ(e.burst.frequency_hz, 100e3);
+  EXPECT_EQ(e.record.duration_s, 1.5e-3);
+  EXPECT_EQ(e.record.sample_interval_s, 1e-7);
+}
+
+TEST(Experiment, ARodAtAnotherLengthKeepsItsEndsAndRefusesWhatIsNotARod) {
+  using mesowave::test::input_error_of;
+  const Experiment cyl = parse_experiment(kCylinder + kBurst, "cyl.toml");
+  const Experiment half = with_length(cyl, 0.1);
+  EXPECT_EQ(half.specimen.length_m(), 0.1);
+  EXPECT_EQ(half.specimen.size_m[0], cyl.specimen.size_m[0]);  // the diameter kept
+  EXPECT_EQ(half.transducers[0].centre_m[2], 0.0);             // the ends stay the ends, exactly
+  EXPECT_EQ(half.transducers[1].centre_m[2], 0.1);
+  EXPECT_EQ(half.transducers[2].centre_m[2], 0.05);            // mid-height stays mid-height
+  EXPECT_EQ(half.transducers[2].centre_m[0], cyl.transducers[2].centre_m[0]);
+  const Experiment box = parse_experiment(kBox + kBurst, "box.toml");
+  EXPECT_NE(input_error_of([&] { with_length(box, 0.1); }).find("only a cylinder's length can be changed alone"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { with_length(cyl, 0.0); }).find("the rod length (0 mm) must be"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { rod_of(box); }).find("a rod is a cylinder specimen, this one is a 50 x 40 x 30 mm box"),
+            std::string::npos);
+  std::string with_E = kCylinder;
+  with_E.insert(with_E.find("[[transducer]]"), "E_GPa = { value = 200.0, source = \"assumed\", cite = \"steel\" }\n");
+  EXPECT_NE(input_error_of([&] { rod_of(parse_experiment(with_E + kBurst, "rod.toml")); })
+                .find("[specimen] needs nu density_kg_m3 for a rod"),
             std::string::npos);
 }

@@ -35,12 +35,12 @@ int main(int argc, char** argv) {
       "lab-data/concrete-cube/static-test.toml --start-E-dem-GPa 10 --start-nu-dem 0.1 --start-T-MPa 10 --work-dir "
       "calib --out calibration.json --trials trials.csv --plot-trajectory trajectory.png --plot-curves curves.png\n"
       "  mw-dem run pipeline/concrete-cube/scenes/cube-wave.toml --from calibration.json --signals waves.h5\n"
-      "  mw-calibrate rod --scene pipeline/steel-rod/scenes/rod-tension.toml --packing packing-1.05R.h5 --E-GPa "
-      "208.72 --work-dir calib-rod --out rod-1.05R.json");
+      "  mw-calibrate rod --scene pipeline/steel-rod/scenes/rod-tension.toml --packing packing-1.05R.h5 --experiment "
+      "lab-data/steel-rod/experiment.toml --work-dir calib-rod --out rod-1.05R.json");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
 
-  fs::path scene_path, packing_path, work_dir, out, trials_csv, plot_trajectory, plot_curves, mw_dem_path;
+  fs::path scene_path, packing_path, work_dir, out, trials_csv, plot_trajectory, plot_curves, mw_dem_path, experiment_path;
   int threads = 0, max_trials = 12;
   auto common = [&](CLI::App* sub) {
     sub->add_option("--scene", scene_path, "The virtual test (TOML with a [test] table)")->required();
@@ -52,8 +52,8 @@ int main(int argc, char** argv) {
     app::add_out_option(*sub, out, "the calibrated parameters (JSON, read by mw-dem run --from)");
   };
 
-  double E_st_GPa = 0, nu_st = 0, sigma_MPa = 0, tol_E_pct = 1, tol_nu = 0.01, tol_sigma_pct = 2, c_over_t = 1;
-  std::optional<double> start_E, start_nu, start_T, friction_deg;
+  double E_st_GPa = 0, nu_st = 0, sigma_MPa = 0, tol_E_pct = 1, tol_nu = 0.01, tol_sigma_pct = 2, c_over_t = 1, tol_rod_pct = 0.5;
+  std::optional<double> start_E, start_nu, start_T, friction_deg, E_rod_GPa;
   auto* cube = cli.add_subcommand("cube", "Compression test of a packed specimen: E_dem, nu_dem, T = C");
   common(cube);
   cube->add_option("--E-st-measured-GPa", E_st_GPa, "Target: the static modulus E_st [GPa] (static-test.toml)")->required();
@@ -71,10 +71,10 @@ int main(int argc, char** argv) {
   cube->add_option("--plot-trajectory", plot_trajectory, "PNG: the trials against the targets");
   cube->add_option("--plot-curves", plot_curves, "PNG: stress-strain curves of the calibrated test, with the moduli");
 
-  double E_rod_GPa = 0, tol_rod_pct = 0.5;
   auto* rod = cli.add_subcommand("rod", "Tension test of a chain: the contact modulus for the rod's E");
   common(rod);
-  rod->add_option("--E-GPa", E_rod_GPa, "Target: the rod's Young modulus [GPa] (the rod paper: 208.72)")->required();
+  rod->add_option("--E-GPa", E_rod_GPa, "Target: the rod's Young modulus [GPa], or:");
+  rod->add_option("--experiment", experiment_path, "Target: the E of this experiment's rod (lab-data/steel-rod/experiment.toml)");
   rod->add_option("--start-E-dem-GPa", start_E, "First contact modulus E_dem [GPa] (default: the scene's)");
   rod->add_option("--tolerance-E-pct", tol_rod_pct, "Tolerance on E_DEM [%]")->capture_default_str();
 
@@ -93,10 +93,10 @@ int main(int argc, char** argv) {
     };
     fs::create_directories(work_dir);
     const auto& m = scene.material;
-
     if (rod->parsed()) {
       if (scene.test.kind != dem::UniaxialTestSpec::Kind::tension) throw InputError("mw-calibrate rod needs a tension test scene");
-      dem::RodCalibration calibration(require_positive("--E-GPa", E_rod_GPa, "GPa"), tol_rod_pct / 100,
+      if (!experiment_path.empty()) run.input(experiment_path);
+      dem::RodCalibration calibration(dem::rod_target_E_GPa(E_rod_GPa, experiment_path), tol_rod_pct / 100,
                                       require_positive("--start-E-dem-GPa", start_E.value_or(m.E_dem_Pa / 1e9), "GPa"), max_trials);
       const dem::Packing chain = dem::read_packing_file(scene.packing_file);
       while (auto t = calibration.next()) {

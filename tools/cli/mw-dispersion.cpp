@@ -37,17 +37,17 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
   fs::path csv, h5, signals, out;
   // The rod's material and radius: `what` says what they serve.
-  const auto add_rod = [](CLI::App* sub, wave::RodOptions& rod, const std::string& what, bool required) {
-    for (auto* o : {sub->add_option("--E-GPa", rod.E_GPa, what + "Young's modulus [GPa]"),
-                    sub->add_option("--nu", rod.nu, what + "Poisson ratio (-1 < nu < 0.5)"),
-                    sub->add_option("--density-kg-m3", rod.density_kg_m3, what + "density [kg/m3]"),
-                    sub->add_option("--radius-mm", rod.radius_mm, what + "radius [mm]")})
-      if (required) o->required();
+  const auto add_rod = [](CLI::App* sub, wave::RodOptions& rod, const std::string& what) {
+    sub->add_option("--E-GPa", rod.E_GPa, what + "Young's modulus [GPa]");
+    sub->add_option("--nu", rod.nu, what + "Poisson ratio (-1 < nu < 0.5)");
+    sub->add_option("--density-kg-m3", rod.density_kg_m3, what + "density [kg/m3]");
+    sub->add_option("--radius-mm", rod.radius_mm, what + "radius [mm]");
+    sub->add_option("--experiment", rod.experiment, what + "the four not given from the experiment's rod (lab-data TOML)");
   };
 
   auto* theory = cli.add_subcommand("theory", "Pochhammer-Chree longitudinal modes of a solid rod");
   wave::TheoryRequest tq;
-  add_rod(theory, tq.rod, "Rod: ", true);
+  add_rod(theory, tq.rod, "Rod: ");
   theory->add_option("--f-max-kHz", tq.f_max_kHz, "Highest frequency [kHz]")->capture_default_str();
   theory->add_option("--f-min-kHz", tq.f_min_kHz, "Lowest frequency of the table [kHz] (default: the step)");
   theory->add_option("--df-kHz", tq.df_kHz, "Frequency step of the table [kHz]")->capture_default_str();
@@ -88,15 +88,15 @@ int main(int argc, char** argv) {
                                         "or FREQ_kHz=FILE; repeatable, one per centre frequency");
   measure->add_option("--spacetime", mq.spacetime, "A space-time record (mw-fem rod --spacetime): 2D FFT ridge instead");
   measure->add_option("--method", mq.method,
-                      "echo: two successive packets at one station, distance = round trip (2 L; the rod paper's "
-                      "peak to peak); two-stations: first packets at two stations; source: burst centre to first "
+                      "echo: two successive packets at one station, distance = round trip (2 L, by default the "
+                      "--experiment rod's; the rod paper's peak to peak); two-stations: first packets at two stations; source: burst centre to first "
                       "packet")
       ->capture_default_str();
   measure->add_option("--station", mq.stations, "Signal name(s) to use (one, or two for two-stations)");
   measure->add_option("--distance-mm", mq.distance_mm,
                       "Path length [mm] (echo: the round trip; two-stations: default from the positions)");
   measure->add_option("--cycles", mq.cycles, "Cycles in the bursts")->capture_default_str();
-  add_rod(measure, mq.rod, "Theory: rod's ", false);
+  add_rod(measure, mq.rod, "Theory: rod's ");
   measure->add_option("--theory-csv", mq.theory_csv, "Theory: a table from mw-dispersion theory --csv instead");
   measure->add_option("--band-kHz", mq.band_kHz, "LO,HI: frequency band of the RSS [kHz] (default: every point)");
   measure->add_option("--f-min-kHz", mq.f_min_kHz, "Space-time ridge: lowest frequency [kHz]")->capture_default_str();
@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
   bar->add_option("--path-mm", bq.path_mm, "Round-trip path between the two passes [mm] (2 x gauge to bar end)")->required();
   bar->add_option("--path-uncertainty-mm", bq.path_uncertainty_mm, "Standard uncertainty of that path [mm]")
       ->capture_default_str();
-  add_rod(bar, bq.rod, "Bar (E, density: c0; all four: theory): ", false);
+  add_rod(bar, bq.rod, "Bar (E, density: c0; all four: theory): ");
   bar->add_option("--csv", csv, "Table of the picks: method, t1_us, t2_us, delay_us, c_m_s");
   bar->add_option("--signals", signals,
                   "Write the record and the theory's echo (needs the material) as a signal file (.h5 or .csv)");

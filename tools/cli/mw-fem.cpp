@@ -30,15 +30,16 @@ int main(int argc, char** argv) {
       "shape. The stable step comes from a rigorous eigenvalue bound of the mesh; a --dt-us above it is refused.\n\n"
       "  mw-fem rod --E-GPa 208.72 --nu 0.3 --density-kg-m3 7850.66 --radius-mm 5.1 --length-mm 1000 --mesh-mm 1 "
       "--frequency-kHz 100 --alpha-damping 2000 --signals rod.h5\n"
+      "  mw-fem rod --experiment lab-data/steel-rod/experiment.toml --patch-radius-mm 0 --alpha-damping 2000 --signals rod.h5\n"
       "  mw-fem box --E-GPa 36.67 --nu 0.162 --density-kg-m3 2129.56 --size-mm 50 --mesh-mm 1 --source-mm 25,25,0 "
       "--sensor B=25,25,50 --sensor C=0,25,25 --frequency-kHz 100 --signals cube.h5\n"
       "  mw-fem --from results/concrete-cube/upv.json box --experiment lab-data/concrete-cube/experiment.toml --signals c.h5\n"
       "    (E_d, nu_d and the density from mw-upv; the cube, transducers, burst and record from the experiment)");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
-  double E_GPa = 0, nu = 0, rho = 0, mesh_mm = 1, alpha = 0;
+  double mesh_mm = 1, alpha = 0;
   // Unset: the experiment's (--experiment), else FemCase's defaults (100 kHz, 5 cycles, 1 N, 1.5 ms, 0.1 us, a point).
-  std::optional<double> dt_us, f_kHz, cycles, force_N, duration_ms, sample_dt_us, patch_mm;
+  std::optional<double> E_GPa, nu, rho, dt_us, f_kHz, cycles, force_N, duration_ms, sample_dt_us, patch_mm;
   int threads = 0;
   bool quiet = false;
   std::optional<std::string> quantity;
@@ -47,11 +48,9 @@ int main(int argc, char** argv) {
   const auto common = [&](CLI::App* sub) {
     // The second names are mw-upv's: a wave test's continuum reference takes the dynamic moduli, and
     // `mw-fem --from upv.json box ...` fills them (and --density-kg-m3) from its E_d_GPa and nu_d.
-    sub->add_option("--E-GPa,--E-d-GPa", E_GPa, "Young's modulus [GPa] (--from mw-upv's JSON fills it with E_d)")
-        ->required();
-    sub->add_option("--nu,--nu-d", nu, "Poisson ratio (-1 < nu < 0.5) (--from mw-upv's JSON fills it with nu_d)")
-        ->required();
-    sub->add_option("--density-kg-m3", rho, "Density [kg/m3]")->required();
+    sub->add_option("--E-GPa,--E-d-GPa", E_GPa, "Young's modulus [GPa] (--from mw-upv's JSON fills it with E_d)");
+    sub->add_option("--nu,--nu-d", nu, "Poisson ratio (-1 < nu < 0.5) (--from mw-upv's JSON fills it with nu_d)");
+    sub->add_option("--density-kg-m3", rho, "Density [kg/m3] (these three: or the --experiment's specimen's)");
     sub->add_option("--mesh-mm", mesh_mm, "Element size [mm]")->capture_default_str();
     sub->add_option("--experiment", experiment_path, "The study's experiment (lab-data/<study>/experiment.toml): "
                     "specimen, transducers, burst and record; the options below beat its values");
@@ -77,11 +76,12 @@ int main(int argc, char** argv) {
 
   auto* rod = cli.add_subcommand("rod", "Solid rod along z, force at the end z = 0");
   common(rod);
-  double radius_mm = 0, length_mm = 0, st_step_mm = 0;
+  std::optional<double> radius_mm, length_mm;
+  double st_step_mm = 0;
   std::string model_kind = "axisymmetric";
   fs::path spacetime_path;
-  rod->add_option("--radius-mm", radius_mm, "Rod radius [mm]")->required();
-  rod->add_option("--length-mm", length_mm, "Rod length [mm]")->required();
+  rod->add_option("--radius-mm", radius_mm, "Rod radius [mm] (or --experiment's)");
+  rod->add_option("--length-mm", length_mm, "Rod length [mm] (with --experiment: its rod at this length)");
   rod->add_option("--model", model_kind, "axisymmetric | 3d")->capture_default_str();
   rod->add_option("--spacetime", spacetime_path, "Also record the axial quantity along the axis (HDF5, for a 2D FFT)");
   rod->add_option("--spacetime-step-mm", st_step_mm, "Spacing of the space-time record [mm] (default: mesh size)");
@@ -97,14 +97,16 @@ int main(int argc, char** argv) {
 
   return tool.run(argc, argv, [&](app::Run& run) {
     fem::FemCase c;
+    std::optional<experiment::Experiment> lab;
     if (!experiment_path.empty()) {
       run.input(experiment_path);
-      const auto lab = experiment::read_experiment_file(experiment_path);
-      const double scale = size_text.empty() ? 1.0 : std::stod(size_text) / (lab.specimen.size_m[0] / units::mm);
+      lab = experiment::read_experiment_file(experiment_path);
+      if (rod->parsed()) lab = fem::rod_experiment(*lab, radius_mm, length_mm);
+      const double scale = size_text.empty() ? 1.0 : std::stod(size_text) / (lab->specimen.size_m[0] / units::mm);
       if (!source_text.empty() || !sensors.empty()) throw InputError("--experiment places the transducers: no --source-mm, --sensor");
-      fem::apply_experiment(c, lab, scale);
+      fem::apply_experiment(c, *lab, scale);
     } else if (cylinder->parsed()) throw InputError("mw-fem cylinder needs --experiment (the cylinder and its transducers)");
-    c.material = {require_positive("--E-GPa", E_GPa, "GPa") * units::GPa, nu, rho};
+    c.material = fem::material_of(E_GPa, nu, rho, lab ? &lab->specimen : nullptr);
     c.mesh_m = require_positive("--mesh-mm", mesh_mm, "mm") * units::mm;
     if (f_kHz) c.frequency_hz = require_positive("--frequency-kHz", *f_kHz, "kHz") * units::kHz;
     if (cycles) c.cycles = require_positive("--cycles", *cycles);
@@ -118,8 +120,7 @@ int main(int argc, char** argv) {
     for (const auto& s : sensors) c.sensors.push_back(fem::parse_sensor_spec(s));
     c.threads = threads;
     if (rod->parsed()) {
-      c.radius_m = require_positive("--radius-mm", radius_mm, "mm") * units::mm;
-      c.length_m = require_positive("--length-mm", length_mm, "mm") * units::mm;
+      if (!lab) fem::set_rod_size(c, radius_mm, length_mm);
       c.rod_model = model_kind;
       if (!spacetime_path.empty()) c.spacetime_step_m = st_step_mm * units::mm;
     } else if (experiment_path.empty()) {

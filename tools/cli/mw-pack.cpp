@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
       "--packing cyl.h5\n"
       "  mw-pack line --sphere-radius-mm 5.1 --spacing-R 1.03 --length-mm 1000 --density-kg-m3 7850.66 "
       "--packing rod.h5\n"
+      "  mw-pack line --experiment lab-data/steel-rod/experiment.toml --spacing-R 1.03 --packing rod.h5   (the same)\n"
       "  mw-pack import spheres.txt --lower-mm 0 0 0 --upper-mm 50 50 50 --packing same.h5   (Yade textExt, metres)\n"
       "  mw-pack import spheres.csv --packing same.h5   (columns x_mm,y_mm,z_mm,r_mm or x_m,...; container = "
       "bounding box)\n"
@@ -79,6 +80,8 @@ int main(int argc, char** argv) {
   cli.add_option("--spacing-R", o.spacing_R, "line: centre spacing as a multiple of R (rod paper: 0.95, 1.03, 1.05, 1.15)");
   cli.add_option("--length-mm", o.length_mm, "line: rod length L [mm]; n = ceil(L/d)");
   cli.add_option("--rod-diameter-mm", o.rod_diameter_mm, "line: diameter of the rod the line stands for [mm] (default 2R)");
+  cli.add_option("--experiment", o.experiment, "line: the rod of this experiment (lab-data/<study>/experiment.toml) gives "
+                 "R = D/2, D, L and the density; the options beat its values")->type_name("FILE");
   cli.add_option("--import-format", o.import_format, "import: auto (.csv is CSV, else Yade) | csv | yade")
       ->check(CLI::IsMember({"auto", "csv", "yade"}))
       ->capture_default_str();

@@ -193,3 +193,15 @@ TEST(RodCalibration, RefusesWhatItCannotReach) {
   t->E_DEM_GPa = 0;
   EXPECT_THROW(d.record(*t), InputError);
 }
+
+// The rod's target E: --E-GPa, or the rod paper's 208.72 GPa (Section 4.1) from the steel rod's experiment.
+TEST(RodCalibration, TargetFromTheOptionOrTheExperiment) {
+  using mesowave::test::input_error_of;
+  const std::filesystem::path rod = std::filesystem::path(MESOWAVE_SOURCE_DIR) / "lab-data/steel-rod/experiment.toml";
+  EXPECT_EQ(rod_target_E_GPa(std::nullopt, rod), 208.72);
+  EXPECT_EQ(rod_target_E_GPa(200.0, ""), 200.0);
+  EXPECT_NE(input_error_of([&] { rod_target_E_GPa(200.0, rod); }).find("not both"), std::string::npos);
+  EXPECT_NE(input_error_of([] { rod_target_E_GPa(std::nullopt, ""); }).find("--E-GPa or --experiment"), std::string::npos);
+  const std::filesystem::path cube = std::filesystem::path(MESOWAVE_SOURCE_DIR) / "lab-data/concrete-cube/experiment.toml";
+  EXPECT_NE(input_error_of([&] { rod_target_E_GPa(std::nullopt, cube); }).find("a rod is a cylinder specimen"), std::string::npos);
+}

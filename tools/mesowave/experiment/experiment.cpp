@@ -276,4 +276,31 @@ Experiment scaled(const Experiment& e, double factor) {
 
 double patch_disc_radius_m(const Transducer& t) { return std::sqrt(t.patch_m[0] * t.patch_m[1] / std::numbers::pi); }
 
+namespace {
+std::string origin_of(const Experiment& e) { return e.source.empty() ? std::string("the experiment") : e.source.string(); }
+}  // namespace
+
+Rod rod_of(const Experiment& e) {
+  const Specimen& s = e.specimen;
+  if (s.shape != Specimen::Shape::cylinder)
+    throw InputError(origin_of(e) + ": a rod is a cylinder specimen, this one is a " + s.describe());
+  std::string missing;
+  if (!s.E_Pa) missing += " E_GPa";
+  if (!s.nu) missing += " nu";
+  if (!s.density_kg_m3) missing += " density_kg_m3";
+  if (!missing.empty()) throw InputError(origin_of(e) + ": [specimen] needs" + missing + " for a rod (its material)");
+  return {s.radius_m(), s.length_m(), *s.E_Pa, *s.nu, *s.density_kg_m3};
+}
+
+Experiment with_length(const Experiment& e, double length_m) {
+  if (e.specimen.shape != Specimen::Shape::cylinder)
+    throw InputError(origin_of(e) + ": only a cylinder's length can be changed alone (this is a " + e.specimen.describe() + ")");
+  require_positive("the rod length", in_mm(length_m), "mm");
+  Experiment out = e;
+  // The fraction in mm, as written (an end: exactly 0 or 1), so that an end lands exactly on the new length.
+  for (auto& t : out.transducers) t.centre_m[2] = in_mm(t.centre_m[2]) / in_mm(e.specimen.size_m[2]) * length_m;
+  out.specimen.size_m[2] = length_m;
+  return out;
+}
+
 }  // namespace mesowave::experiment

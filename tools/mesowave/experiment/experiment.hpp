@@ -5,7 +5,9 @@
 // sensors take. One file per study, lab-data/<study>/experiment.toml
 // (docs/formats.md), read here and nowhere else: the DEM scenes reference it
 // ([experiment] file, dem/scene/scene.hpp), mw-fem box and mw-fem cylinder
-// take it (--experiment, fem/case.hpp), and so does every later solver.
+// take it (--experiment, fem/case.hpp), and so does every later solver. A
+// rod is a cylinder whose file prints its material (rod_of): mw-fem rod,
+// mw-pack line, mw-calibrate rod and mw-dispersion take it (--experiment).
 //
 // Coordinates are the specimen's own frame, in metres: a box spans [0, X] x
 // [0, Y] x [0, Z]; a cylinder has its axis along z through (D/2, D/2) and
@@ -95,5 +97,20 @@ std::array<double, 3> relative_position(const Specimen& specimen, const std::arr
 Experiment scaled(const Experiment& e, double factor);
 /// The equal-area disc radius of a transducer's patch (a solver that loads discs).
 double patch_disc_radius_m(const Transducer& t);
+
+/// What every rod tool needs of an elastic rod, in SI: the specimen of a study that knows its
+/// material up front (the rod paper, Section 4.1).
+struct Rod {
+  double radius_m = 0, length_m = 0;
+  double E_Pa = 0, nu = 0, density_kg_m3 = 0;
+};
+/// The specimen as a rod: InputError, naming the file and what is missing, unless it is a
+/// cylinder whose [specimen] gives E_GPa, nu and density_kg_m3.
+Rod rod_of(const Experiment& e);
+/// The same experiment on a cylinder of another length (the quick pipeline's shorter rod): the
+/// diameter kept, every transducer at the same fraction of the length (an end stays an end),
+/// as the DEM scene places transducers on a packing of another size. InputError for a box
+/// or a length that is not positive.
+Experiment with_length(const Experiment& e, double length_m);
 
 }  // namespace mesowave::experiment

@@ -241,6 +241,33 @@ void apply_experiment(FemCase& c, const experiment::Experiment& lab, double scal
   c.length_m = e.specimen.length_m();
 }
 
+IsotropicMaterial material_of(std::optional<double> E_GPa, std::optional<double> nu, std::optional<double> density_kg_m3,
+                              const experiment::Specimen* specimen) {
+  const experiment::Specimen none;
+  const experiment::Specimen& s = specimen ? *specimen : none;
+  const auto need = [&](const std::optional<double>& of_specimen, const char* option) {
+    if (!of_specimen)
+      throw InputError(std::string("give ") + option + (specimen ? " (the experiment's specimen does not give it)" : ""));
+    return *of_specimen;
+  };
+  return {E_GPa ? require_positive("--E-GPa", *E_GPa, "GPa") * units::GPa : need(s.E_Pa, "--E-GPa"),
+          nu ? *nu : need(s.nu, "--nu"), density_kg_m3 ? *density_kg_m3 : need(s.density_kg_m3, "--density-kg-m3")};
+}
+
+experiment::Experiment rod_experiment(const experiment::Experiment& e, std::optional<double> radius_mm,
+                                      std::optional<double> length_mm) {
+  experiment::rod_of(e);  // a cylinder with its material, or the reason
+  if (radius_mm) throw InputError("--experiment gives the rod's radius: no --radius-mm (--length-mm may shorten the rod)");
+  if (!length_mm) return e;
+  return experiment::with_length(e, require_positive("--length-mm", *length_mm, "mm") * units::mm);
+}
+
+void set_rod_size(FemCase& c, std::optional<double> radius_mm, std::optional<double> length_mm) {
+  if (!radius_mm || !length_mm) throw InputError("mw-fem rod needs --radius-mm and --length-mm, or --experiment");
+  c.radius_m = require_positive("--radius-mm", *radius_mm, "mm") * units::mm;
+  c.length_m = require_positive("--length-mm", *length_mm, "mm") * units::mm;
+}
+
 FemSetup assemble_fem_case(const FemCase& spec) {
   validate(spec.material);
   const double h = require_positive("mesh size", spec.mesh_m / units::mm, "mm") * units::mm;

@@ -91,6 +91,21 @@ struct FemCase {
 /// the experiment; set a field after this call to override it.
 void apply_experiment(FemCase& c, const experiment::Experiment& e, double scale = 1.0);
 
+/// The material of a run: each value given (mw-fem's --E-GPa, --nu, --density-kg-m3) beats the
+/// specimen's (an experiment that prints its material, as the steel rod's); InputError naming
+/// the option for a value neither gives.
+IsotropicMaterial material_of(std::optional<double> E_GPa, std::optional<double> nu, std::optional<double> density_kg_m3,
+                              const experiment::Specimen* specimen);
+
+/// `mw-fem rod --experiment`: the experiment's rod (experiment::rod_of: a cylinder whose file gives
+/// its material), at `length_mm` if given - its one override, the quick pipeline's shorter rod
+/// (experiment::with_length: the transducers stay on the ends). InputError for a radius given
+/// beside it: the rod's radius is the file's.
+experiment::Experiment rod_experiment(const experiment::Experiment& e, std::optional<double> radius_mm,
+                                      std::optional<double> length_mm);
+/// `mw-fem rod` without an experiment: the rod of --radius-mm and --length-mm (both needed).
+void set_rod_size(FemCase& c, std::optional<double> radius_mm, std::optional<double> length_mm);
+
 /// The case as a model ready to run: mesh, load, probes, stepping.
 struct FemSetup {
   FemCase spec;

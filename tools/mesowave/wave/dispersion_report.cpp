@@ -10,6 +10,7 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/core/units.hpp"
+#include "mesowave/experiment/experiment.hpp"
 #include "mesowave/io/csv.hpp"
 #include "mesowave/signal/signal_csv.hpp"
 #include "mesowave/wave/group_velocity.hpp"
@@ -28,15 +29,34 @@ std::optional<std::pair<double, double>> parse_range(const std::string& text, co
   return std::make_pair(std::stod(text.substr(0, comma)), std::stod(text.substr(comma + 1)));
 }
 
+// The rod's values: those given, the rest from the experiment's rod (recorded as an input);
+// `length_m`, if asked, gets the experiment's rod length.
+RodOptions resolved(const RodOptions& given, std::vector<fs::path>& inputs, std::optional<double>* length_m = nullptr) {
+  if (given.experiment.empty()) return given;
+  inputs.push_back(given.experiment);
+  const experiment::Rod rod = experiment::rod_of(experiment::read_experiment_file(given.experiment));
+  RodOptions o = given;
+  if (!o.E_GPa) o.E_GPa = rod.E_Pa / units::GPa;
+  if (!o.nu) o.nu = rod.nu;
+  if (!o.density_kg_m3) o.density_kg_m3 = rod.density_kg_m3;
+  if (!o.radius_mm) o.radius_mm = rod.radius_m / units::mm;
+  if (length_m) *length_m = rod.length_m;
+  return o;
+}
+
 }  // namespace
 
-TheoryReport theory_report(const TheoryRequest& q) {
+TheoryReport theory_report(const TheoryRequest& request) {
+  TheoryRequest q = request;
+  std::vector<fs::path> inputs;
+  q.rod = resolved(request.rod, inputs);
   if (!q.plot.empty()) io::require_plot_extension(q.plot);
-  if (!q.rod.complete()) throw InputError("theory needs --E-GPa, --nu, --density-kg-m3 and --radius-mm");
+  if (!q.rod.complete()) throw InputError("theory needs --E-GPa, --nu, --density-kg-m3 and --radius-mm (or --experiment)");
   const IsotropicMaterial material{require_positive("--E-GPa", *q.rod.E_GPa, "GPa") * units::GPa, *q.rod.nu,
                                    *q.rod.density_kg_m3};
   validate(material);
   TheoryReport r;
+  r.inputs = inputs;
   const auto& pc = r.rod.emplace(material, require_positive("--radius-mm", *q.rod.radius_mm, "mm") * units::mm);
   TraceOptions opt;
   opt.f_max_Hz = require_positive("--f-max-kHz", q.f_max_kHz, "kHz") * units::kHz;
@@ -116,8 +136,13 @@ DispersionReport lattice_report(const LatticeRequest& q) {
   return r;
 }
 
-DispersionReport measure_report(const MeasureReportRequest& q) {
+DispersionReport measure_report(const MeasureReportRequest& request) {
   DispersionReport r;
+  MeasureReportRequest q = request;
+  std::optional<double> rod_length_m;
+  q.rod = resolved(request.rod, r.inputs, &rod_length_m);
+  // The echo at the far end of the experiment's rod: two packets 2 L apart.
+  if (q.method == "echo" && q.distance_mm == 0 && rod_length_m) q.distance_mm = 2 * *rod_length_m / units::mm;
   std::vector<GroupVelocityPoint> points;
   if (!q.spacetime.empty()) {
     if (!q.runs.empty()) throw InputError("give either --run files or --spacetime, not both");
@@ -205,8 +230,10 @@ DispersionReport measure_report(const MeasureReportRequest& q) {
   return r;
 }
 
-BarEchoReport bar_echo_report(const BarEchoRequest& q) {
+BarEchoReport bar_echo_report(const BarEchoRequest& request) {
   BarEchoReport r;
+  BarEchoRequest q = request;
+  q.rod = resolved(request.rod, r.inputs);
   r.inputs.push_back(q.record);
   r.record = read_record(q.record, q.column);
   BarEchoOptions bo;

@@ -21,9 +21,12 @@
 
 namespace mesowave::wave {
 
-/// The bar or rod: all four for a Pochhammer-Chree theory.
+/// The bar or rod: all four for a Pochhammer-Chree theory. `experiment` (a study's
+/// lab-data/<study>/experiment.toml whose specimen is a rod: experiment::rod_of) gives the four
+/// not given; measure's echo then also takes its round trip, 2 L, unless --distance-mm gives one.
 struct RodOptions {
   std::optional<double> E_GPa, nu, density_kg_m3, radius_mm;
+  std::filesystem::path experiment;
   bool complete() const { return E_GPa && nu && density_kg_m3 && radius_mm; }
   bool any() const { return E_GPa || nu || density_kg_m3 || radius_mm; }
 };

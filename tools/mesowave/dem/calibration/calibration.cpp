@@ -6,6 +6,8 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/core/units.hpp"
+#include "mesowave/experiment/experiment.hpp"
 
 namespace mesowave::dem {
 namespace {
@@ -205,6 +207,13 @@ CalibrationTrial CompressionCalibration::next_failure() {
                      ", so the target needs T = " + mpa(p.T_Pa) + ", a bond strain T / E_dem of " +
                      format_number(p.T_Pa / p.E_dem_Pa) + " at breakage, beyond the small-strain contact law");
   return make(CalibrationTrial::Kind::failure, p);
+}
+
+double rod_target_E_GPa(std::optional<double> E_GPa, const std::filesystem::path& experiment) {
+  if (E_GPa && !experiment.empty()) throw InputError("give the target E as --E-GPa or by --experiment, not both");
+  if (E_GPa) return *E_GPa;
+  if (experiment.empty()) throw InputError("mw-calibrate rod needs its target: --E-GPa or --experiment (the rod's E)");
+  return experiment::rod_of(experiment::read_experiment_file(experiment)).E_Pa / units::GPa;
 }
 
 RodCalibration::RodCalibration(double E_target_GPa, double tolerance_relative, double start_E_dem_GPa, int max_trials)

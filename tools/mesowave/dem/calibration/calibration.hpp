@@ -16,6 +16,7 @@
 //    (their modulus is the lab's: the secant between 10 % and 1/3 of the peak).
 // The class only decides; whoever runs the trials (mw-calibrate: one mw-dem run
 // each) reports their results back.
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -109,6 +110,11 @@ struct RodTrial {
   double wall_s = 0;
   std::string summary_file;
 };
+
+/// mw-calibrate rod's target E [GPa]: `E_GPa` if given, else the E of the experiment's rod
+/// (experiment::rod_of: lab-data/steel-rod/experiment.toml prints the rod paper's, Section 4.1);
+/// InputError when neither gives it, or both do (two targets).
+double rod_target_E_GPa(std::optional<double> E_GPa, const std::filesystem::path& experiment);
 
 class RodCalibration {
 public:

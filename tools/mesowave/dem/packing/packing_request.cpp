@@ -10,6 +10,7 @@
 #include "mesowave/dem/packing/packing_generator.hpp"
 #include "mesowave/dem/packing/packing_import.hpp"
 #include "mesowave/dem/packing/size_distribution.hpp"
+#include "mesowave/experiment/experiment.hpp"
 
 namespace mesowave::dem {
 namespace {
@@ -69,6 +70,20 @@ Packing imported(const PackingRequest& o, std::vector<std::filesystem::path>& in
   p.container = o.lower_mm.empty() ? bounding_box(p)
                                    : box_container(corner_mm(o.lower_mm, "--lower-mm"), corner_mm(o.upper_mm, "--upper-mm"));
   return p;
+}
+
+// The request with the experiment's rod where an option is not given.
+PackingRequest with_experiment(const PackingRequest& request) {
+  if (request.experiment.empty()) return request;
+  if (request.container != "line")
+    throw InputError("--experiment gives a line its rod; a " + request.container + " takes its sizes as options");
+  const experiment::Rod rod = experiment::rod_of(experiment::read_experiment_file(request.experiment));
+  PackingRequest o = request;
+  if (!o.sphere_radius_mm) o.sphere_radius_mm = rod.radius_m / units::mm;
+  if (!o.rod_diameter_mm) o.rod_diameter_mm = 2 * rod.radius_m / units::mm;
+  if (!o.length_mm) o.length_mm = rod.length_m / units::mm;
+  if (!o.density_kg_m3 && !o.specimen_mass_g) o.density_kg_m3 = rod.density_kg_m3;
+  return o;
 }
 
 Packing rod_line(const PackingRequest& o) {
@@ -136,7 +151,8 @@ std::vector<double> mm3(const std::array<double, 3>& m) { return {m[0] / units::
 
 }  // namespace
 
-PackedSpecimen make_packing(const PackingRequest& o, const std::function<void(double)>& relaxation_progress) {
+PackedSpecimen make_packing(const PackingRequest& request, const std::function<void(double)>& relaxation_progress) {
+  const PackingRequest o = with_experiment(request);
   require_positive("--detection-factor", o.detection_factor);
   if (o.density_kg_m3 && o.specimen_mass_g) throw InputError("give --density-kg-m3 or --specimen-mass-g, not both");
   if (o.density_kg_m3) require_positive("--density-kg-m3", *o.density_kg_m3, "kg/m3");
@@ -144,6 +160,7 @@ PackedSpecimen make_packing(const PackingRequest& o, const std::function<void(do
   if (!o.input.empty() && o.container != "import") throw InputError("a file argument is only for import");
 
   PackedSpecimen out;
+  if (!o.experiment.empty()) out.inputs.push_back(o.experiment);
   auto& s = out.summary;
   s["packing_file"] = o.packing_file.string();
   s["container"] = o.container;

@@ -4,7 +4,9 @@
 // Section 4.2; packing_generator.hpp), a line of spheres (rod paper Section 3)
 // or imported (packing_import.hpp) - given the specimen's mass through the
 // particle density rho_p = m_specimen / sum(V_sphere), and its flat JSON
-// summary (packing_stats.hpp).
+// summary (packing_stats.hpp). A line may take its rod from the study's
+// experiment (experiment/experiment.hpp, rod_of): R = D / 2, the rod's length
+// and density, each option given beating the file's.
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -32,6 +34,9 @@ struct PackingRequest {
   std::optional<double> cube_side_mm, diameter_mm, height_mm, porosity_pct, d_min_mm, d_max_mm;
   std::vector<double> size_mm, lower_mm, upper_mm;  ///< box sides X Y Z; import container corners
   std::optional<double> sphere_radius_mm, spacing_mm, spacing_R, length_mm, rod_diameter_mm;  ///< line
+  /// line: the rod of this experiment fills what is not given - the sphere radius R = D / 2 (rod paper
+  /// Section 4.3.2: half the rod's diameter), the rod's diameter, length and density.
+  std::filesystem::path experiment;
   std::optional<double> density_kg_m3, specimen_mass_g;  ///< one of them gives rho_p
   double detection_factor = 1.1;  ///< C_f of the reported bonds
   double force_tolerance = 1e-3;
