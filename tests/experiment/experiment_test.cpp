@@ -57,7 +57,7 @@ TEST(Experiment, ReadsABoxInSIUnits) {
   ASSERT_EQ(e.transducers.size(), 3u);
   ASSERT_EQ(e.actuators().size(), 1u);
   ASSERT_EQ(e.sensors().size(), 2u);
-  EXPECT_EQ(e.transducers[2].quantity, "velocity");
+  EXPECT_EQ(e.transducers[2].quantity, MotionQuantity::velocity);
   EXPECT_EQ(e.transducers[2].component, "x");
   EXPECT_DOUBLE_EQ(e.transducers[1].centre_m[0], 0.05);
   EXPECT_DOUBLE_EQ(e.transducers[0].patch_m[1], 3e-3);

@@ -68,10 +68,10 @@ TEST(FemCylinder, IsTheAxisymmetricRodWithTheTransducersMapped) {
   EXPECT_DOUBLE_EQ(c.force_N, 2.0);
   EXPECT_DOUBLE_EQ(c.duration_s, 4e-5);
   EXPECT_DOUBLE_EQ(c.sample_dt_s, 2e-7);
-  ASSERT_EQ(c.sensors.size(), 2u);
-  EXPECT_EQ(c.sensors[0].component, "z");  // the far end's outward normal
-  EXPECT_EQ(c.sensors[1].component, "r");  // the curved face's: radial
-  EXPECT_DOUBLE_EQ(c.sensors[1].position_m[0], 0.01);
+  ASSERT_EQ(c.probe_points.size(), 2u);
+  EXPECT_EQ(c.probe_points[0].component, "z");  // the far end's outward normal
+  EXPECT_EQ(c.probe_points[1].component, "r");  // the curved face's: radial
+  EXPECT_DOUBLE_EQ(c.probe_points[1].position_m[0], 0.01);
 
   fem::FemCase by_hand;
   by_hand.material = kSteel;
@@ -81,7 +81,7 @@ TEST(FemCylinder, IsTheAxisymmetricRodWithTheTransducersMapped) {
   by_hand.duration_s = 4e-5;
   by_hand.sample_dt_s = 2e-7;
   by_hand.patch_radius_m = std::sqrt(9e-6 / std::numbers::pi);
-  by_hand.sensors = {{"B", {0, 0, 0.1}, "z"}, {"C", {0.01, 0, 0.05}, "r"}};
+  by_hand.probe_points = {{"B", {0, 0, 0.1}, "z"}, {"C", {0.01, 0, 0.05}, "r"}};
   const fem::FemRun a = fem::run_fem_case(fem::assemble_fem_case(c));
   const fem::FemRun b = fem::run_fem_case(fem::assemble_fem_case(by_hand));
   ASSERT_EQ(a.result.signals.size(), b.result.signals.size());

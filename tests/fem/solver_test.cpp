@@ -140,7 +140,7 @@ TEST(FemModel, StableStepBoundsTheHighestFrequencyTightly) {
 TEST(FemSolver, CentralDifferencesAreStableAtTheBoundAndDivergeAboveTheTrueLimit) {
   const auto model = box_hexahedra(concrete, {4e-3, 4e-3, 8e-3}, 1e-3);
   const auto load = make_load(model, 2, 0.0, {2e-3, 2e-3, 0}, 0.0, 2, 1.0, signal::HannBurst(200e3, 2, 1.0));
-  const std::vector<Probe> probes{{"P", model.nearest_node({2e-3, 2e-3, 8e-3}) * 3 + 2, Quantity::Velocity, "z"}};
+  const std::vector<Probe> probes{{"P", model.nearest_node({2e-3, 2e-3, 8e-3}) * 3 + 2, MotionQuantity::velocity, "z"}};
   ExplicitOptions opt;
   opt.steps = 3000;
   opt.dt_s = model.stable_dt();
@@ -165,7 +165,7 @@ TEST(FemSolver, BarPulseFollowsTheOneDimensionalImpedanceSolution) {
   const auto model = box_hexahedra(m, {a, a, L}, 1e-3);
   const signal::HannBurst burst(100e3, 3, 50.0);
   const auto load = make_load(model, 2, 0.0, {a / 2, a / 2, 0}, 1.0, 2, 1.0, burst);
-  const std::vector<Probe> probes{{"V", model.nearest_node({a / 2, a / 2, z}) * 3 + 2, Quantity::Velocity, "z"}};
+  const std::vector<Probe> probes{{"V", model.nearest_node({a / 2, a / 2, z}) * 3 + 2, MotionQuantity::velocity, "z"}};
   const auto st = choose_stepping(model, 90e-6, 0.1e-6);
   ExplicitOptions opt;
   opt.dt_s = st.dt_s;
@@ -198,7 +198,7 @@ TEST(FemSolver, AxisymmetricAndHexahedralRodsAgree) {
   std::vector<double> sig[2][2];  // [model][load: point, face]
   for (int k = 0; k < 2; ++k) {
     const auto model = k == 0 ? rod_axisymmetric(steel, kR, L, h) : rod_hexahedra(steel, kR, L, h);
-    const auto probes = make_probes(model, {{"S", {0, 0, L}, ""}}, Quantity::Acceleration, "z");
+    const auto probes = make_probes(model, {{"S", {0, 0, L}, ""}}, MotionQuantity::acceleration, "z");
     const auto st = choose_stepping(model, 60e-6, 0.1e-6);
     ExplicitOptions opt;
     opt.dt_s = st.dt_s;
@@ -232,7 +232,7 @@ TEST(FemSolver, GroupVelocityConvergesToPochhammerChree) {
   const int rings[3] = {2, 4, 8};
   for (int r = 0; r < 3; ++r) {
     const auto model = rod_axisymmetric(steel, kR, L, kR / rings[r]);
-    const auto probes = make_probes(model, {{"A", {0, 0, z1}, ""}, {"B", {0, 0, z2}, ""}}, Quantity::Velocity, "z");
+    const auto probes = make_probes(model, {{"A", {0, 0, z1}, ""}, {"B", {0, 0, z2}, ""}}, MotionQuantity::velocity, "z");
     const auto load = make_load(model, 2, 0.0, {0, 0, 0}, 0.0, 2, 1.0, burst);
     const auto st = choose_stepping(model, 140e-6, 0.1e-6);
     ExplicitOptions opt;
@@ -293,7 +293,7 @@ TEST(FemSolver, GroupVelocityConvergesToPochhammerChree) {
 TEST(FemSolver, SameBitsForOneAndTwoThreads) {
   const auto model = rod_hexahedra(steel, kR, 30e-3, 1.5e-3);
   const auto probes = make_probes(model, {{"S", {0, 0, 30e-3}, ""}, {"T", {kR, 0, 15e-3}, "x"}},
-                                  Quantity::Acceleration, "z");
+                                  MotionQuantity::acceleration, "z");
   const auto load = make_load(model, 2, 0.0, {0, 0, 0}, 0.0, 2, 1.0, signal::HannBurst(150e3, 5, 1.0));
   ExplicitOptions opt;
   opt.dt_s = 0.9 * model.stable_dt();
@@ -325,10 +325,10 @@ TEST(FemCase, SteppingAndInputErrors) {
   EXPECT_THROW(choose_stepping(model, 10e-6, 0.1e-6, 1.01 * model.stable_dt()), InputError);
   EXPECT_THROW(choose_stepping(model, 10e-6, 0.1e-6, 0.03e-6), InputError);  // 0.1 us is not 3.33 steps
   EXPECT_NO_THROW(choose_stepping(model, 10e-6, 0.1e-6, 0.05e-6));
-  EXPECT_THROW(make_probes(model, {{"far", {20e-3, 0, 10e-3}, ""}}, Quantity::Velocity, "z"), InputError);
-  EXPECT_THROW(parse_sensor_spec("S=1,2"), InputError);
-  EXPECT_THROW(parse_sensor_spec("=1,2,3"), InputError);
-  EXPECT_THROW(parse_sensor_spec("S=1,2,3/q"), InputError);
+  EXPECT_THROW(make_probes(model, {{"far", {20e-3, 0, 10e-3}, ""}}, MotionQuantity::velocity, "z"), InputError);
+  EXPECT_THROW(parse_probe_point("S=1,2"), InputError);
+  EXPECT_THROW(parse_probe_point("=1,2,3"), InputError);
+  EXPECT_THROW(parse_probe_point("S=1,2,3/q"), InputError);
   EXPECT_THROW(rod_axisymmetric({steel.E_Pa, 0.5, steel.rho_kg_m3}, kR, 1, 1e-3), InputError);
   EXPECT_THROW(rod_hexahedra(steel, kR, 1, -1e-3), InputError);
 }
@@ -344,7 +344,7 @@ TEST(FemSolver, CubePulseArrivesAtTheLongitudinalSpeed) {
       make_probes(model,
                   {{"B", {L / 2, L / 2, L}, ""}, {"C", {0, L / 2, L / 2}, ""}, {"A", {L / 2, L / 2, 5e-3}, "z"},
                    {"D", {L, L / 2, L / 2}, ""}},
-                  Quantity::Acceleration, "normal", std::array<double, 3>{L, L, L});
+                  MotionQuantity::acceleration, "normal", std::array<double, 3>{L, L, L});
   // "normal" is the outward normal, as mw-dem records it: +z on the face z = L, -x on x = 0.
   EXPECT_EQ(probes[0].component, "z");
   EXPECT_EQ(probes[1].component, "-x");
@@ -389,8 +389,8 @@ TEST(FemCase, AssembledBarPulseFollowsTheImpedanceSolution) {
   c.cycles = 3;
   c.force_N = 50;
   c.duration_s = 90e-6;
-  c.quantity = Quantity::Velocity;
-  c.sensors = {{"V", {a / 2, a / 2, z}, "z"}};
+  c.quantity = MotionQuantity::velocity;
+  c.probe_points = {{"V", {a / 2, a / 2, z}, "z"}};
   c.threads = 2;
   const FemSetup setup = assemble_fem_case(c);
   const FemRun run = run_fem_case(setup);
@@ -423,7 +423,7 @@ TEST(FemCase, AssembledBarPulseFollowsTheImpedanceSolution) {
   far.source_m = {a / 2, a / 2, L / 2};
   EXPECT_THROW(assemble_fem_case(far), InputError);
   FemCase blind = c;
-  blind.sensors.clear();
+  blind.probe_points.clear();
   EXPECT_THROW(assemble_fem_case(blind), InputError);
 }
 

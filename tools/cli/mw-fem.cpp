@@ -116,8 +116,8 @@ int main(int argc, char** argv) {
     if (duration_ms) c.duration_s = require_positive("--duration-ms", *duration_ms, "ms") * units::ms;
     if (sample_dt_us) c.sample_dt_s = *sample_dt_us * units::us;
     if (dt_us) c.dt_s = *dt_us * units::us;
-    if (quantity) c.quantity = fem::parse_quantity(*quantity);
-    for (const auto& s : sensors) c.sensors.push_back(fem::parse_sensor_spec(s));
+    if (quantity) c.quantity = experiment::parse_motion_quantity(*quantity, "--quantity");
+    for (const auto& s : sensors) c.probe_points.push_back(fem::parse_probe_point(s));
     c.threads = threads;
     if (rod->parsed()) {
       if (!lab) fem::set_rod_size(c, radius_mm, length_mm);

@@ -147,9 +147,7 @@ Transducer read_transducer(Keys& k, const Specimen& s) {
   for (std::size_t d = 0; d < 2; ++d) t.patch_m[d] = require_positive(where + ".patch_mm", (*size)[d], "mm") * units::mm;
   check_on_face(s, t, where);
   if (t.role == Transducer::Role::sensor) {
-    t.quantity = k.text("quantity", t.quantity);
-    if (t.quantity != "acceleration" && t.quantity != "velocity" && t.quantity != "displacement")
-      throw InputError(where + ".quantity (\"" + t.quantity + "\") must be acceleration, velocity or displacement");
+    t.quantity = parse_motion_quantity(k.text("quantity", to_string(t.quantity)), where + ".quantity");
     t.component = k.text("component", t.component);
     if (t.component != "normal" && t.component != "magnitude" && !is_axis(t.component))
       throw InputError(where + ".component (\"" + t.component + "\") must be normal, magnitude or x, -x, y, -y, z, -z");

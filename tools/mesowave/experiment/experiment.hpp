@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "mesowave/experiment/motion_quantity.hpp"
+
 namespace mesowave::experiment {
 
 struct Specimen {
@@ -38,7 +40,7 @@ struct Specimen {
 
 /// A transducer glued on the specimen: an actuator driven by the burst (a force
 /// pushing along `direction`, "inward" = into the body) or a sensor recording
-/// `quantity` (acceleration | velocity | displacement) along `component`
+/// `quantity` (motion_quantity.hpp: acceleration | velocity | displacement) along `component`
 /// ("normal" = the face's outward normal, or x | -x | y | ... | magnitude).
 struct Transducer {
   enum class Role { actuator, sensor } role = Role::sensor;
@@ -47,7 +49,7 @@ struct Transducer {
   std::array<double, 3> centre_m{};  ///< on the face, in the specimen's frame
   std::array<double, 2> patch_m{};   ///< a box face: along its two in-plane axes in increasing order;
                                      ///< curved: around the circumference, along the axis
-  std::string quantity = "acceleration";  ///< sensors
+  MotionQuantity quantity = MotionQuantity::acceleration;  ///< sensors
   std::string component = "normal";       ///< sensors
   std::string direction = "inward";       ///< actuators
   std::string source, cite;

@@ -31,11 +31,11 @@ std::array<double, 3> parse_point_mm(const std::string& text, const std::string&
   return p;
 }
 
-SensorSpec parse_sensor_spec(const std::string& text) {
+ProbePoint parse_probe_point(const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError("sensor '" + text + "' must read NAME=X,Y,Z (mm), optionally /component");
-  SensorSpec s;
+  ProbePoint s;
   s.name = text.substr(0, eq);
   std::string rest = text.substr(eq + 1);
   const auto slash = rest.find('/');
@@ -59,11 +59,11 @@ std::optional<std::pair<int, bool>> box_face_of(const std::array<double, 3>& p, 
   return std::nullopt;
 }
 
-std::vector<Probe> make_probes(const FemModel& model, const std::vector<SensorSpec>& sensors, Quantity quantity,
+std::vector<Probe> make_probes(const FemModel& model, const std::vector<ProbePoint>& points, MotionQuantity quantity,
                                const std::string& default_component,
                                const std::optional<std::array<double, 3>>& box_size) {
   std::vector<Probe> probes;
-  for (const auto& s : sensors) {
+  for (const auto& s : points) {
     for (const auto& p : probes)
       if (p.name == s.name) throw InputError("sensor name " + s.name + " is used twice");
     const std::size_t node = model.nearest_node(s.position_m);
@@ -150,7 +150,7 @@ Stepping choose_stepping(const FemModel& model, double duration, double sample_d
   return s;
 }
 
-SpaceTimeRequest rod_axis_line(const FemModel& model, double step, Quantity quantity) {
+SpaceTimeRequest rod_axis_line(const FemModel& model, double step, MotionQuantity quantity) {
   require_positive("space-time step", step, "m");
   SpaceTimeRequest r;
   r.quantity = quantity;
@@ -181,8 +181,8 @@ void write_spacetime_file(const std::filesystem::path& path, const std::vector<d
   h5::write_doubles(g.id(), "position_m", req.coordinate_m);
   h5::set_attribute(g.id(), "t0_s", 0.0);
   h5::set_attribute(g.id(), "dt_s", dt);
-  h5::set_attribute(g.id(), "quantity", quantity_name(req.quantity));
-  h5::set_attribute(g.id(), "unit", quantity_unit(req.quantity));
+  h5::set_attribute(g.id(), "quantity", to_string(req.quantity));
+  h5::set_attribute(g.id(), "unit", si_unit(req.quantity));
   h5::set_attribute(g.id(), "component", component);
 }
 
@@ -203,14 +203,14 @@ void apply_experiment(FemCase& c, const experiment::Experiment& lab, double scal
   c.duration_s = e.record.duration_s;
   c.sample_dt_s = e.record.sample_interval_s;
   c.patch_radius_m = experiment::patch_disc_radius_m(a);  // the square PZT as the disc of the same area
-  c.quantity = parse_quantity(sensors.front()->quantity);
+  c.quantity = sensors.front()->quantity;
   const bool cylinder = e.specimen.shape == experiment::Specimen::Shape::cylinder;
   const double R = e.specimen.radius_m();
-  c.sensors.clear();
+  c.probe_points.clear();
   for (const Transducer* s : sensors) {
     if (s->quantity != sensors.front()->quantity)
-      throw InputError(where + ": sensor " + s->name + " records " + s->quantity + ", " + sensors.front()->name + " " +
-                       sensors.front()->quantity + ": mw-fem records one quantity a run");
+      throw InputError(where + ": sensor " + s->name + " records " + to_string(s->quantity) + ", " + sensors.front()->name +
+                       " " + to_string(sensors.front()->quantity) + ": mw-fem records one quantity a run");
     if (s->component == "magnitude") throw InputError(where + ": sensor " + s->name + ": mw-fem records a component, not the magnitude");
     std::string component = s->component;
     std::array<double, 3> p = s->centre_m;
@@ -222,7 +222,7 @@ void apply_experiment(FemCase& c, const experiment::Experiment& lab, double scal
       p[0] -= R;
       p[1] -= R;
     }
-    c.sensors.push_back({s->name, p, component});
+    c.probe_points.push_back({s->name, p, component});
   }
   if (!cylinder) {
     c.body = FemCase::Body::box;
@@ -284,8 +284,9 @@ FemSetup assemble_fem_case(const FemCase& spec) {
     if (spec.rod_model == "axisymmetric") model = rod_axisymmetric(spec.material, R, L, h);
     else if (spec.rod_model == "3d") model = rod_hexahedra(spec.material, R, L, h);
     else throw InputError("rod model " + spec.rod_model + " must be axisymmetric or 3d");
-    const std::vector<SensorSpec> sensors = spec.sensors.empty() ? std::vector<SensorSpec>{{"S", {0, 0, L}, ""}} : spec.sensors;
-    probes = make_probes(model, sensors, spec.quantity, "z");
+    const std::vector<ProbePoint> points =
+        spec.probe_points.empty() ? std::vector<ProbePoint>{{"S", {0, 0, L}, ""}} : spec.probe_points;
+    probes = make_probes(model, points, spec.quantity, "z");
     load = make_load(model, 2, 0.0, {0, 0, 0}, spec.patch_radius_m, 2, +1.0, burst);
     if (spec.spacetime_step_m)
       spacetime = rod_axis_line(model, *spec.spacetime_step_m > 0 ? *spec.spacetime_step_m : h, spec.quantity);
@@ -300,8 +301,8 @@ FemSetup assemble_fem_case(const FemCase& spec) {
     const double value = face->second ? spec.size_m[std::size_t(face->first)] : 0.0;
     load = make_load(model, face->first, value, spec.source_m, spec.patch_radius_m, face->first,
                      face->second ? -1.0 : +1.0, burst);  // pushing into the body
-    if (spec.sensors.empty()) throw InputError("box: give at least one sensor (--sensor NAME=X,Y,Z)");
-    probes = make_probes(model, spec.sensors, spec.quantity, "normal", spec.size_m);
+    if (spec.probe_points.empty()) throw InputError("box: give at least one sensor (--sensor NAME=X,Y,Z)");
+    probes = make_probes(model, spec.probe_points, spec.quantity, "normal", spec.size_m);
   }
   const Stepping stepping = choose_stepping(model, spec.duration_s, spec.sample_dt_s, spec.dt_s);
   return FemSetup{spec, std::move(model), std::move(*load), std::move(probes), stepping, std::move(spacetime)};

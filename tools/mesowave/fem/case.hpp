@@ -18,14 +18,21 @@
 
 namespace mesowave::fem {
 
-/// "S=0,0,1000" or "B=25,50,25/y": a named point in mm with an optional
-/// component (x | y | z | r | normal; built in code also -x | -y | -z | -r: the opposite sign).
-struct SensorSpec {
+/// Where mw-fem records a signal: a named point whose nearest node's dof becomes a Probe
+/// (make_probes), with an optional component. Not the DEM's SensorSpec (dem/scene/scene.hpp),
+/// which is a scene's [[sensor]] table: a registered sensor kind (motion, force, strain,
+/// broken bonds) over a set of spheres (a patch, a point, a line's end), its own quantity and
+/// sampling interval. A probe point has none of those - one node, the case's one quantity
+/// (FemCase::quantity), every sample - so the two are different concepts with different names;
+/// both are made from the lab's transducers (experiment::Transducer), each by its solver.
+/// mw-fem --sensor "S=0,0,1000" or "B=25,50,25/y": the name, the point in mm and the component
+/// (x | y | z | r | normal; built in code also -x | -y | -z | -r: the opposite sign).
+struct ProbePoint {
   std::string name;
   std::array<double, 3> position_m{};
   std::string component;  ///< "" = the caller's default
 };
-SensorSpec parse_sensor_spec(const std::string& text);
+ProbePoint parse_probe_point(const std::string& text);
 /// "25,50,0" in mm -> metres.
 std::array<double, 3> parse_point_mm(const std::string& text, const std::string& what);
 
@@ -34,10 +41,10 @@ std::array<double, 3> parse_point_mm(const std::string& text, const std::string&
 std::optional<std::pair<int, bool>> box_face_of(const std::array<double, 3>& p, const std::array<double, 3>& size,
                                                 double tol);
 
-/// Probes at the nodes nearest the sensor points; InputError for a point
+/// Probes at the nodes nearest the points; InputError for a point
 /// farther than one mesh size from any node (outside the body). A component
 /// "normal" on a box needs `box_size`.
-std::vector<Probe> make_probes(const FemModel& model, const std::vector<SensorSpec>& sensors, Quantity quantity,
+std::vector<Probe> make_probes(const FemModel& model, const std::vector<ProbePoint>& points, MotionQuantity quantity,
                                const std::string& default_component,
                                const std::optional<std::array<double, 3>>& box_size = std::nullopt);
 
@@ -74,8 +81,8 @@ struct FemCase {
   double alpha_damping_per_s = 0;
   double duration_s = 1.5e-3, sample_dt_s = 0.1e-6;
   std::optional<double> dt_s;  ///< default: choose_stepping's
-  Quantity quantity = Quantity::Acceleration;
-  std::vector<SensorSpec> sensors;
+  MotionQuantity quantity = MotionQuantity::acceleration;
+  std::vector<ProbePoint> probe_points;  ///< mw-fem --sensor; a rod without any records S at the far end's centre
   int threads = 0;  ///< requested (core/threads.hpp; 0: the machine's free cores)
 };
 
@@ -139,6 +146,6 @@ void write_spacetime_file(const std::filesystem::path& path, const std::vector<d
                           const std::map<std::string, std::string>& attributes);
 
 /// Axial dofs of the rod axis nodes every `step_m` along z (rod models).
-SpaceTimeRequest rod_axis_line(const FemModel& model, double step_m, Quantity quantity);
+SpaceTimeRequest rod_axis_line(const FemModel& model, double step_m, MotionQuantity quantity);
 
 }  // namespace mesowave::fem

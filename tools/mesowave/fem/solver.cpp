@@ -13,29 +13,6 @@
 
 namespace mesowave::fem {
 
-Quantity parse_quantity(const std::string& name) {
-  if (name == "displacement") return Quantity::Displacement;
-  if (name == "velocity") return Quantity::Velocity;
-  if (name == "acceleration") return Quantity::Acceleration;
-  throw InputError("quantity '" + name + "' must be displacement, velocity or acceleration");
-}
-
-std::string quantity_name(Quantity q) {
-  switch (q) {
-    case Quantity::Displacement: return "displacement";
-    case Quantity::Velocity: return "velocity";
-    default: return "acceleration";
-  }
-}
-
-std::string quantity_unit(Quantity q) {
-  switch (q) {
-    case Quantity::Displacement: return "m";
-    case Quantity::Velocity: return "m/s";
-    default: return "m/s^2";
-  }
-}
-
 namespace {
 
 // Element forces f_e = K_e u_e for elements [begin, end) of one colour, added to f.
@@ -180,8 +157,8 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
   for (std::size_t p = 0; p < probes.size(); ++p) {
     auto& sg = res.signals[p];
     sg.name = probes[p].name;
-    sg.quantity = quantity_name(probes[p].quantity);
-    sg.unit = quantity_unit(probes[p].quantity);
+    sg.quantity = to_string(probes[p].quantity);
+    sg.unit = si_unit(probes[p].quantity);
     sg.component = probes[p].component;
     sg.t0_s = 0;
     sg.dt_s = dt * double(opt.sample_stride);
@@ -191,7 +168,7 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
   // Every recorded dof as (dof, quantity, where its samples go, their stride).
   struct Tap {
     std::size_t dof;
-    Quantity quantity;
+    MotionQuantity quantity;
     double* out;
     std::size_t stride;
     double sign;
@@ -238,11 +215,11 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
         for (auto t = tap_begin; t != tap_end; ++t) {
           const std::size_t i = t->dof;
           const double v_new = keep * v[i] + gain * (F * load_w[i] - f[i]) * inv_m[i];
-          double value;
+          double value = 0;
           switch (t->quantity) {
-            case Quantity::Displacement: value = u[i]; break;
-            case Quantity::Velocity: value = 0.5 * (v_new + v[i]); break;
-            default: value = (v_new - v[i]) / dt;
+            case MotionQuantity::displacement: value = u[i]; break;
+            case MotionQuantity::velocity: value = 0.5 * (v_new + v[i]); break;
+            case MotionQuantity::acceleration: value = (v_new - v[i]) / dt; break;
           }
           t->out[k * t->stride] = t->sign * value;
         }

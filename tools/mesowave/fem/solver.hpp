@@ -15,16 +15,16 @@
 #include <utility>
 #include <vector>
 
+#include "mesowave/experiment/motion_quantity.hpp"
 #include "mesowave/signal/hann_burst.hpp"
 #include "mesowave/signal/signal.hpp"
 #include "mesowave/fem/model.hpp"
 
 namespace mesowave::fem {
 
-enum class Quantity { Displacement, Velocity, Acceleration };
-Quantity parse_quantity(const std::string& name);  ///< displacement | velocity | acceleration
-std::string quantity_name(Quantity q);
-std::string quantity_unit(Quantity q);
+/// What a probe records: the lab's quantity (experiment/motion_quantity.hpp: its one parser,
+/// names and units), the same the DEM's motion sensors record.
+using experiment::MotionQuantity;
 
 /// A force F(t) = burst(t) spread over dofs with weights summing to 1 (total force = burst).
 struct BurstLoad {
@@ -36,7 +36,7 @@ struct BurstLoad {
 struct Probe {
   std::string name;
   std::size_t dof = 0;
-  Quantity quantity = Quantity::Acceleration;
+  MotionQuantity quantity = MotionQuantity::acceleration;
   std::string component;  ///< x | y | z | r, or -x | -y | -z (the outward normal of a lower face)
   double sign = 1.0;      ///< the recorded value is sign * the dof's (-1: along -axis)
 };
@@ -45,7 +45,7 @@ struct Probe {
 struct SpaceTimeRequest {
   std::vector<std::size_t> dofs;
   std::vector<double> coordinate_m;  ///< position of each along the line
-  Quantity quantity = Quantity::Velocity;
+  MotionQuantity quantity = MotionQuantity::velocity;
 };
 
 struct ExplicitOptions {

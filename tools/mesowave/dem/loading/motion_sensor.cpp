@@ -5,22 +5,6 @@
 
 namespace mesowave::dem {
 
-MotionQuantity parse_motion_quantity(const std::string& text) {
-  if (text == "acceleration") return MotionQuantity::acceleration;
-  if (text == "velocity") return MotionQuantity::velocity;
-  if (text == "displacement") return MotionQuantity::displacement;
-  throw InputError("sensor quantity \"" + text + "\" must be acceleration, velocity, displacement or force");
-}
-
-std::string to_string(MotionQuantity q) {
-  switch (q) {
-    case MotionQuantity::acceleration: return "acceleration";
-    case MotionQuantity::velocity: return "velocity";
-    case MotionQuantity::displacement: return "displacement";
-  }
-  return "";
-}
-
 MotionSensor::MotionSensor(std::string name, std::vector<std::size_t> spheres, MotionQuantity quantity,
                            const Vec3& component, std::string component_name, std::int64_t interval_steps,
                            const Vec3& position_m)
@@ -43,7 +27,7 @@ double MotionSensor::sample(const Model& model) const {
 
 signal::Signal MotionSensor::signal(double dt_s) const {
   const bool a = quantity_ == MotionQuantity::acceleration, v = quantity_ == MotionQuantity::velocity;
-  return recorded(to_string(quantity_), a ? "m/s^2" : v ? "m/s" : "m", component_name_, a ? 0.0 : v ? 0.5 * dt_s : dt_s,
+  return recorded(to_string(quantity_), si_unit(quantity_), component_name_, a ? 0.0 : v ? 0.5 * dt_s : dt_s,
                   dt_s, std::array<double, 3>{position_.x, position_.y, position_.z});
 }
 
@@ -56,7 +40,7 @@ std::string MotionSensor::description() const {
 namespace {
 
 void read_motion_sensor(SceneKeys& k, SensorSpec& spec, const std::string& quantity, const std::vector<ActuatorSpec>&) {
-  spec.quantity = parse_motion_quantity(quantity);
+  spec.quantity = experiment::parse_motion_quantity(quantity, k.where() + ".quantity");
   spec.target = read_target(k);
   spec.component = k.text("component", spec.target.kind == SphereTarget::Kind::patch ? "normal" : "");
   if (spec.component.empty()) throw InputError(k.where() + " needs component (x, -x, ..., magnitude) when it is not on a face");
@@ -69,7 +53,11 @@ void read_motion_sensor(SceneKeys& k, SensorSpec& spec, const std::string& quant
 void register_motion_sensor(Plugins& p) {
   p.sensors.add({
       .name = "motion",
-      .quantities = {"acceleration", "velocity", "displacement"},
+      .quantities = [] {
+        std::vector<std::string> names;
+        for (MotionQuantity q : experiment::motion_quantities) names.push_back(to_string(q));
+        return names;
+      }(),
       .summary = "acceleration, velocity or displacement averaged over the spheres under a patch (or one sphere)",
       .keys = {{"component", "", 0, 0, "normal | line | x | -x | ... | magnitude"},
                {"sample_interval_ns", "ns", 0, 1e12, "time between samples (every step)"}},

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "mesowave/dem/loading/sensor.hpp"
+#include "mesowave/experiment/motion_quantity.hpp"
 
 namespace mesowave::dem {
 
-enum class MotionQuantity { acceleration, velocity, displacement };
-MotionQuantity parse_motion_quantity(const std::string& text);  ///< InputError otherwise
-std::string to_string(MotionQuantity q);
+/// The lab's quantity (experiment/motion_quantity.hpp: its one parser, names and units).
+using experiment::MotionQuantity;
 
 class MotionSensor : public Sensor {
 public:

@@ -113,9 +113,11 @@ Packing generated(const PackingRequest& o, PackedSpecimen& out, const std::funct
   options.force_tolerance = require_positive("--force-tolerance", o.force_tolerance);
   options.overlap_stiffening = require_in_range("--overlap-stiffening", o.overlap_stiffening, 0, 1000);
   out.threads = use_threads(o.threads);
+  // The progress callback runs inside generate_packing, after this block: what it keeps
+  // between calls lives here, not in the block (ASan: stack-use-after-scope, make test-sanitize).
+  std::optional<double> first;
+  double shown = 0;
   if (progress) {
-    std::optional<double> first;
-    double shown = 0;
     options.progress = [&, tolerance = options.force_tolerance](std::size_t, double residual) {
       if (!first) first = std::max(residual, tolerance * 10);
       const double done = residual > 0 ? std::log(*first / residual) / std::log(*first / tolerance) : 1.0;

@@ -190,7 +190,7 @@ void add_experiment_transducers(Scene& s, const experiment::Experiment& e,
       SensorSpec m;
       m.kind = "motion";
       m.name = t.name;
-      m.quantity = parse_motion_quantity(t.quantity);
+      m.quantity = t.quantity;
       m.component = t.component;
       m.target = target;
       s.sensors.push_back(std::move(m));

@@ -67,11 +67,15 @@ struct ActuatorSpec {
   double ramp_s = 0;                ///< velocity, wall: the time over which the velocity is reached
 };
 
+/// A scene's [[sensor]]: a registered kind over a set of spheres, with its own quantity and
+/// sampling interval. The FEM's recording point is another concept with another name
+/// (fem::ProbePoint, fem/case.hpp: one node, the case's quantity); both come from the lab's
+/// experiment::Transducer where a scene or a case takes an experiment.
 struct SensorSpec {
   std::string kind = "motion";  ///< a registered sensor kind (plugins.hpp): motion | force | strain | broken_bonds
   std::string name;
   std::string actuator;  ///< kind force: the actuator whose force it records
-  MotionQuantity quantity = MotionQuantity::acceleration;
+  MotionQuantity quantity = MotionQuantity::acceleration;  ///< kind motion (experiment/motion_quantity.hpp)
   std::string component = "normal";  ///< normal (outward, needs a face) | line | x | -x | ... | magnitude
   SphereTarget target;
   SphereTarget ends[2];              ///< kind strain: the extensometer's two pads
