@@ -21,9 +21,10 @@ double p_wave_modulus(const WaveStripOptions& o) { return o.E_Pa * (1 - o.nu) / 
 
 }  // namespace
 
-std::vector<DispersionPoint> stencil_dispersion(const WaveStripOptions& o, int count, double dt_s) {
+std::vector<DispersionPoint> stencil_dispersion(const WaveStripOptions& o, const std::vector<double>& khs, double dt_s) {
   require_positive("spacing", o.spacing_m, "m");
-  if (count < 1) throw InputError("dispersion points (" + std::to_string(count) + ") must be >= 1");
+  for (double kh : khs)
+    if (!(kh > 0 && kh <= M_PI)) throw InputError("wavenumber k h (" + format_number(kh) + ") must lie in (0, pi]");
   // A square patch wide enough that the centre node's row is the infinite grid's: every node within
   // two support radii of it present (the shape functions at its points depend on those).
   const int half = int(std::ceil(2 * o.support_scale)) + 2;
@@ -37,8 +38,8 @@ std::vector<DispersionPoint> stencil_dispersion(const WaveStripOptions& o, int c
   const std::size_t I = std::size_t(half) * std::size_t(cells + 1) + std::size_t(half);  // centre node
   const double c_p = std::sqrt(p_wave_modulus(o) / o.density_kg_m3);
   std::vector<DispersionPoint> out;
-  for (int q = 1; q <= count; ++q) {
-    const double kh = M_PI * q / count, k = kh / h;
+  for (double kh : khs) {
+    const double k = kh / h;
     double k_hat = 0;
     for (Eigen::SparseMatrix<double>::InnerIterator it(K, Eigen::Index(2 * I)); it; ++it)
       if (it.row() % 2 == 0)  // K^xx_JI (symmetric)

@@ -43,8 +43,8 @@ struct DispersionPoint {
   double with_time_step = 0;     ///< the same with the central difference at `dt` (0 if unstable)
 };
 /// The stencil's dispersion relation (see above) of a regular grid with `o`'s spacing and MLS, at
-/// `count` wavenumbers kh = pi i / count, i = 1 .. count, and the time step `dt_s`.
-std::vector<DispersionPoint> stencil_dispersion(const WaveStripOptions& o, int count, double dt_s);
+/// the wavenumbers `kh` (times the spacing; each in (0, pi]) and the time step `dt_s` (0: none).
+std::vector<DispersionPoint> stencil_dispersion(const WaveStripOptions& o, const std::vector<double>& kh, double dt_s);
 
 struct WaveStripResult {
   DynamicsResult run;
