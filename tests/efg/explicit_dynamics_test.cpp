@@ -89,10 +89,13 @@ TEST(ExplicitDynamics, LumpedMassIsTheConsistentRowSumAndKeepsTheTotal) {
   const double total = kConcrete.density_kg_m3 * kConcrete.thickness_m * 0.2 * 0.04;
   EXPECT_NEAR(m.sum(), total, 1e-12 * total);
   EXPECT_GT(m.minCoeff(), 0.0);
-  // An interior node carries about rho t h^2 (10 mm spacing): the MLS spreads it, the sum is exact.
+  // A node far from the edges (two support radii) of a regular grid: all its neighbours are its
+  // translates and sum to 1, so its row sum is rho t h^2 up to the 2 x 2 rule's error on the rational MLS.
+  Strip wide(0.12, 0.12, 12, 12);
   const double h2 = kConcrete.density_kg_m3 * kConcrete.thickness_m * 1e-4;
-  const Eigen::Index centre = 2 * 21 + 10;
-  EXPECT_NEAR(m[centre] / h2, 1.0, 0.05);
+  EXPECT_NEAR(lumped_mass(wide.model)[6 * 13 + 6] / h2, 1.0, 2e-3);
+  // Beside the edge the MLS reaches fewer nodes: the strip's middle row, 2 spacings from both edges.
+  EXPECT_NEAR(m[2 * 21 + 10] / h2, 0.946, 1e-3);
 }
 
 TEST(ExplicitDynamics, InternalForceOfTheLinearLawIsKu) {
@@ -186,13 +189,13 @@ TEST(ExplicitDynamics, MultipliersGiveTheReducedSchemeAndHoldTheRollers) {
 }
 
 TEST(ExplicitDynamics, EnergyBalanceIsTheShadowEnergyAndHoldsToRoundOff) {
-  Strip s(0.2, 0.03, 20, 3);
+  Strip s(0.2, 0.03, 40, 6);
   const ExplicitDynamics dyn(s.model, s.linear, &s.constraints, s.end_load(pulse()));
   DynamicsOptions o;
   o.dt_fraction = 0.9;
   o.duration_s = 100e-6;  // the pulse in, along and reflected
   const DynamicsResult r = dyn.run(o);
-  ASSERT_GT(r.steps, 100);
+  ASSERT_GT(r.steps, 40);  // 48 steps of 2.1 us
   EXPECT_LT(r.energy_drift, 1e-10);
   // The pulse is over: the work done stays in the strip (W_ext constant), KE + W_int = W_ext.
   const EnergySample& e = r.energy.back();
@@ -264,7 +267,7 @@ TEST(ExplicitDynamics, PressureHistoriesAndTheUnitLoad) {
   EXPECT_EQ(t(0), 0.0);
   EXPECT_DOUBLE_EQ(t(10e-6), 1e6);
   EXPECT_DOUBLE_EQ(t(15e-6), 2e6);
-  EXPECT_DOUBLE_EQ(t(30e-6), 2e6 * 20.0 / 30.0);
+  EXPECT_DOUBLE_EQ(t(30e-6), 2e6 * 15.0 / 30.0);  // 25 us in: 15 of the 30 us fall left
   EXPECT_EQ(t(45e-6), 0.0);
   const FriedlanderPulse f{1e6, 20e-6, 1.5, 0};
   EXPECT_DOUBLE_EQ(f(0), 1e6);

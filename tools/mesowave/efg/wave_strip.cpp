@@ -2,7 +2,7 @@
 
 #include <chrono>
 #include <cmath>
-#include <memory>
+#include <optional>
 
 #include "mesowave/core/check.hpp"
 
@@ -105,17 +105,17 @@ WaveStripResult run_wave_strip(const WaveStripOptions& o) {
   const Discretisation disc = rectangular_grid(body, nx, ny, o.gauss);
   const MlsApproximation mls(disc.nodes, support_radii_by_spacing(disc.nodes, disc.spacing_m, o.support_scale), o.mls);
   const ElasticModel model(disc, material, mls);
-  std::vector<EdgeConstraint> edges;
+  std::optional<ConstraintSet> rollers;
   if (o.rollers) {
     const auto zero = [](const Vec2&) { return 0.0; };
-    edges.push_back({{Vec2(0, 0), Vec2(o.length_m, 0)}, 1, zero, "roller y = 0"});
-    edges.push_back({{Vec2(0, o.width_m), Vec2(o.length_m, o.width_m)}, 1, zero, "roller y = W"});
+    rollers.emplace(model, std::vector<PointConstraint>{},
+                    std::vector<EdgeConstraint>{{{Vec2(0, 0), Vec2(o.length_m, 0)}, 1, zero, "roller y = 0"},
+                                                {{Vec2(0, o.width_m), Vec2(o.length_m, o.width_m)}, 1, zero, "roller y = W"}});
   }
-  const ConstraintSet constraints(model, {}, edges);
   const LinearElasticPoint linear(material);
   const PointMaterial& law = o.material ? *o.material : linear;
   // The end x = 0, walked from (0, W) to (0, 0): the body on its left.
-  const ExplicitDynamics dyn(model, law, &constraints, {{{Vec2(0, o.width_m), Vec2(0, 0)}, pressure, "end x = 0"}});
+  const ExplicitDynamics dyn(model, law, rollers ? &*rollers : nullptr, {{{Vec2(0, o.width_m), Vec2(0, 0)}, pressure, "end x = 0"}});
   r.setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.nodes = disc.nodes.size();
   r.points = disc.points.size();
