@@ -9,8 +9,8 @@
 // the same for u_x and u_y. It keeps the total mass rho t A exactly and needs no nodal volumes (a
 // Voronoi area is not what a non-interpolating MLS parameter carries). MLS functions of a linear
 // basis are NOT positive everywhere (they dip below zero near the edge of their support), so m_I > 0
-// is not guaranteed by construction: it holds on the regular grids of the tests (each m_I within a
-// few per cent of rho t h^2 inside, see tests/efg/explicit_dynamics_test), and a node whose row sum
+// is not guaranteed by construction: it holds on the regular grids of the tests (an interior m_I is
+// rho t h^2 to 2e-3, one two spacings from an edge 0.946 of it: tests/efg/explicit_dynamics_test), and a node whose row sum
 // is <= 0 is refused (InputError naming the node) instead of giving a negative or infinite 1/m.
 //
 // Time stepping: central differences with half-step velocities (Belytschko, Liu, Moran, "Nonlinear
