@@ -3,6 +3,8 @@
 // nothing written.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "support/run_tool.hpp"
@@ -134,6 +136,25 @@ TEST(MwEfg, LabDataReachesTheLawAsTheExplicitOptionsDo) {
   EXPECT_NEAR(exponential["w_max_mm"].get<double>(), 3 * 113.0 / 2.4e6 * 1e3, 1e-12);  // Eq. (20)
 }
 
+TEST(MwEfg, WaveWritesHistoriesSummaryAndSnapshots) {
+  TempDir dir;
+  const auto r = run_tool("mw-efg", {"wave", "--length-mm", "200", "--spacing-mm", "10", "--sensor-mm", "50", "--sensor-mm",
+                                     "150", "--history", (dir / "h.csv").string(), "--snapshots", (dir / "vtk").string(),
+                                     "--snapshot-stride", "20", "--threads", "1", "--out", (dir / "w.json").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(read_file(dir / "w.json"));
+  EXPECT_LT(j["energy_drift"].get<double>(), 1e-12);
+  EXPECT_LE(j["dt_us"].get<double>(), j["stable_dt_us"].get<double>());
+  EXPECT_NEAR(j["c_p_m_s"].get<double>(), std::sqrt(30e9 * 0.8 / (1.2 * 0.6) / 2400), 1e-6);
+  const std::int64_t steps = j["steps"];
+  const std::string h = read_file(dir / "h.csv");
+  EXPECT_EQ(h.rfind("t_us,x0_sigma_xx_MPa,x0_sigma_yy_MPa,x0_v_x_m_s,x0_v_y_m_s,x1_sigma_xx_MPa", 0), 0u);
+  EXPECT_EQ(std::int64_t(std::count(h.begin(), h.end(), '\n')), steps + 1);  // header + every step
+  const auto v = run_command(fs::path(MESOWAVE_SOURCE_DIR) / "scripts/check-vtk", {(dir / "vtk/wave.pvd").string()});
+  ASSERT_EQ(v.exit_status, 0) << v.out << v.err;
+  EXPECT_EQ(json::parse(v.out)[0]["datasets"].size(), 2 * std::size_t((steps - 1) / 20 + 2));  // every 20th and the last
+}
+
 TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
   struct Case {
     std::vector<std::string> args;
@@ -157,12 +178,20 @@ TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
       {{"bending", "--notch-x-mm", "460"}, "notch: point 0 (0.46, 0) m lies outside the body"},  // a crack outside the body
       {{"bending", "--notch-x-mm", "0"}, "lies on the boundary"},
       {{"bending", "--notch-x-mm", "150", "--spacing-mm", "10"}, "node column at x = 0.15 m"},
+      {{"wave", "--dt-us", "5"}, "exceeds the stable step"},
+      {{"wave", "--rise-us", "0", "--fall-us", "0"}, "pulse length"},
+      {{"wave", "--pulse", "friedlander", "--positive-us", "0"}, "positive-phase"},
+      {{"wave", "--dt-fraction", "0"}, "fraction"},
+      {{"wave", "--width-mm", "4"}, "at least 2 node spacings"},
+      {{"wave", "--sensor-mm", "900"}, "sensor x"},
+      {{"wave", "--density-kg-m3", "0"}, "density"},
   };
   for (const auto& c : cases) {
     TempDir dir;
     auto args = c.args;
     args.insert(args.end(), {"--out", (dir / "o.json").string()});
     if (c.args[0] == "cantilever") args.insert(args.end(), {"--table", (dir / "t.csv").string()});
+    else if (c.args[0] == "wave") args.insert(args.end(), {"--history", (dir / "h.csv").string(), "--snapshots", (dir / "vtk").string()});
     else args.insert(args.end(), {"--curve", (dir / "c.csv").string(), "--snapshots", (dir / "vtk").string()});
     const auto r = run_tool("mw-efg", args);
     EXPECT_EQ(r.exit_status, 1) << c.args[1] << ": " << r.err;
