@@ -1,10 +1,11 @@
 // mw-efg - the element-free Galerkin solver of the shock-wave concrete paper (Larcher and
 // Stempniewski, Sections 2, 3.1 and 4.1): the elastic validation on Timoshenko & Goodier's
 // cantilever (against the closed form and the Q4 FEM) and the static three-point bending test with
-// a cohesive crack.
+// a cohesive crack; the explicit dynamics (Sections 2.5, 3.2) on a roller strip under a pressure pulse.
 //
 //   mw-efg cantilever --spacing-m 1 --refinements 2 --method both --table cantilever.csv
 //   mw-efg bending --from lab-data/shock-concrete/three-point-bending.toml --law exponential --curve ld.csv
+//   mw-efg wave --length-mm 500 --pulse triangular --peak-MPa 100 --rise-us 10 --fall-us 10 --history h.csv
 #include <cmath>
 #include <optional>
 
@@ -12,7 +13,8 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/threads.hpp"
 #include "mesowave/efg/bending_report.hpp"
-#include "mesowave/efg/cantilever.hpp"
+#include "mesowave/efg/cantilever_command.hpp"
+#include "mesowave/efg/wave_report.hpp"
 #include "mesowave/io/csv.hpp"
 
 using namespace mesowave;
@@ -30,50 +32,25 @@ int main(int argc, char** argv) {
       "  bending     the notched three-point bending beam of Koermeling and Reinhardt under displacement control "
       "(Section 4.1) with a cohesive crack growing from the notch: load-deflection curve and plot, crack path, "
       "ParaView files of the crack, work of fracture against G_f x ligament, the elastic stiffness against the Q4 "
-      "FEM and beam theory, the cost.\n\n"
+      "FEM and beam theory, the cost.\n"
+      "  wave        explicit dynamics (central differences, lumped row-sum mass, the stable step by Lanczos): a "
+      "plane-strain strip with rollers under a triangular or Friedlander pressure on x = 0; sensor histories, the "
+      "peak speed against c_p = sqrt(M/rho), the stencil's dispersion, the energy balance, ParaView snapshots.\n\n"
       "  mw-efg cantilever --spacing-m 2 --refinements 2 --method both --table cantilever.csv --out cantilever.json\n"
       "  mw-efg cantilever --spacing-m 1 --basis quadratic --weight cubic-spline --support-scale 3.5 --gauss 4\n"
       "  mw-efg cantilever --spacing-m 1 --snapshots vtk   (ParaView: open vtk/cantilever.pvd)\n"
       "  mw-efg bending --from lab-data/shock-concrete/three-point-bending.toml --law bilinear --spacing-mm 5 "
-      "--curve ld.csv --plot ld.png --crack-path crack.csv --snapshots vtk --out bending.json");
+      "--curve ld.csv --plot ld.png --crack-path crack.csv --snapshots vtk --out bending.json\n"
+      "  mw-efg wave --spacing-mm 2.5 --pulse friedlander --peak-MPa 50 --positive-us 20 --history h.csv --snapshots vtk");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
   fs::path out, table, snapshots, curve, plot, crack_path;
   int threads = 0;
 
-  // cantilever
-  efg::CantileverBeam beam;
-  efg::CantileverOptions opt;
-  double spacing = 2.0;
-  int refinements = 0;
-  std::string method = "efg", basis = "linear", weight = "quartic-spline";
+  efg::CantileverCommandLine cant_cl;  // cantilever
   auto* cant = cli.add_subcommand("cantilever", "EFG (and FEM) against Timoshenko & Goodier's cantilever");
-  cant->add_option("--length-m", beam.L_m, "Beam length L (clamped at x = 0, loaded at x = L)")->capture_default_str();
-  cant->add_option("--depth-m", beam.D_m, "Beam depth D")->capture_default_str();
-  cant->add_option("--thickness-m", beam.t_m, "Thickness t (plane stress)")->capture_default_str();
-  cant->add_option("--E-Pa", beam.E_Pa, "Young's modulus")->capture_default_str();
-  cant->add_option("--nu", beam.nu, "Poisson's ratio, in (-1, 0.5)")->capture_default_str();
-  cant->add_option("--P-N", beam.P_N, "End load (the parabolic shear's resultant)")->capture_default_str();
-  cant->add_option("--spacing-m", spacing,
-                   "Node spacing of the coarsest run: cells round(L/s) x round(D/s), their corners the nodes")
-      ->capture_default_str();
-  cant->add_option("--refinements", refinements, "Times the spacing is halved (a run each; 0-6)")->capture_default_str();
-  cant->add_option("--method", method, "efg | fem (the Q4 reference) | both")
-      ->check(CLI::IsMember({"efg", "fem", "both"}))->capture_default_str();
-  cant->add_option("--gauss", opt.gauss, "EFG Gauss points per cell direction (the paper: 2)")->capture_default_str();
-  cant->add_option("--basis", basis, "MLS basis: linear (1, x, y) | quadratic, Eq. (2)")->capture_default_str();
-  cant->add_option("--weight", weight, "MLS weight: quartic-spline (Eq. 12) | cubic-spline")->capture_default_str();
-  cant->add_option("--support-scale", opt.support_scale,
-                   "Support radius h_i = scale x spacing, Eq. (10) (2 to 3 for a linear basis)")->capture_default_str();
-  cant->add_option("--support-count", opt.support_count,
-                   "Instead: h_i = --support-factor x the distance to the count-th nearest node (the paper: 4-10)");
-  cant->add_option("--support-factor", opt.support_factor, "With --support-count")->capture_default_str();
-  cant->add_flag("--collocated-clamp", opt.collocated_clamp,
-                 "EFG: the clamp collocated at the edge's nodes instead of weakly (it fails the patch test)");
-  cant->add_option("--table", table, "Runs as CSV: method, cells, nodes, Gauss points, errors, wall time, memory");
-  cant->add_option("--snapshots", snapshots, "Folder for ParaView files of the last (finest) run: cantilever.pvd");
-  cant->add_option("--threads", threads, "Threads (0: the cores the machine is not busy with, core/threads.hpp)");
-  app::add_out_option(*cant, out);
+  efg::add_cantilever_options(*cant, cant_cl);
+  app::add_out_option(*cant, cant_cl.out);
 
   // bending
   efg::BendingCommandLine bending;
@@ -86,9 +63,30 @@ int main(int argc, char** argv) {
   bend->add_option("--threads", threads, "Threads (0: the cores the machine is not busy with, core/threads.hpp)");
   app::add_out_option(*bend, out);
 
+  efg::WaveCommandLine wave_cl;  // wave
+  auto* wave = cli.add_subcommand("wave", "Explicit dynamics: a pressure pulse along a roller strip");
+  efg::add_wave_options(*wave, wave_cl);
+  app::add_out_option(*wave, wave_cl.out);
+
   return tool.run(argc, argv, [&](app::Run& run) {
-    const ThreadChoice thread_choice = use_threads(threads);  // same bits for any count (efg/elastic_model.hpp)
+    // same bits for any count (efg/elastic_model.hpp, efg/explicit_dynamics.hpp)
+    const ThreadChoice thread_choice = use_threads(wave->parsed() ? wave_cl.threads : cant->parsed() ? cant_cl.threads : threads);
     const nlohmann::ordered_json thread_json = {{"count", thread_choice.count}, {"reason", thread_choice.reason}};
+    if (wave->parsed()) {
+      const efg::WaveStripOptions wo = wave_cl.resolve();
+      const auto result = efg::run_wave_strip(wo);
+      const auto o = efg::wave_strip_outputs(wo, result);
+      for (const auto& [name, value, unit] : o.metrics) run.metric(name, value, unit);
+      if (!wave_cl.history.empty()) run.write_text(wave_cl.history, io::to_csv(o.history_header, o.history_rows));
+      if (!wave_cl.snapshots.empty()) {
+        efg::VtkSeries series(wave_cl.snapshots, "wave", [&](const fs::path& p) { return run.output(p); });
+        for (const auto& [t_s, nodes] : result.run.snapshots) series.add(t_s * 1e6, nodes, {});
+        series.finish();
+      }
+      auto summary = o.summary;
+      summary["threads"] = thread_json;
+      return run.emit_json(summary, wave_cl.out);
+    }
     if (bend->parsed()) {
       auto bo = bending.resolve();
       bo.node_snapshots = !snapshots.empty();
@@ -116,27 +114,23 @@ int main(int argc, char** argv) {
       return;
     }
     if (cant->parsed()) {
-      require_positive("--spacing-m", spacing, "m");
-      opt.cells_x = std::max(1, int(std::lround(beam.L_m / spacing)));
-      opt.cells_y = std::max(1, int(std::lround(beam.D_m / spacing)));
-      opt.mls.basis = efg::parse_basis(basis);
-      opt.mls.weight = efg::parse_weight_kind(weight);
-      const auto study = efg::run_cantilever_study(beam, opt, method != "fem", method != "efg", refinements);
+      const auto& c = cant_cl;
+      const auto study = efg::run_cantilever_study(c.beam, c.resolve(), c.method != "fem", c.method != "efg", c.refinements);
       for (const auto& r : study.runs) {
         const std::string key = (r.method == "EFG" ? "efg_" : "fem_") + std::to_string(r.nodes) + "_nodes_";
         run.metric(key + "displacement_error", r.errors.displacement_L2, "");
         run.metric(key + "energy_error", r.errors.energy, "");
         run.metric(key + "wall", r.wall_s, "s");
       }
-      if (!table.empty()) run.write_text(table, io::to_csv(study.table_header, study.table_rows));
-      if (!snapshots.empty()) {
-        efg::VtkSeries series(snapshots, "cantilever", [&](const fs::path& p) { return run.output(p); });
+      if (!c.table.empty()) run.write_text(c.table, io::to_csv(study.table_header, study.table_rows));
+      if (!c.snapshots.empty()) {
+        efg::VtkSeries series(c.snapshots, "cantilever", [&](const fs::path& p) { return run.output(p); });
         series.add(0.0, study.runs.back().snapshot, {});
         series.finish();
       }
       auto summary = study.summary;
       summary["threads"] = thread_json;
-      run.emit_json(summary, out);
+      run.emit_json(summary, c.out);
     }
   });
 }

@@ -11,6 +11,7 @@
 // Leapfrog is stable for dt < 2/sqrt(lambda_max) (undamped); local damping
 // scales an acceleration by up to (1 + alpha_d), so the step refused is the one
 // above 2/sqrt((1 + alpha_d) lambda_max).
+#include "mesowave/core/lanczos.hpp"  // largest_eigenvalue: the Lanczos iteration
 #include "mesowave/dem/engine/model.hpp"
 
 namespace mesowave::dem {
@@ -29,16 +30,5 @@ struct CriticalTimeStep {
 CriticalTimeStep critical_time_step(const Model& model, double min_radius_m, double density_kg_m3, double E_dem_Pa,
                                     double damping);
 
-/// Largest eigenvalue of the symmetric operator `apply` (size n) by Lanczos
-/// with a deterministic start vector; returns the top Ritz value plus its
-/// residual norm (an upper estimate) and the iterations used.
-struct LanczosResult {
-  double ritz = 0, residual = 0;
-  int iterations = 0;
-};
-template <class Apply>
-LanczosResult largest_eigenvalue(std::size_t n, const Apply& apply, int max_iterations = 150, double tolerance = 1e-7);
-
 }  // namespace mesowave::dem
 
-#include "mesowave/dem/engine/time_step_lanczos.hpp"

@@ -1,11 +1,26 @@
 #pragma once
-// Lanczos iteration for the largest eigenvalue (template part of time_step.hpp).
+// Largest eigenvalue of a symmetric operator by Lanczos iteration with a deterministic start vector:
+// the explicit solvers' stable step 2 / sqrt(lambda_max) (dem/engine/time_step for the DEM packing,
+// efg/explicit_dynamics for the EFG model). No reorthogonalisation: only the top Ritz value is
+// wanted, and it converges first. The residual |beta_k s_k| bounds its distance to an eigenvalue,
+// so ritz + residual is an estimate from above (what the solvers' limits use).
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
-namespace mesowave::dem {
+namespace mesowave {
+
+/// The top Ritz value, its residual norm (ritz + residual: an upper estimate) and the iterations used.
+struct LanczosResult {
+  double ritz = 0, residual = 0;
+  int iterations = 0;
+};
+
+/// `apply(x, y)`: y = A x for the symmetric A of size n. Deterministic (fixed start vector).
+template <class Apply>
+LanczosResult largest_eigenvalue(std::size_t n, const Apply& apply, int max_iterations = 150, double tolerance = 1e-7);
+
 
 template <class Apply>
 LanczosResult largest_eigenvalue(std::size_t n, const Apply& apply, int max_iterations, double tolerance) {
@@ -57,4 +72,4 @@ LanczosResult largest_eigenvalue(std::size_t n, const Apply& apply, int max_iter
   return result;
 }
 
-}  // namespace mesowave::dem
+}  // namespace mesowave

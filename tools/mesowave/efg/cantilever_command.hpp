@@ -1,0 +1,27 @@
+#pragma once
+// mw-efg cantilever's options (efg/cantilever: the elastic validation against Timoshenko & Goodier),
+// added to a CLI11 (sub)command like efg/bending_report's, so that the tool's main stays a list of
+// subcommands.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <string>
+
+#include "mesowave/efg/cantilever.hpp"
+
+namespace mesowave::efg {
+
+struct CantileverCommandLine {
+  CantileverBeam beam;
+  CantileverOptions options;
+  double spacing_m = 2.0;
+  int refinements = 0;
+  std::string method = "efg", basis = "linear", weight = "quartic-spline";
+  std::filesystem::path table, snapshots, out;
+  int threads = 0;
+  /// The cells from the spacing (round(L/s) x round(D/s)) and the MLS basis and weight from their
+  /// names; InputError for a spacing <= 0 or an unknown name.
+  CantileverOptions resolve() const;
+};
+void add_cantilever_options(CLI::App& app, CantileverCommandLine& values);
+
+}  // namespace mesowave::efg

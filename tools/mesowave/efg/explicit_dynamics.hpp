@@ -1,0 +1,175 @@
+#pragma once
+// Explicit dynamics of the EFG model (shock paper Sections 2.5, 3.2, 3.3): the semi-discrete
+// equations of Eq. (18) with inertia,
+//   M a = f_ext(t) - f_int(u) - alpha M v,   f_int = sum_g B_g^T sigma_g w_g t,
+// sigma_g = PointMaterial::update(B_g u, state_g) at every Gauss point g of the background cells.
+//
+// Mass: the ROW SUM of the consistent MLS mass, m_I = sum_J int rho phi_I phi_J t dA = int rho phi_I t dA
+// (the MLS functions are a partition of unity, sum_J phi_J = 1), by the model's own Gauss points,
+// the same for u_x and u_y. It keeps the total mass rho t A exactly and needs no nodal volumes (a
+// Voronoi area is not what a non-interpolating MLS parameter carries). MLS functions of a linear
+// basis are NOT positive everywhere (they dip below zero near the edge of their support), so m_I > 0
+// is not guaranteed by construction: it holds on the regular grids of the tests (each m_I within a
+// few per cent of rho t h^2 inside, see tests/efg/explicit_dynamics_test), and a node whose row sum
+// is <= 0 is refused (InputError naming the node) instead of giving a negative or infinite 1/m.
+//
+// Time stepping: central differences with half-step velocities (Belytschko, Liu, Moran, "Nonlinear
+// Finite Elements", Box 6.1), variable step allowed:
+//   v^{n+1/2} = ((1 - c) v^{n-1/2} + dt_n M^-1 (f_ext^n - f_int^n)) / (1 + c),   c = alpha dt_n / 2,
+//   dt_n = (dt_{n-1/2} + dt_{n+1/2}) / 2 (v^{1/2} = dt_{1/2}/2 a^0 at the start, from rest),
+//   u^{n+1} = u^n + dt_{n+1/2} v^{n+1/2}.
+// Damping: none by default; optionally mass-proportional, alpha [1/s] (the mw-fem convention).
+//
+// Essential conditions: the rows C u = d of efg/constraints (ConstraintSet: collocated points and
+// weak edge rows, e.g. the rollers v = 0 of a strip's long sides). The MLS parameters are not nodal
+// displacements, so a row couples several unknowns and "set the constrained dof to zero" does not
+// exist. They are enforced exactly at every step by the forward-increment Lagrange multiplier method
+// (Carpenter, Taylor and Katona 1991, IJNME 32: 103-128): with the unconstrained predictor u*,
+//   lambda = (C M^-1 C^T)^-1 (C u* - d) / dt^2,   u^{n+1} = u* - dt^2 M^-1 C^T lambda,
+// i.e. the velocity is projected M-orthogonally onto C v = 0. This is the same scheme as central
+// differences on the reduced unknowns of ConstraintSet (u = T q + g with the consistent reduced mass
+// T^T M T; tested), keeps M diagonal and needs one small dense factorisation of C M^-1 C^T (one row per
+// boundary hat). The constraint forces do no work (C v = 0), so the energy balance below holds.
+//
+// Stable step: dt_crit = 2 / omega_max, omega_max^2 the largest eigenvalue of M^-1 K on the
+// constrained space (K of the linear law D, ElasticModel::stiffness), by Lanczos (core/lanczos) on
+// Q M^-1/2 K M^-1/2 Q, Q the orthogonal projector onto C M^-1/2 y = 0; the top Ritz value plus its
+// residual (an estimate from above, as the DEM's). A step dt_s above dt_crit is refused (InputError
+// naming both); dt_s = 0 takes dt_fraction x dt_crit. When a PointMaterial stiffens (modulus_scale > 1,
+// the Y-function's Eq. (24)), the step is dt = dt_base / sqrt(max(1, s_max)), s_max the largest
+// modulus_scale over the Gauss points, re-read every `stiffness_check_every` steps (and at step 0).
+// This is the bound omega_max(K_t) <= sqrt(s_max) omega_max(K) for a tangent D_t <= s_max D at every
+// point; between checks a point may stiffen further, which dt_fraction < 1 covers (state both).
+//
+// Energy: with the half-step velocities,
+//   KE^{n+1/2} = 1/2 v^{n+1/2}.M v^{n+1/2},
+//   W^{n+1/2} = W^{n-1/2} + f^n . (dt_n / 2)(v^{n-1/2} + v^{n+1/2}) for f = f_int, f_ext and the damping force,
+// and KE + W_int + W_damp - W_ext = 0 up to round-off for any dt sequence and material. For a linear
+// law and a constant step W_int^{n+1/2} = 1/2 u^n.K u^{n+1}: the balance is then the central
+// difference's conserved shadow energy (tested against the assembled K), not 1/2 u.K u + KE.
+// drift = max |KE + W_int + W_damp - W_ext| / max(W_ext, KE) over the run.
+//
+// Parallelism and bits: the Gauss points (strain, PointMaterial::update, sigma w t) in parallel, each
+// point writing its own entry; then each node gathers its points' B^T sigma w t in point order (a fixed
+// per-node list): f_int has the same bits for any thread count, and so have the dof updates (one
+// thread per dof) and the energies (partial sums over fixed blocks of dofs, added in block order).
+//
+// Guards: after every step a displacement that is not finite or beyond `displacement_bound_m`
+// (0: the body's diagonal - no small-strain solution moves that far) stops the run with an InputError
+// naming the step, the time, the node and its position. Nothing of the run is returned.
+#include <Eigen/Core>
+#include <Eigen/Cholesky>
+#include <Eigen/SparseCore>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mesowave/efg/constraints.hpp"
+#include "mesowave/efg/elastic_model.hpp"
+#include "mesowave/efg/point_material.hpp"
+#include "mesowave/efg/pressure_load.hpp"
+#include "mesowave/efg/vtk_output.hpp"
+
+namespace mesowave::efg {
+
+/// m_I = int rho phi_I t dA per node [kg] by the model's Gauss points (row sums of the consistent
+/// mass). InputError: density <= 0, a node with m_I <= 0 (named, with its position).
+Eigen::VectorXd lumped_mass(const ElasticModel& model);
+
+struct StableStep {
+  double omega_max_rad_s = 0;        ///< constrained, Lanczos ritz + residual
+  double dt_critical_s = 0;          ///< 2 / omega_max
+  double omega_free_rad_s = 0;       ///< without the constraints (for the report)
+  int iterations = 0;                ///< Lanczos iterations (constrained)
+  std::string method;
+};
+
+/// The stable step of `model` with lumped `mass` (per node) under `constraints` (may be null).
+StableStep stable_step(const ElasticModel& model, const Eigen::VectorXd& mass_per_node, const ConstraintSet* constraints);
+
+/// A point whose velocity and stress are recorded: its own shape functions and its own PointState
+/// (updated every step, so a history-dependent law gives the same stress as at a Gauss point there).
+struct Sensor {
+  std::string name;
+  Vec2 x;
+};
+
+struct SensorSample {
+  Eigen::Vector2d velocity_m_s = Eigen::Vector2d::Zero();  ///< (v^{n-1/2} + v^{n+1/2}) / 2 at t^n
+  Eigen::Vector3d stress_Pa = Eigen::Vector3d::Zero();     ///< Voigt (xx, yy, xy), from u^n
+};
+
+struct EnergySample {
+  double t_s = 0;  ///< t^{n+1/2}
+  double kinetic_J = 0, internal_work_J = 0, external_work_J = 0, damping_J = 0;
+  double balance_J() const { return kinetic_J + internal_work_J + damping_J - external_work_J; }
+};
+
+struct DynamicsOptions {
+  double duration_s = 0;            ///< simulated time; the run stops at the first t^n >= duration
+  double dt_s = 0;                  ///< 0: dt_fraction x the stable step; else refused above it
+  double dt_fraction = 0.9;         ///< in (0, 1]
+  double alpha_damping_per_s = 0;   ///< mass-proportional damping alpha [1/s], >= 0
+  int stiffness_check_every = 10;   ///< steps between re-reading the largest modulus_scale
+  std::int64_t sample_stride = 1;   ///< sensors and energies every this many steps (and the last)
+  std::int64_t snapshot_stride = 0; ///< node snapshots every this many steps (0: none)
+  double displacement_bound_m = 0;  ///< blow-up guard (0: the body's diagonal)
+  std::size_t min_points_per_thread = 2000;  ///< core/threads: fewer points per thread are not worth it
+  bool allow_unstable = false;      ///< tests only: run above the stable step to see the guard stop it
+  std::function<void(std::int64_t step, double t_s)> progress;  ///< now and then, from one thread
+};
+
+struct DynamicsResult {
+  std::vector<double> sample_t_s;                   ///< t^n of each sample
+  std::vector<std::vector<SensorSample>> sensors;   ///< [sensor][sample]
+  std::vector<EnergySample> energy;                 ///< per sample
+  std::vector<std::pair<double, NodeSnapshot>> snapshots;  ///< (t, nodes): u^h and the nearest point's stress
+  std::int64_t steps = 0;
+  double t_end_s = 0;
+  double dt_first_s = 0, dt_min_s = 0;  ///< the base step, the smallest used (after stiffening)
+  double max_modulus_scale = 1;         ///< the largest over points and time
+  double energy_drift = 0;              ///< see the header: max |balance| / max(W_ext, KE)
+  double max_constraint_violation_m = 0;  ///< max |C u - d| over the steps
+  StableStep stable;
+  double wall_s = 0;
+  int threads = 1;
+  Eigen::VectorXd u, u_previous, v;     ///< u^N, u^{N-1}, v^{N-1/2} (MLS parameters)
+};
+
+class ExplicitDynamics {
+ public:
+  /// `model`, `material` and `constraints` (may be null) must outlive this object. Computes the
+  /// lumped mass, the unit load vectors, the constraint factor and the stable step (InputError: a
+  /// mass <= 0, a load edge of no length, C M^-1 C^T not positive definite).
+  ExplicitDynamics(const ElasticModel& model, const PointMaterial& material, const ConstraintSet* constraints,
+                   std::vector<PressureLoad> loads);
+
+  const Eigen::VectorXd& mass_per_node() const { return mass_; }
+  const StableStep& stable() const { return stable_; }
+  /// f_int(u) = sum_g B^T sigma(B u) w t, updating `states` (one per Gauss point). For the linear law
+  /// it equals K u to round-off (tested). Parallel, the same bits for any thread count.
+  Eigen::VectorXd internal_force(const Eigen::VectorXd& u, std::vector<PointState>& states) const;
+  /// f_ext(t) = sum_l p_l(t) f_1,l.
+  Eigen::VectorXd external_force(double t_s) const;
+  /// Runs from rest (u = v = 0, fresh PointStates). InputError: bad options (one line each), a step
+  /// above the stable one, a blow-up (step, time, node named); a sensor the MLS refuses.
+  DynamicsResult run(const DynamicsOptions& options, const std::vector<Sensor>& sensors = {}) const;
+
+ private:
+  const ElasticModel* model_;
+  const PointMaterial* material_;
+  const ConstraintSet* constraints_;
+  std::vector<PressureLoad> loads_;
+  std::vector<Eigen::VectorXd> unit_loads_;
+  Eigen::VectorXd mass_, inv_mass_dof_;
+  Eigen::LLT<Eigen::MatrixXd> schur_;             ///< of C M^-1 C^T
+  Eigen::SparseMatrix<double, Eigen::RowMajor> C_;
+  StableStep stable_;
+  // per node: (point, local index) of the points whose support holds it, ascending points
+  std::vector<std::int64_t> gather_start_;
+  std::vector<std::int32_t> gather_point_, gather_local_;
+  double body_diagonal_m_ = 0;
+};
+
+}  // namespace mesowave::efg

@@ -1,0 +1,44 @@
+#pragma once
+// What mw-efg wave reads and writes (efg/wave_strip): the options in the units a user types (mm, us,
+// MPa, GPa), the JSON summary (steps, dt against the stable step, energy drift, the peak's travel
+// speed against c_p, the stencil's dispersion, the cost), the sensors' histories as CSV and the node
+// snapshots for ParaView.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "mesowave/efg/wave_strip.hpp"
+
+namespace mesowave::efg {
+
+struct WaveCommandLine {
+  double length_mm = 500, width_mm = 40, spacing_mm = 5, thickness_mm = 1000;
+  double E_GPa = 30, nu = 0.2, density_kg_m3 = 2400;
+  std::string pulse = "triangular", basis = "linear", weight = "quartic-spline";
+  double peak_MPa = 100, rise_us = 10, fall_us = 10, start_us = 0, positive_us = 20, decay = 1;
+  double duration_us = 0, dt_us = 0, dt_fraction = 0.9, alpha_per_s = 0;
+  double support_scale = 2.5;
+  int gauss = 2, stiffness_check_every = 10;
+  std::int64_t sample_stride = 1, snapshot_stride = 0;
+  bool free_sides = false;
+  std::vector<double> sensor_mm;
+  std::filesystem::path history, snapshots, out;
+  int threads = 0;
+  /// The options in SI (InputError naming a value that is out of range).
+  WaveStripOptions resolve() const;
+};
+/// The options, --history, --snapshots and --threads on `app` (the tool adds --out) (mw-efg's `wave` subcommand).
+void add_wave_options(CLI::App& app, WaveCommandLine& values);
+
+struct WaveOutputs {
+  nlohmann::ordered_json summary;
+  std::vector<std::tuple<std::string, double, std::string>> metrics;  ///< (name, value, unit)
+  std::vector<std::string> history_header;  ///< t_us, then per sensor sigma_xx_MPa, sigma_yy_MPa, v_x_m_s, v_y_m_s
+  std::vector<std::vector<std::string>> history_rows;
+};
+WaveOutputs wave_strip_outputs(const WaveStripOptions& options, const WaveStripResult& result);
+
+}  // namespace mesowave::efg
