@@ -30,6 +30,12 @@ double breaking_time(const CompressionLaw& law, double p, double dp, double tau)
   return f2 * dp > 0 ? tau + 2 * f1 * f1 / (f2 * dp) : inf;
 }
 
+void check_pulse(const TriangularPulse& pulse) {
+  pulse.validate();
+  require_positive("pulse peak", pulse.peak_Pa, "Pa");
+  require_positive("pulse rise time", pulse.rise_s, "s");
+}
+
 }  // namespace
 
 LinearCompression::LinearCompression(double M_Pa) : M_(require_positive("modulus M", M_Pa, "Pa")) {}
@@ -44,20 +50,6 @@ HugoniotCompression::HugoniotCompression(double M_Pa, const HugoniotParameters& 
 double HugoniotCompression::pressure_Pa(double s) const { return M_ * hugoniot_compression_integral(-s, p_); }
 double HugoniotCompression::tangent_Pa(double s) const { return M_ * hugoniot_Y(-s, p_); }
 double HugoniotCompression::curvature_Pa(double s) const { return M_ * hugoniot_dY_dcompression(-s, p_); }
-
-void TriangularPulse::validate() const {
-  require_positive("pulse peak", peak_Pa, "Pa");
-  require_positive("pulse rise time", rise_s, "s");
-  require_finite("pulse duration", duration_s, "s");
-  if (duration_s <= rise_s)
-    throw InputError("pulse duration (" + format_quantity(duration_s, "s") + ") must exceed its rise time (" +
-                     format_quantity(rise_s, "s") + ")");
-}
-
-double TriangularPulse::pressure_Pa(double t) const {
-  if (t <= 0 || t >= duration_s) return 0;
-  return t <= rise_s ? peak_Pa * t / rise_s : peak_Pa * (duration_s - t) / (duration_s - rise_s);
-}
 
 double wave_speed_m_s(const CompressionLaw& law, double density_kg_m3, double s) {
   require_positive("density", density_kg_m3, "kg/m3");
@@ -82,7 +74,7 @@ double compression_at_pressure(const CompressionLaw& law, double p_Pa) {
 }
 
 ShockFormation shock_formation(const CompressionLaw& law, double rho, const TriangularPulse& pulse, int samples) {
-  pulse.validate();
+  check_pulse(pulse);
   require_positive("density", rho, "kg/m3");
   if (samples < 2) throw InputError("shock_formation samples (" + std::to_string(samples) + ") must be >= 2");
   ShockFormation best;
@@ -92,10 +84,11 @@ ShockFormation shock_formation(const CompressionLaw& law, double rho, const Tria
     double a, b, p_a, dp;
     bool loading;
   };
-  const double fall_rate = -pulse.peak_Pa / (pulse.duration_s - pulse.rise_s);
-  const Phase phases[2] = {{0, pulse.rise_s, 0, pulse.peak_Pa / pulse.rise_s, true},
-                           {pulse.rise_s, pulse.duration_s, pulse.peak_Pa, fall_rate, false}};
+  const double t0 = pulse.start_s, t1 = t0 + pulse.rise_s, t2 = t1 + pulse.fall_s;
+  const Phase phases[2] = {{t0, t1, 0, pulse.peak_Pa / pulse.rise_s, true},
+                           {t1, t2, pulse.peak_Pa, pulse.fall_s > 0 ? -pulse.peak_Pa / pulse.fall_s : 0, false}};
   for (const Phase& ph : phases) {
+    if (ph.b <= ph.a) continue;  // an instant drop: its levels leave together and fan out
     const auto t_of = [&](double tau) { return breaking_time(law, ph.p_a + ph.dp * (tau - ph.a), ph.dp, tau); };
     const double h = (ph.b - ph.a) / samples;
     int i_min = -1;
@@ -135,14 +128,14 @@ ShockFormation shock_formation(const CompressionLaw& law, double rho, const Tria
 
 ShockFormation traced_first_crossing(const CompressionLaw& law, double rho, const TriangularPulse& pulse, int count,
                                      bool all_pairs) {
-  pulse.validate();
+  check_pulse(pulse);
   require_positive("density", rho, "kg/m3");
   if (count < 2) throw InputError("characteristic count (" + std::to_string(count) + ") must be >= 2");
   std::vector<Ray> rays;
   rays.reserve(count + 1);
   for (int i = 0; i <= count; ++i) {
-    const double tau = pulse.duration_s * i / count;
-    rays.push_back(ray(law, rho, pulse.pressure_Pa(tau), tau));
+    const double tau = pulse.start_s + pulse.duration_s() * i / count;
+    rays.push_back(ray(law, rho, std::max(0.0, pulse(tau)), tau));
   }
   ShockFormation best;
   double best_t = inf;
@@ -157,7 +150,7 @@ ShockFormation traced_first_crossing(const CompressionLaw& law, double rho, cons
       best.emitted_at_s = a.tau;
       best.compression = a.s;
       best.wave_speed_m_s = a.c;
-      best.loading = a.tau < pulse.rise_s;
+      best.loading = a.tau < pulse.start_s + pulse.rise_s;
     }
   };
   for (std::size_t i = 0; i + 1 < rays.size(); ++i) {

@@ -8,7 +8,9 @@
 // 1D bar with the constrained modulus), at rest, density rho; compression s = -du/dx >= 0 and the
 // compressive stress p = f(s), f' > 0 (CompressionLaw). The end x = 0 carries the pressure p(t)
 // (TriangularPulse). The equations rho dv/dt = -dp/dx, ds/dt = -dv/dx are hyperbolic with the
-// speeds +-c(s), c = sqrt(f'(s) / rho), and the Riemann invariants v -+ integral of c ds.
+// speeds +-c(s), c = sqrt(f'(s) / rho), and the Riemann invariants v -+ integral of c ds. The
+// pulse is the explicit solver's TriangularPulse (efg/pressure_load: peak, rise, fall, start);
+// here with peak > 0 and rise > 0 (a rise of 0 is a shock from the start: no formation to find).
 //
 // Simple wave. Into material at rest, s is constant along each C+ characteristic, so each is the
 // straight line x = c(tau) (t - tau) leaving the end at the time tau with s(tau) = f^-1(p(tau)).
@@ -46,6 +48,7 @@
 //   nonlinear elastic law (HugoniotParameters::unloading = false), which Eq. (27)'s straight
 //   unloading does not have. shock_formation() reports which came first (ShockFormation::loading).
 #include "mesowave/efg/hugoniot.hpp"
+#include "mesowave/efg/pressure_load.hpp"  // TriangularPulse, the solver's own load
 
 namespace mesowave::efg {
 
@@ -96,14 +99,6 @@ class HugoniotCompression final : public CompressionLaw {
   HugoniotParameters p_;
 };
 
-/// p(t) rising linearly from 0 to peak over [0, rise], falling linearly to 0 at `duration`, 0 after.
-struct TriangularPulse {
-  double peak_Pa = 0, rise_s = 0, duration_s = 0;
-  /// InputError: peak <= 0, rise <= 0, duration <= rise (an instant drop), any not finite.
-  void validate() const;
-  double pressure_Pa(double t_s) const;
-};
-
 /// c(s) = sqrt(f'(s) / rho).
 double wave_speed_m_s(const CompressionLaw& law, double density_kg_m3, double s);
 /// f^-1(p) for p >= 0 (bisection on f alone, to 1e-15 relative).
@@ -120,11 +115,12 @@ struct ShockFormation {
 };
 
 /// t_b and x_b from the envelope formula above: T(tau) on `samples` points of the rise and of the
-/// fall each, the smallest refined by golden-section search between its neighbours.
+/// fall each, the smallest refined by golden-section search between its neighbours. InputError:
+/// the pulse invalid (TriangularPulse::validate), its peak or rise not positive.
 ShockFormation shock_formation(const CompressionLaw& law, double density_kg_m3, const TriangularPulse& pulse,
                                int samples = 20000);
 
-/// The second method: `count` + 1 characteristics emitted at tau_i = duration i / count, each
+/// The second method: `count` + 1 characteristics emitted at tau_i = start + duration i / count, each
 /// traced as its straight line, the earliest crossing of consecutive ones (`all_pairs`: of any
 /// two, O(count^2)). Its error is of the order of the spacing duration / count.
 ShockFormation traced_first_crossing(const CompressionLaw& law, double density_kg_m3, const TriangularPulse& pulse,
