@@ -109,6 +109,20 @@ TEST(Characteristics, TheYFunctionLawAgainstTracing) {
   EXPECT_NEAR(shock_speed_m_s(law, rho, 0, 0.2), std::sqrt(M * 0.22632268541287942 / (rho * 0.2)), 1e-9);
 }
 
+TEST(Characteristics, QuadraticPointMaterialIsTheLawUnderUniaxialStrain) {
+  const ElasticMaterial2D m{20e9, 0.2, 1.0, rho, PlaneState::plane_strain};
+  const QuadraticStiffeningPoint point(m, 10);
+  const QuadraticStiffening law(m.D()(0, 0), 10);
+  for (int steps : {1, 9}) {
+    PointState st;
+    st.strain = Eigen::Vector3d(0.004, 0, 0);  // from tension, through zero, into compression
+    st.stress = m.D() * st.strain;
+    for (int i = 1; i <= steps; ++i) point.update(Eigen::Vector3d(0.004 - 0.024 * i / steps, 0, 0), st);
+    EXPECT_NEAR(-st.stress(0), law.pressure_Pa(0.02), 1e-12 * law.pressure_Pa(0.02)) << steps;
+    EXPECT_DOUBLE_EQ(st.modulus_scale, 1 + 2 * 10 * 0.02);
+  }
+}
+
 TEST(Characteristics, InversionAndBadInput) {
   const QuadraticStiffening law(M, 10);
   for (double s : {1e-6, 0.01, 0.3}) EXPECT_NEAR(compression_at_pressure(law, law.pressure_Pa(s)), s, 1e-14 * s + 1e-18);

@@ -82,3 +82,46 @@ TEST(ShockSteepening, YFunctionStripAgainstCharacteristics) {
 
 }  // namespace
 }  // namespace mesowave::efg
+
+namespace mesowave::efg {
+namespace {
+
+// The smooth law p = M s (1 + beta s), beta = 40, 0.5 GPa, 20/20 us: the front breaks first, at
+// x_b = c_0 M t_r / (beta p_max) = 67.6 mm; before it the 10-90 % width follows the simple wave.
+TEST(ShockSteepening, QuadraticStripAgainstTheClosedForm) {
+  const double E = 20e9, nu = 0.2, rho = 2400, peak = 0.5e9, rise = 20e-6, beta = 40;
+  WaveStripOptions o;
+  o.length_m = 0.3;
+  o.width_m = 0.012;
+  o.spacing_m = 1e-3;
+  o.E_Pa = E;
+  o.nu = nu;
+  o.density_kg_m3 = rho;
+  o.triangular = {peak, rise, 20e-6, 0};
+  o.sensor_x_m = {0.01, 0.03, 0.05, 0.1, 0.15, 0.2};
+  o.dynamics.duration_s = 95e-6;
+  const ElasticMaterial2D m{E, nu, 1.0, rho, PlaneState::plane_strain};
+  const QuadraticStiffeningPoint law(m, beta);
+  o.material = &law;
+  const WaveStripResult r = run_wave_strip(o);
+  const double M = m.D()(0, 0), c0 = std::sqrt(M / rho);
+  const QuadraticStiffening reference(M, beta);
+  const double x_b = c0 * M * rise / (beta * peak);
+  const double p_lo = 0.1 * peak, p_hi = 0.9 * peak;
+  const double c_lo = wave_speed_m_s(reference, rho, compression_at_pressure(reference, p_lo));
+  const double c_hi = wave_speed_m_s(reference, rho, compression_at_pressure(reference, p_hi));
+  std::printf("quadratic: x_b = %.4g mm; steps %lld, max modulus_scale %.3g, drift %.2g\n", x_b * 1e3,
+              static_cast<long long>(r.run.steps), r.run.max_modulus_scale, r.run.energy_drift);
+  for (std::size_t k = 0; k < o.sensor_x_m.size(); ++k) {
+    const double x = o.sensor_x_m[k];
+    const double width = arrival(r, k, p_hi) - arrival(r, k, p_lo);
+    const double simple = (p_hi - p_lo) / peak * rise + x * (1 / c_hi - 1 / c_lo);
+    std::printf("x = %5.3f m: EFG 10-90 %% width %.3g us, simple wave %.3g us, largest -sigma_xx %.3g GPa\n", x,
+                width * 1e6, simple * 1e6, r.peak_stress_Pa[k] / 1e9);
+    if (x < x_b) EXPECT_NEAR(width, simple, 1.0e-6) << x;
+  }
+  EXPECT_LT(r.run.energy_drift, 1e-9);
+}
+
+}  // namespace
+}  // namespace mesowave::efg

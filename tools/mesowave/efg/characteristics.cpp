@@ -43,6 +43,25 @@ LinearCompression::LinearCompression(double M_Pa) : M_(require_positive("modulus
 QuadraticStiffening::QuadraticStiffening(double M_Pa, double beta)
     : M_(require_positive("modulus M", M_Pa, "Pa")), beta_(require_positive("stiffening beta", beta)) {}
 
+QuadraticStiffeningPoint::QuadraticStiffeningPoint(const ElasticMaterial2D& material, double beta)
+    : material_(material), beta_(require_positive("stiffening beta", beta)), D_(material.D()) {}
+
+Eigen::Vector3d QuadraticStiffeningPoint::update(const Eigen::Vector3d& strain, PointState& state) const {
+  // compressions s = max(0, -eps_v) at both ends; g is linear in s, so its mean over the part of the
+  // increment in compression is 1 + beta (s_a + s_b), weighted by that part's share of the increment
+  const double a = -volumetric_strain(state.strain, material_), b = -volumetric_strain(strain, material_);
+  double g = 1 + 2 * beta_ * std::max(0.0, a);
+  if (a != b) {
+    const double lo = std::min(a, b), hi = std::max(a, b), c_lo = std::max(0.0, lo);
+    const double compressed = std::max(0.0, hi - c_lo);  // the length of [lo, hi] with s > 0
+    g = 1 + (compressed > 0 ? beta_ * (c_lo + std::max(0.0, hi)) * compressed / (hi - lo) : 0.0);
+  }
+  state.stress += g * (D_ * (strain - state.strain));
+  state.strain = strain;
+  state.modulus_scale = 1 + 2 * beta_ * std::max(0.0, b);
+  return state.stress;
+}
+
 HugoniotCompression::HugoniotCompression(double M_Pa, const HugoniotParameters& parameters)
     : M_(require_positive("modulus M", M_Pa, "Pa")), p_(parameters) {
   p_.validate();

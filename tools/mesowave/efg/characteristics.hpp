@@ -85,6 +85,21 @@ class QuadraticStiffening final : public CompressionLaw {
   double M_, beta_;
 };
 
+/// The quadratic law as a point material of the explicit solver, for the strip: d sigma = g D d eps
+/// with g = 1 + 2 beta max(0, -eps_v), Y-function style (all of D scaled, the increment's mean of g),
+/// so that uniaxial strain gives exactly -sigma_xx = QuadraticStiffening(D_11, beta).pressure_Pa(s).
+/// Nonlinear elastic (no unloading rule); modulus_scale = g.
+class QuadraticStiffeningPoint final : public PointMaterial {
+ public:
+  QuadraticStiffeningPoint(const ElasticMaterial2D& material, double beta);
+  Eigen::Vector3d update(const Eigen::Vector3d& strain, PointState& state) const override;
+
+ private:
+  ElasticMaterial2D material_;
+  double beta_;
+  Eigen::Matrix3d D_;
+};
+
 /// p = M P(s), the Y-function of Eqs. (24)-(26) under uniaxial strain (eps_v = -s), loading branch
 /// both ways (no Eq. (27)): what HugoniotElastic gives a plane-strain point held laterally.
 class HugoniotCompression final : public CompressionLaw {
