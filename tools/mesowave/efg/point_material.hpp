@@ -16,6 +16,10 @@ struct PointState {
   Eigen::Vector3d strain = Eigen::Vector3d::Zero();  ///< at the last update, Voigt (xx, yy, xy)
   Eigen::Vector3d stress = Eigen::Vector3d::Zero();  ///< at the last update [Pa]
   double max_Y = 1.0;          ///< the largest Y(eps_v) reached on loading, Eq. (27)
+  /// the most compressive volumetric strain reached (<= 0): Eq. (27) needs to tell loading (eps_v
+  /// below it, on the envelope) from unloading and reloading (above it), which max_Y cannot where
+  /// Y < 1 (Eq. (25) dips below 1 past e_v,th)
+  double min_eps_v = 0.0;
   double modulus_scale = 1.0;  ///< tangent stiffness / D() at the last update
 };
 
@@ -23,7 +27,7 @@ class PointMaterial {
  public:
   virtual ~PointMaterial() = default;
   /// The stress [Pa] for the total `strain` (Voigt, engineering shear), updating `state` (its
-  /// strain, stress, max_Y and modulus_scale) for the next call.
+  /// strain, stress, max_Y, min_eps_v and modulus_scale) for the next call.
   virtual Eigen::Vector3d update(const Eigen::Vector3d& strain, PointState& state) const = 0;
 };
 
