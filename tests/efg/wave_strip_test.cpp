@@ -159,7 +159,7 @@ TEST(WaveStrip, HannBurstAgreesWithTheFemOnTheSameBar) {
   fem::ExplicitOptions fo;
   fo.dt_s = 0.9 * m.stable_dt();
   fo.steps = std::int64_t(duration / fo.dt_s);
-  const auto fr = fem::run_explicit(m, load, {{"x", node * 3, fem::Quantity::Velocity, "x", 1.0}}, fo);
+  const auto fr = fem::run_explicit(m, load, {{"x", node * 3, fem::MotionQuantity::velocity, "x", 1.0}}, fo);
   const auto& fv = fr.signals[0].samples;
   double peak = 0, e_efg = 0, e_fem = 0, e_between = 0;
   for (double t = 0; t < duration; t += 0.5e-6) peak = std::max(peak, std::abs(exact(t)));

@@ -163,7 +163,7 @@ TEST(Experiment, TheSteelRodIsTheRodPapers) {
   EXPECT_EQ(outward_normal(e.specimen, s), (std::array<double, 3>{0, 0, 1}));
   EXPECT_EQ(relative_position(e.specimen, a.centre_m), (std::array<double, 3>{0.5, 0.5, 0.0}));  // on the axis
   EXPECT_EQ(relative_position(e.specimen, s.centre_m), (std::array<double, 3>{0.5, 0.5, 1.0}));
-  EXPECT_EQ(s.quantity, "acceleration");
+  EXPECT_EQ(s.quantity, MotionQuantity::acceleration);
   EXPECT_EQ(e.burst.cycles, 5.0);
   EXPECT_EQ(e.burst.frequency_hz, 100e3);
   EXPECT_EQ(e.record.duration_s, 1.5e-3);
