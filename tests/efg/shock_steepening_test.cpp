@@ -22,6 +22,21 @@ namespace mesowave::efg {
 namespace {
 
 /// The first time -sigma_xx reaches `level` at sensor k, interpolated between samples.
+// The 300 x 12 mm plane-strain strip at 1 mm spacing under a 20 us-fall triangular pulse, its
+// sensors at 10-200 mm (both laws' runs).
+WaveStripOptions strip(double E, double nu, double rho, double peak, double rise) {
+  WaveStripOptions o;
+  o.length_m = 0.3;
+  o.width_m = 0.012;
+  o.spacing_m = 1e-3;
+  o.E_Pa = E;
+  o.nu = nu;
+  o.density_kg_m3 = rho;
+  o.triangular = {peak, rise, 20e-6, 0};
+  o.sensor_x_m = {0.01, 0.03, 0.05, 0.1, 0.15, 0.2};
+  return o;
+}
+
 double arrival(const WaveStripResult& r, std::size_t k, double level) {
   const auto& t = r.run.sample_t_s;
   const auto& S = r.run.sensors[k];
@@ -34,15 +49,7 @@ double arrival(const WaveStripResult& r, std::size_t k, double level) {
 
 TEST(ShockSteepening, YFunctionStripAgainstCharacteristics) {
   const double E = 20e9, nu = 0.2, rho = 2400, peak = 2e9, rise = 20e-6;
-  WaveStripOptions o;
-  o.length_m = 0.3;
-  o.width_m = 0.012;
-  o.spacing_m = 1e-3;
-  o.E_Pa = E;
-  o.nu = nu;
-  o.density_kg_m3 = rho;
-  o.triangular = {peak, rise, 20e-6, 0};
-  o.sensor_x_m = {0.01, 0.03, 0.05, 0.1, 0.15, 0.2};
+  WaveStripOptions o = strip(E, nu, rho, peak, rise);
   o.dynamics.duration_s = 95e-6;  // before the reflection from x = 0.3 m returns to 0.2 m
   HugoniotParameters hp;
   hp.unloading = false;
@@ -80,25 +87,12 @@ TEST(ShockSteepening, YFunctionStripAgainstCharacteristics) {
   EXPECT_LT(r.run.energy_drift, 1e-9);
 }
 
-}  // namespace
-}  // namespace mesowave::efg
-
-namespace mesowave::efg {
-namespace {
 
 // The smooth law p = M s (1 + beta s), beta = 40, 0.5 GPa, 20/20 us: the front breaks first, at
 // x_b = c_0 M t_r / (beta p_max) = 67.6 mm; before it the 10-90 % width follows the simple wave.
 TEST(ShockSteepening, QuadraticStripAgainstTheClosedForm) {
   const double E = 20e9, nu = 0.2, rho = 2400, peak = 0.5e9, rise = 20e-6, beta = 40;
-  WaveStripOptions o;
-  o.length_m = 0.3;
-  o.width_m = 0.012;
-  o.spacing_m = 1e-3;
-  o.E_Pa = E;
-  o.nu = nu;
-  o.density_kg_m3 = rho;
-  o.triangular = {peak, rise, 20e-6, 0};
-  o.sensor_x_m = {0.01, 0.03, 0.05, 0.1, 0.15, 0.2};
+  WaveStripOptions o = strip(E, nu, rho, peak, rise);
   o.dynamics.duration_s = 95e-6;
   const ElasticMaterial2D m{E, nu, 1.0, rho, PlaneState::plane_strain};
   const QuadraticStiffeningPoint law(m, beta);

@@ -129,33 +129,44 @@ Eigen::VectorXd ExplicitDynamics::external_force(double t_s) const {
   return f;
 }
 
-Eigen::VectorXd ExplicitDynamics::internal_force(const Eigen::VectorXd& u, std::vector<PointState>& states) const {
+double ExplicitDynamics::point_forces(const Eigen::VectorXd& u, std::vector<PointState>& states,
+                                      std::vector<Eigen::Vector3d>& s, int threads) const {
   const auto& shape = model_->shape_functions();
   const auto& points = model_->discretisation().points;
-  if (states.size() != shape.size()) states.assign(shape.size(), PointState{});
   const double t = model_->material().thickness_m;
-  std::vector<Eigen::Vector3d> s(shape.size());
   const auto np = std::int64_t(shape.size());
-  const int nt = region_threads(shape.size(), 2000);
-#pragma omp parallel for num_threads(nt) schedule(static)
-  for (std::int64_t p = 0; p < np; ++p)
-    s[std::size_t(p)] = material_->update(strain_of(shape[std::size_t(p)], u), states[std::size_t(p)]) *
-                        (t * points[std::size_t(p)].weight_m2);
+  double smax = 1.0;
+#pragma omp parallel for num_threads(threads) schedule(static) reduction(max : smax)
+  for (std::int64_t p = 0; p < np; ++p) {
+    PointState& st = states[std::size_t(p)];
+    s[std::size_t(p)] = material_->update(strain_of(shape[std::size_t(p)], u), st) * (t * points[std::size_t(p)].weight_m2);
+    smax = std::max(smax, st.modulus_scale);
+  }
+  return smax;
+}
+
+Eigen::Vector2d ExplicitDynamics::node_internal_force(std::int64_t i, const std::vector<Eigen::Vector3d>& s) const {
+  const auto& shape = model_->shape_functions();
+  double fx = 0, fy = 0;
+  for (std::int64_t k = gather_start_[std::size_t(i)]; k < gather_start_[std::size_t(i) + 1]; ++k) {
+    const auto p = std::size_t(gather_point_[std::size_t(k)]);
+    const auto a = std::size_t(gather_local_[std::size_t(k)]);
+    fx += shape[p].dphi_dx[a] * s[p][0] + shape[p].dphi_dy[a] * s[p][2];
+    fy += shape[p].dphi_dy[a] * s[p][1] + shape[p].dphi_dx[a] * s[p][2];
+  }
+  return {fx, fy};
+}
+
+Eigen::VectorXd ExplicitDynamics::internal_force(const Eigen::VectorXd& u, std::vector<PointState>& states) const {
+  const std::size_t np = model_->shape_functions().size();
+  if (states.size() != np) states.assign(np, PointState{});
+  std::vector<Eigen::Vector3d> s(np);
+  const int nt = region_threads(np, 2000);
+  point_forces(u, states, s, nt);
   Eigen::VectorXd f(Eigen::Index(model_->dof_count()));
   const auto nn = std::int64_t(model_->mls().node_count());
 #pragma omp parallel for num_threads(nt) schedule(static)
-  for (std::int64_t i = 0; i < nn; ++i) {
-    double fx = 0, fy = 0;
-    for (std::int64_t k = gather_start_[std::size_t(i)]; k < gather_start_[std::size_t(i) + 1]; ++k) {
-      const ShapeFunctions& sf = shape[std::size_t(gather_point_[std::size_t(k)])];
-      const auto a = std::size_t(gather_local_[std::size_t(k)]);
-      const Eigen::Vector3d& sp = s[std::size_t(gather_point_[std::size_t(k)])];
-      fx += sf.dphi_dx[a] * sp[0] + sf.dphi_dy[a] * sp[2];
-      fy += sf.dphi_dy[a] * sp[1] + sf.dphi_dx[a] * sp[2];
-    }
-    f[2 * i] = fx;
-    f[2 * i + 1] = fy;
-  }
+  for (std::int64_t i = 0; i < nn; ++i) f.segment<2>(2 * i) = node_internal_force(i, s);
   return f;
 }
 
@@ -181,10 +192,9 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
   const auto& shape = model_->shape_functions();
   const auto& points = model_->discretisation().points;
   const auto& nodes = model_->mls().nodes();
-  const auto np = std::int64_t(shape.size());
   const auto nn = std::int64_t(nodes.size());
   const auto ndof = Eigen::Index(2 * nn);
-  const double thick = model_->material().thickness_m, alpha = o.alpha_damping_per_s;
+  const double alpha = o.alpha_damping_per_s;
   const int nt = region_threads(shape.size(), o.min_points_per_thread);
   const std::int64_t nblocks = (nn + block_nodes - 1) / block_nodes;
 
@@ -228,13 +238,7 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
 
   for (std::int64_t n = 0; t < o.duration_s; ++n) {
     // Stresses at the points from u^n, each point writing its own entry.
-    double smax = 1.0;
-#pragma omp parallel for num_threads(nt) schedule(static) reduction(max : smax)
-    for (std::int64_t p = 0; p < np; ++p) {
-      PointState& st = states[std::size_t(p)];
-      s[std::size_t(p)] = material_->update(strain_of(shape[std::size_t(p)], u), st) * (thick * points[std::size_t(p)].weight_m2);
-      smax = std::max(smax, st.modulus_scale);
-    }
+    const double smax = point_forces(u, states, s, nt);
     r.max_modulus_scale = std::max(r.max_modulus_scale, smax);
     if (n % o.stiffness_check_every == 0) {  // the stable step of the stiffened law
       dt_half = dt_base / std::sqrt(std::max(1.0, smax));
@@ -246,14 +250,7 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
     // Each node: f_int by its points in point order, f_ext, the unconstrained velocity.
 #pragma omp parallel for num_threads(nt) schedule(static)
     for (std::int64_t i = 0; i < nn; ++i) {
-      double fx = 0, fy = 0;
-      for (std::int64_t k = gather_start_[std::size_t(i)]; k < gather_start_[std::size_t(i) + 1]; ++k) {
-        const auto p = std::size_t(gather_point_[std::size_t(k)]);
-        const auto a = std::size_t(gather_local_[std::size_t(k)]);
-        fx += shape[p].dphi_dx[a] * s[p][0] + shape[p].dphi_dy[a] * s[p][2];
-        fy += shape[p].dphi_dy[a] * s[p][1] + shape[p].dphi_dx[a] * s[p][2];
-      }
-      f_int[2 * i] = fx, f_int[2 * i + 1] = fy;
+      f_int.segment<2>(2 * i) = node_internal_force(i, s);
       for (Eigen::Index d = 2 * i; d < 2 * i + 2; ++d) {
         double fe = 0;
         for (std::size_t l = 0; l < loads_.size(); ++l) fe += p_now[l] * unit_loads_[l][d];

@@ -157,6 +157,13 @@ class ExplicitDynamics {
   DynamicsResult run(const DynamicsOptions& options, const std::vector<Sensor>& sensors = {}) const;
 
  private:
+  /// s_g = sigma_g(B_g u) w_g t at every Gauss point (updating `states`); the largest modulus_scale
+  /// (at least 1). The one stress pass of internal_force and of the time step.
+  double point_forces(const Eigen::VectorXd& u, std::vector<PointState>& states, std::vector<Eigen::Vector3d>& s,
+                      int threads) const;
+  /// Node i's f_int from the points' s_g, summed in point order (the same bits for any thread count).
+  Eigen::Vector2d node_internal_force(std::int64_t i, const std::vector<Eigen::Vector3d>& s) const;
+
   const ElasticModel* model_;
   const PointMaterial* material_;
   const ConstraintSet* constraints_;
