@@ -1,0 +1,227 @@
+#include "mesowave/lab/picker_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
+#include "mesowave/io/csv.hpp"
+#include "mesowave/lab/transducer_record.hpp"
+#include "mesowave/signal/envelope.hpp"
+#include "mesowave/signal/spectrum.hpp"
+
+namespace mesowave::lab {
+
+namespace {
+
+Onset with_picker(const signal::Signal& record, const std::string& picker) {
+  OnsetOptions o;  // mw-upv's defaults (lab::UpvMeasurement)
+  o.picker = picker;
+  return pick_onset(record, o);
+}
+
+Onset after_p(const UpvRecordPair& r, const std::string& picker) {
+  const double t_p = with_picker(r.p_channel, "aic").pick.time_s;  // mw-upv picks t_p first, by its default
+  OnsetOptions o = shear_wave_options(OnsetOptions{}, t_p, 0.0);
+  o.picker = picker;
+  return pick_onset(r.s_channel, o);
+}
+
+// AIC on the envelope rather than the record, in mw-upv's S window: the
+// envelope's second rise, where the S energy adds to the P precursor's.
+Onset envelope_aic_after_p(const UpvRecordPair& r) {
+  Onset located = after_p(r, "envelope-peak");
+  const auto e = signal::envelope(r.s_channel, signal::HilbertOptions{signal::Detrend::mean,
+                                                                       signal::Padding{signal::Padding::Mode::double_length, 0}});
+  signal::AicOptions aic;
+  aic.search = {located.search_begin_s, located.locator.time_s};
+  located.pick = signal::aic_pick(e, aic);
+  located.warnings.clear();
+  return located;
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  // Linear interpolation between order statistics (Hyndman-Fan type 7).
+  const double h = q * double(v.size() - 1);
+  const auto lo = std::size_t(std::floor(h));
+  const auto hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (h - double(lo)) * (v[hi] - v[lo]);
+}
+
+void fill_statistics(PickerBiasRow& row, const std::vector<double>& errors) {
+  row.median_periods = quantile(errors, 0.5);
+  std::vector<double> dev, absolute;
+  for (double e : errors) dev.push_back(std::abs(e - row.median_periods)), absolute.push_back(std::abs(e));
+  row.mad_periods = quantile(dev, 0.5);
+  row.p90_abs_periods = quantile(absolute, 0.9);
+}
+
+}  // namespace
+
+UpvRecordPair study_record_pair(const PickerStudyGrid& grid, double f, double rise, double fraction, double snr,
+                                std::uint64_t seed) {
+  TransducerRecordSpec spec;
+  spec.frequency_Hz = f;
+  spec.rise_periods = rise;
+  spec.snr_dB = snr;
+  UpvRecordPair pair;
+  pair.t_p_s = grid.t_p_s;
+  pair.t_s_s = grid.t_s_s;
+  spec.onset_s = grid.t_p_s;
+  spec.seed = 2 * seed - 1;
+  pair.p_channel = transducer_record(spec);
+  pair.p_channel.name = "P channel";
+  spec.onset_s = grid.t_s_s;
+  spec.precursor_onset_s = grid.t_p_s;
+  spec.precursor_fraction = fraction;
+  spec.seed = 2 * seed;
+  pair.s_channel = transducer_record(spec);
+  pair.s_channel.name = "S channel";
+  return pair;
+}
+
+const std::vector<PickerStrategy>& picker_strategies() {
+  static const std::vector<PickerStrategy> strategies = [] {
+    std::vector<PickerStrategy> s;
+    for (const std::string picker : {"threshold", "aic", "envelope-peak"}) {
+      s.push_back({"P", picker, "mw-upv's P chain with --picker " + picker + " on the P channel",
+                   [picker](const UpvRecordPair& r) { return with_picker(r.p_channel, picker); }});
+    }
+    for (const std::string picker : {"threshold", "aic", "envelope-peak"}) {
+      s.push_back({"S", picker, "the P chain with --picker " + picker + " on the S channel (no t_p known)",
+                   [picker](const UpvRecordPair& r) { return with_picker(r.s_channel, picker); }});
+    }
+    s.push_back({"S", "aic-after-p", "mw-upv's S chain: AIC from 1.3 t_p to the envelope peak in 1.3-3.5 t_p",
+                 [](const UpvRecordPair& r) { return after_p(r, "aic"); }});
+    s.push_back({"S", "envelope-peak-after-p", "the envelope peak in 1.3-3.5 t_p (the S group arrival)",
+                 [](const UpvRecordPair& r) { return after_p(r, "envelope-peak"); }});
+    s.push_back({"S", "envelope-aic-after-p", "AIC on the envelope in mw-upv's S window (the envelope's second rise)",
+                 [](const UpvRecordPair& r) { return envelope_aic_after_p(r); }});
+    return s;
+  }();
+  return strategies;
+}
+
+PickerStudy run_picker_study(const PickerStudyGrid& grid) {
+  if (grid.seeds < 1 || grid.seeds > 999) throw InputError("picker study: seeds must be 1 .. 999");
+  const auto& strategies = picker_strategies();
+  struct Point {
+    double f, rise, fraction, snr;
+  };
+  std::vector<Point> points;
+  for (double snr : grid.snr_dB)
+    for (double f : grid.frequency_Hz)
+      for (double rise : grid.rise_periods)
+        for (double fraction : grid.precursor_fraction) points.push_back({f, rise, fraction, snr});
+
+  // errors[point][strategy]: one slot each, filled in any order, read in order.
+  std::vector<std::vector<std::vector<double>>> errors(points.size(), std::vector<std::vector<double>>(strategies.size()));
+  std::vector<std::vector<PickerBiasRow>> cells(points.size(), std::vector<PickerBiasRow>(strategies.size()));
+#pragma omp parallel for schedule(dynamic)
+  for (std::ptrdiff_t c = 0; c < std::ptrdiff_t(points.size()); ++c) {
+    const auto& p = points[std::size_t(c)];
+    for (std::size_t k = 0; k < strategies.size(); ++k) {
+      auto& row = cells[std::size_t(c)][k];
+      row = {strategies[k].arrival, strategies[k].name, p.snr, p.f, p.rise, p.fraction};
+    }
+    for (std::size_t i = 0; i < grid.seeds; ++i) {
+      // The seed follows from the point's values, not its place in the grid,
+      // so that a smaller grid reproduces the larger one's records.
+      const std::uint64_t point_key = std::uint64_t(std::llround(p.f / 100)) * 1000003u +
+                                      std::uint64_t(std::llround(p.rise * 100)) * 10007u +
+                                      std::uint64_t(std::llround(p.fraction * 100)) * 101u +
+                                      std::uint64_t(std::llround(p.snr));
+      const std::uint64_t seed = point_key * 1000u + i + 1;
+      const auto pair = study_record_pair(grid, p.f, p.rise, p.fraction, p.snr, seed);
+      for (std::size_t k = 0; k < strategies.size(); ++k) {
+        auto& row = cells[std::size_t(c)][k];
+        ++row.records;
+        try {
+          const Onset onset = strategies[k].pick(pair);
+          // The envelope-peak picker always says that it gives the group arrival; that is not a flag.
+          if (std::any_of(onset.warnings.begin(), onset.warnings.end(),
+                          [](const std::string& w) { return w.find("group arrival") == std::string::npos; }))
+            ++row.flagged;
+          const double truth = strategies[k].arrival == "P" ? pair.t_p_s : pair.t_s_s;
+          errors[std::size_t(c)][k].push_back((onset.pick.time_s - truth) * p.f);
+        } catch (const InputError& e) {
+          if (!row.refused++) row.first_refusal = e.what();
+        }
+      }
+    }
+    for (std::size_t k = 0; k < strategies.size(); ++k) fill_statistics(cells[std::size_t(c)][k], errors[std::size_t(c)][k]);
+  }
+
+  PickerStudy study;
+  for (const auto& c : cells) study.cells.insert(study.cells.end(), c.begin(), c.end());
+  // Pools the grid points that `same` groups with `key` (a point of the grid).
+  const auto pool = [&](std::size_t k, const Point& key, bool by_fraction) {
+    PickerBiasRow row{strategies[k].arrival, strategies[k].name, key.snr};
+    if (by_fraction) row.precursor_fraction = key.fraction;
+    std::vector<double> pooled;
+    for (std::size_t c = 0; c < points.size(); ++c) {
+      if (points[c].snr != key.snr || (by_fraction && points[c].fraction != key.fraction)) continue;
+      row.records += cells[c][k].records;
+      row.refused += cells[c][k].refused;
+      row.flagged += cells[c][k].flagged;
+      if (row.first_refusal.empty()) row.first_refusal = cells[c][k].first_refusal;
+      pooled.insert(pooled.end(), errors[c][k].begin(), errors[c][k].end());
+    }
+    fill_statistics(row, pooled);
+    return row;
+  };
+  for (std::size_t k = 0; k < strategies.size(); ++k)
+    for (double snr : grid.snr_dB) {
+      study.pooled.push_back(pool(k, Point{0, 0, 0, snr}, false));
+      for (double fraction : grid.precursor_fraction)
+        study.by_fraction.push_back(pool(k, Point{0, 0, fraction, snr}, true));
+    }
+  return study;
+}
+
+std::string picker_bias_markdown(const std::vector<PickerBiasRow>& rows) {
+  const bool fractions = std::any_of(rows.begin(), rows.end(), [](const auto& r) { return r.precursor_fraction > 0; });
+  std::string s = std::string("| arrival | picker | SNR [dB] |") + (fractions ? " precursor |" : "") +
+                  " records | refused | flagged | median [periods] | MAD [periods] | p90 abs [periods] |\n" +
+                  "|---|---|---|" + (fractions ? "---|" : "") + "---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    s += "| " + r.arrival + " | " + r.picker + " | " + format_fixed(r.snr_dB, 0) + " | ";
+    if (fractions) s += format_fixed(r.precursor_fraction, 1) + " | ";
+    s += std::to_string(r.records) + " | " + std::to_string(r.refused) + " | " + std::to_string(r.flagged) + " | ";
+    if (r.records > r.refused)
+      s += format_fixed(r.median_periods, 3) + " | " + format_fixed(r.mad_periods, 3) + " | " +
+           format_fixed(r.p90_abs_periods, 3) + " |\n";
+    else
+      s += "- | - | - |\n";
+  }
+  return s;
+}
+
+std::string picker_bias_csv(const std::vector<PickerBiasRow>& rows) {
+  std::vector<std::vector<std::string>> out;
+  for (const auto& r : rows)
+    out.push_back({r.arrival, r.picker, format_fixed(r.snr_dB, 1), format_fixed(r.frequency_Hz / 1e3, 1),
+                   format_fixed(r.rise_periods, 2), format_fixed(r.precursor_fraction, 2), std::to_string(r.records),
+                   std::to_string(r.refused), std::to_string(r.flagged), format_fixed(r.median_periods, 4),
+                   format_fixed(r.mad_periods, 4), format_fixed(r.p90_abs_periods, 4), r.first_refusal});
+  return io::to_csv({"arrival", "picker", "snr_dB", "frequency_kHz", "rise_periods", "precursor_fraction", "records",
+                     "refused", "flagged", "median_error_periods", "mad_error_periods", "p90_abs_error_periods", "first_refusal"},
+                    out);
+}
+
+std::string picker_bias_cpp(const std::vector<PickerBiasRow>& rows) {
+  std::string s;
+  char buf[512];
+  for (const auto& r : rows) {
+    std::snprintf(buf, sizeof buf, "{\"%s\", \"%s\", %.17g, %.17g, %.17g, %.17g, %zu, %zu, %zu, %.17g, %.17g, %.17g},\n",
+                  r.arrival.c_str(), r.picker.c_str(), r.snr_dB, r.frequency_Hz, r.rise_periods, r.precursor_fraction,
+                  r.records, r.refused, r.flagged, r.median_periods, r.mad_periods, r.p90_abs_periods);
+    s += buf;
+  }
+  return s;
+}
+
+}  // namespace mesowave::lab
