@@ -70,6 +70,9 @@ TEST(PickerStudy, StoredTableIsTheStudysOutput) {
       EXPECT_DOUBLE_EQ(s.median_periods, r.median_periods) << r.arrival << " " << r.picker << " " << snr;
       EXPECT_DOUBLE_EQ(s.mad_periods, r.mad_periods) << r.arrival << " " << r.picker << " " << snr;
       EXPECT_DOUBLE_EQ(s.p90_abs_periods, r.p90_abs_periods) << r.arrival << " " << r.picker << " " << snr;
+      EXPECT_DOUBLE_EQ(s.unflagged_median_periods, r.unflagged_median_periods) << r.arrival << " " << r.picker;
+      EXPECT_DOUBLE_EQ(s.unflagged_mad_periods, r.unflagged_mad_periods) << r.arrival << " " << r.picker;
+      EXPECT_DOUBLE_EQ(s.unflagged_p90_abs_periods, r.unflagged_p90_abs_periods) << r.arrival << " " << r.picker;
     }
   }
 }
@@ -163,6 +166,13 @@ TEST(PickerStudy, SChainAfterThePPickFindsTheSOnset) {
     EXPECT_GT(strong.p90_abs_periods, 1.0) << snr;
     EXPECT_GT(strong.flagged, strong.records / 2) << snr;
   }
+  // The picks mw-upv does not flag are the good ones: over all precursors,
+  // the unflagged 90th percentile stays within a third of a period.
+  for (double snr : {30.0, 60.0}) {
+    const auto& all = row(study_at(snr).pooled, "S", "aic-after-p", snr);
+    EXPECT_LT(all.unflagged_p90_abs_periods, 1.0 / 3) << snr;
+    EXPECT_GT(all.p90_abs_periods, 0.5) << snr;
+  }
 }
 
 TEST(PickerStudy, StatedBiasIsTheTablesRowAtTheRecordsSnr) {
@@ -178,11 +188,12 @@ TEST(PickerStudy, StatedBiasIsTheTablesRowAtTheRecordsSnr) {
   const auto onset = pick_onset(r, OnsetOptions{});
   const auto b = state_pick_bias(r, onset, "P", "aic");
   ASSERT_TRUE(b.measured);
+  EXPECT_TRUE(b.unflagged);  // no warning: the unflagged picks' columns (at 30 and 40 dB no P AIC pick is flagged)
   EXPECT_NEAR(b.snr_dB, 35, 1.0);  // the largest sample of noise + pulse over the noise RMS
   const auto& t = measured_picker_bias();
   const double w = (b.snr_dB - 30) / 10;
-  EXPECT_DOUBLE_EQ(b.median_periods, (1 - w) * row(t, "P", "aic", 30).median_periods +
-                                         w * row(t, "P", "aic", 40).median_periods);
+  const double lo = row(t, "P", "aic", 30).unflagged_median_periods, hi = row(t, "P", "aic", 40).unflagged_median_periods;
+  EXPECT_DOUBLE_EQ(b.median_periods, lo + w * (hi - lo));
   EXPECT_NEAR(b.frequency_Hz, 45e3, 0.04 * 45e3);
   EXPECT_DOUBLE_EQ(b.median_s, b.median_periods / b.frequency_Hz);
   EXPECT_FALSE(b.outside_grid);

@@ -45,8 +45,13 @@ StatedBias state_pick_bias(const signal::Signal& record, const Onset& onset, con
   const auto* lo = rows[k];
   const auto* hi = rows[std::min(k + 1, rows.size() - 1)];
   const double w = hi->snr_dB > lo->snr_dB ? (snr - lo->snr_dB) / (hi->snr_dB - lo->snr_dB) : 0.0;
-  b.median_periods = lo->median_periods + w * (hi->median_periods - lo->median_periods);
-  b.mad_periods = lo->mad_periods + w * (hi->mad_periods - lo->mad_periods);
+  // An unflagged pick is held to the unflagged picks' statistics (where the
+  // table has them at both rows).
+  b.unflagged = !is_flagged(onset) && lo->records > lo->refused + lo->flagged && hi->records > hi->refused + hi->flagged;
+  const auto median = [&](const PickerBiasRow* r) { return b.unflagged ? r->unflagged_median_periods : r->median_periods; };
+  const auto mad = [&](const PickerBiasRow* r) { return b.unflagged ? r->unflagged_mad_periods : r->mad_periods; };
+  b.median_periods = median(lo) + w * (median(hi) - median(lo));
+  b.mad_periods = mad(lo) + w * (mad(hi) - mad(lo));
 
   // The record's own period: the spectrum peak over 200 us after the pick.
   const std::size_t first = onset.pick.index;
@@ -79,7 +84,8 @@ void describe_bias(nlohmann::ordered_json& j, const std::string& k, const Stated
     j[k + "_pick_bias_mad_us"] = b.mad_s * 1e6;
   }
   j[k + "_pick_bias_source"] = std::string(table_source) + "; " + b.strategy + " at " + format_fixed(b.snr_dB, 1) +
-                               " dB" + (b.outside_grid ? " (outside the table's SNR range: its end row)" : "") +
+                               " dB, " + (b.unflagged ? "unflagged picks" : "all picks (this one is flagged)") +
+                               (b.outside_grid ? " (outside the table's SNR range: its end row)" : "") +
                                "; the remaining bias, not subtracted from " + k + "_us";
 }
 

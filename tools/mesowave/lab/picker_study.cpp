@@ -1,6 +1,7 @@
 #include "mesowave/lab/picker_study.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -51,15 +52,37 @@ double quantile(std::vector<double> v, double q) {
   return v[lo] + (h - double(lo)) * (v[hi] - v[lo]);
 }
 
-void fill_statistics(PickerBiasRow& row, const std::vector<double>& errors) {
-  row.median_periods = quantile(errors, 0.5);
+// Median, MAD and 90th percentile of |error| of `errors`.
+std::array<double, 3> statistics(const std::vector<double>& errors) {
+  const double median = quantile(errors, 0.5);
   std::vector<double> dev, absolute;
-  for (double e : errors) dev.push_back(std::abs(e - row.median_periods)), absolute.push_back(std::abs(e));
-  row.mad_periods = quantile(dev, 0.5);
-  row.p90_abs_periods = quantile(absolute, 0.9);
+  for (double e : errors) dev.push_back(std::abs(e - median)), absolute.push_back(std::abs(e));
+  return {median, quantile(dev, 0.5), quantile(absolute, 0.9)};
+}
+
+// Errors of the picks in order, and which of them carried a warning.
+struct Errors {
+  std::vector<double> all, unflagged;
+  void insert(const Errors& e) {
+    all.insert(all.end(), e.all.begin(), e.all.end());
+    unflagged.insert(unflagged.end(), e.unflagged.begin(), e.unflagged.end());
+  }
+};
+
+void fill_statistics(PickerBiasRow& row, const Errors& errors) {
+  const auto a = statistics(errors.all);
+  row.median_periods = a[0], row.mad_periods = a[1], row.p90_abs_periods = a[2];
+  const auto u = statistics(errors.unflagged);
+  row.unflagged_median_periods = u[0], row.unflagged_mad_periods = u[1], row.unflagged_p90_abs_periods = u[2];
 }
 
 }  // namespace
+
+bool is_flagged(const Onset& onset) {
+  // The envelope-peak picker always says that it gives the group arrival; that is not a flag.
+  return std::any_of(onset.warnings.begin(), onset.warnings.end(),
+                     [](const std::string& w) { return w.find("group arrival") == std::string::npos; });
+}
 
 UpvRecordPair study_record_pair(const PickerStudyGrid& grid, double f, double rise, double fraction, double snr,
                                 std::uint64_t seed) {
@@ -118,7 +141,7 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
         for (double fraction : grid.precursor_fraction) points.push_back({f, rise, fraction, snr});
 
   // errors[point][strategy]: one slot each, filled in any order, read in order.
-  std::vector<std::vector<std::vector<double>>> errors(points.size(), std::vector<std::vector<double>>(strategies.size()));
+  std::vector<std::vector<Errors>> errors(points.size(), std::vector<Errors>(strategies.size()));
   std::vector<std::vector<PickerBiasRow>> cells(points.size(), std::vector<PickerBiasRow>(strategies.size()));
 #pragma omp parallel for schedule(dynamic)
   for (std::ptrdiff_t c = 0; c < std::ptrdiff_t(points.size()); ++c) {
@@ -141,12 +164,12 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
         ++row.records;
         try {
           const Onset onset = strategies[k].pick(pair);
-          // The envelope-peak picker always says that it gives the group arrival; that is not a flag.
-          if (std::any_of(onset.warnings.begin(), onset.warnings.end(),
-                          [](const std::string& w) { return w.find("group arrival") == std::string::npos; }))
-            ++row.flagged;
+          const bool flagged = is_flagged(onset);
+          row.flagged += flagged;
           const double truth = strategies[k].arrival == "P" ? pair.t_p_s : pair.t_s_s;
-          errors[std::size_t(c)][k].push_back((onset.pick.time_s - truth) * p.f);
+          const double error = (onset.pick.time_s - truth) * p.f;
+          errors[std::size_t(c)][k].all.push_back(error);
+          if (!flagged) errors[std::size_t(c)][k].unflagged.push_back(error);
         } catch (const InputError& e) {
           if (!row.refused++) row.first_refusal = e.what();
         }
@@ -161,14 +184,14 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
   const auto pool = [&](std::size_t k, const Point& key, bool by_fraction) {
     PickerBiasRow row{strategies[k].arrival, strategies[k].name, key.snr};
     if (by_fraction) row.precursor_fraction = key.fraction;
-    std::vector<double> pooled;
+    Errors pooled;
     for (std::size_t c = 0; c < points.size(); ++c) {
       if (points[c].snr != key.snr || (by_fraction && points[c].fraction != key.fraction)) continue;
       row.records += cells[c][k].records;
       row.refused += cells[c][k].refused;
       row.flagged += cells[c][k].flagged;
       if (row.first_refusal.empty()) row.first_refusal = cells[c][k].first_refusal;
-      pooled.insert(pooled.end(), errors[c][k].begin(), errors[c][k].end());
+      pooled.insert(errors[c][k]);
     }
     fill_statistics(row, pooled);
     return row;
@@ -185,17 +208,20 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
 std::string picker_bias_markdown(const std::vector<PickerBiasRow>& rows) {
   const bool fractions = std::any_of(rows.begin(), rows.end(), [](const auto& r) { return r.precursor_fraction > 0; });
   std::string s = std::string("| arrival | picker | SNR [dB] |") + (fractions ? " precursor |" : "") +
-                  " records | refused | flagged | median [periods] | MAD [periods] | p90 abs [periods] |\n" +
-                  "|---|---|---|" + (fractions ? "---|" : "") + "---|---|---|---|---|---|\n";
+                  " records | refused | flagged | median [periods] | MAD [periods] | p90 abs [periods] |"
+                  " unflagged: median | MAD | p90 abs |\n" +
+                  "|---|---|---|" + (fractions ? "---|" : "") + "---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
     s += "| " + r.arrival + " | " + r.picker + " | " + format_fixed(r.snr_dB, 0) + " | ";
     if (fractions) s += format_fixed(r.precursor_fraction, 1) + " | ";
     s += std::to_string(r.records) + " | " + std::to_string(r.refused) + " | " + std::to_string(r.flagged) + " | ";
-    if (r.records > r.refused)
-      s += format_fixed(r.median_periods, 3) + " | " + format_fixed(r.mad_periods, 3) + " | " +
-           format_fixed(r.p90_abs_periods, 3) + " |\n";
-    else
-      s += "- | - | - |\n";
+    s += r.records > r.refused ? format_fixed(r.median_periods, 3) + " | " + format_fixed(r.mad_periods, 3) + " | " +
+                                     format_fixed(r.p90_abs_periods, 3) + " | "
+                               : "- | - | - | ";
+    s += r.records > r.refused + r.flagged
+             ? format_fixed(r.unflagged_median_periods, 3) + " | " + format_fixed(r.unflagged_mad_periods, 3) + " | " +
+                   format_fixed(r.unflagged_p90_abs_periods, 3) + " |\n"
+             : "- | - | - |\n";
   }
   return s;
 }
@@ -206,9 +232,12 @@ std::string picker_bias_csv(const std::vector<PickerBiasRow>& rows) {
     out.push_back({r.arrival, r.picker, format_fixed(r.snr_dB, 1), format_fixed(r.frequency_Hz / 1e3, 1),
                    format_fixed(r.rise_periods, 2), format_fixed(r.precursor_fraction, 2), std::to_string(r.records),
                    std::to_string(r.refused), std::to_string(r.flagged), format_fixed(r.median_periods, 4),
-                   format_fixed(r.mad_periods, 4), format_fixed(r.p90_abs_periods, 4), r.first_refusal});
+                   format_fixed(r.mad_periods, 4), format_fixed(r.p90_abs_periods, 4),
+                   format_fixed(r.unflagged_median_periods, 4), format_fixed(r.unflagged_mad_periods, 4),
+                   format_fixed(r.unflagged_p90_abs_periods, 4), r.first_refusal});
   return io::to_csv({"arrival", "picker", "snr_dB", "frequency_kHz", "rise_periods", "precursor_fraction", "records",
-                     "refused", "flagged", "median_error_periods", "mad_error_periods", "p90_abs_error_periods", "first_refusal"},
+                     "refused", "flagged", "median_error_periods", "mad_error_periods", "p90_abs_error_periods", "unflagged_median_error_periods",
+                     "unflagged_mad_error_periods", "unflagged_p90_abs_error_periods", "first_refusal"},
                     out);
 }
 
@@ -216,9 +245,10 @@ std::string picker_bias_cpp(const std::vector<PickerBiasRow>& rows) {
   std::string s;
   char buf[512];
   for (const auto& r : rows) {
-    std::snprintf(buf, sizeof buf, "{\"%s\", \"%s\", %.17g, %.17g, %.17g, %.17g, %zu, %zu, %zu, %.17g, %.17g, %.17g},\n",
+    std::snprintf(buf, sizeof buf, "{\"%s\", \"%s\", %.17g, %.17g, %.17g, %.17g, %zu, %zu, %zu, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g},\n",
                   r.arrival.c_str(), r.picker.c_str(), r.snr_dB, r.frequency_Hz, r.rise_periods, r.precursor_fraction,
-                  r.records, r.refused, r.flagged, r.median_periods, r.mad_periods, r.p90_abs_periods);
+                  r.records, r.refused, r.flagged, r.median_periods, r.mad_periods, r.p90_abs_periods,
+                  r.unflagged_median_periods, r.unflagged_mad_periods, r.unflagged_p90_abs_periods);
     s += buf;
   }
   return s;

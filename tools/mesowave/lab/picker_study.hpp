@@ -82,8 +82,15 @@ struct PickerBiasRow {
   double median_periods = 0;   ///< median error
   double mad_periods = 0;      ///< median |error - median error| (unscaled)
   double p90_abs_periods = 0;  ///< 90th percentile of |error|
+  /// The same over the picks mw-upv made without a warning (what a user
+  /// with an unflagged pick can expect); 0 where every pick was flagged.
+  double unflagged_median_periods = 0, unflagged_mad_periods = 0, unflagged_p90_abs_periods = 0;
   std::string first_refusal;   ///< why the first refused record was refused
 };
+
+/// Whether mw-upv warned about the pick (the envelope peak's standing note
+/// that it is the group arrival does not count).
+bool is_flagged(const Onset& onset);
 
 struct PickerStudy {
   std::vector<PickerBiasRow> pooled;  ///< per strategy and SNR, over frequency, rise and precursor
@@ -113,6 +120,7 @@ struct StatedBias {
   bool measured = false;       ///< false: this strategy is not in the table
   std::string strategy;        ///< "P aic", "S aic-after-p"
   double snr_dB = 0;           ///< the record's, as the table defines it
+  bool unflagged = false;      ///< the pick carries no warning: the unflagged statistics are stated
   double median_periods = 0, mad_periods = 0;  ///< interpolated in SNR (clamped to the table's range)
   bool outside_grid = false;   ///< the record's SNR lies outside the table's
   double frequency_Hz = 0;     ///< the record's, from the spectrum after the pick
@@ -120,7 +128,8 @@ struct StatedBias {
   std::string source;
 };
 
-/// The table's row for `arrival` + `strategy` at the record's SNR, in seconds
+/// The table's row for `arrival` + `strategy` at the record's SNR (its
+/// unflagged statistics if the pick carries no warning), in seconds
 /// with the frequency read off the record's spectrum over 200 us after the pick.
 StatedBias state_pick_bias(const signal::Signal& record, const Onset& onset, const std::string& arrival,
                            const std::string& strategy);
