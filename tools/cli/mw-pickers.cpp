@@ -6,6 +6,7 @@
 //   mw-pickers --seeds 10 --cells cells.csv --out table.json
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/error.hpp"
+#include "mesowave/io/gnuplot.hpp"
 #include "mesowave/lab/picker_study.hpp"
 
 using namespace mesowave;
@@ -21,7 +22,7 @@ int main(int argc, char** argv) {
                  "  mw-pickers --cells cells.csv --out table.json");
   lab::PickerStudyGrid grid;
   std::vector<double> frequency_kHz{30, 45, 60};
-  std::filesystem::path out, cells, table_cpp;
+  std::filesystem::path out, cells, table_cpp, plot;
   auto& cli = tool.cli();
   cli.add_option("--seeds", grid.seeds, "Noise realisations per grid point")->capture_default_str();
   cli.add_option("--frequency-kHz", frequency_kHz, "Transducer frequencies [kHz]")->delimiter(',')->capture_default_str();
@@ -32,6 +33,8 @@ int main(int argc, char** argv) {
   cli.add_option("--cells", cells, "CSV of every grid point's statistics")->type_name("FILE");
   cli.add_option("--table-cpp", table_cpp, "The pooled rows as C++ initialisers (lab/picker_bias_table.inc)")
       ->type_name("FILE");
+  cli.add_option("--plot", plot, "PNG of an example pair (40 kHz, rise 1.5 periods, precursor 0.3, 30 dB) with the "
+                                 "true onsets and every picker's pick")->type_name("FILE");
   app::add_out_option(cli, out);
 
   return tool.run(argc, argv, [&](app::Run& run) {
@@ -44,6 +47,10 @@ int main(int argc, char** argv) {
       if (r.arrival == "S") s_rows.push_back(r);
     run.out() << lab::picker_bias_markdown(s_rows);
     if (!cells.empty()) run.write_text(cells, lab::picker_bias_csv(study.cells));
+    if (!plot.empty())
+      io::run_gnuplot(lab::picker_example_figure_script(lab::study_record_pair(grid, 40e3, 1.5, 0.3, 30, 1),
+                                                        run.output(plot), "Synthetic pair: 40 kHz, rise 1.5 periods, "
+                                                                          "P precursor 0.3 of S, 30 dB"));
     if (!table_cpp.empty()) run.write_text(table_cpp, lab::picker_bias_cpp(study.pooled));
     nlohmann::ordered_json j;
     j["seeds"] = grid.seeds;

@@ -4,10 +4,12 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/io/csv.hpp"
+#include "mesowave/io/gnuplot.hpp"
 #include "mesowave/lab/transducer_record.hpp"
 #include "mesowave/signal/envelope.hpp"
 #include "mesowave/signal/spectrum.hpp"
@@ -140,6 +142,9 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
       for (double rise : grid.rise_periods)
         for (double fraction : grid.precursor_fraction) points.push_back({f, rise, fraction, snr});
 
+  // Bad grid values are refused here, before the parallel loop (an exception
+  // must not leave an OpenMP region).
+  for (const auto& p : points) study_record_pair(grid, p.f, p.rise, p.fraction, p.snr, 1);
   // errors[point][strategy]: one slot each, filled in any order, read in order.
   std::vector<std::vector<Errors>> errors(points.size(), std::vector<Errors>(strategies.size()));
   std::vector<std::vector<PickerBiasRow>> cells(points.size(), std::vector<PickerBiasRow>(strategies.size()));
@@ -148,7 +153,8 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
     const auto& p = points[std::size_t(c)];
     for (std::size_t k = 0; k < strategies.size(); ++k) {
       auto& row = cells[std::size_t(c)][k];
-      row = {strategies[k].arrival, strategies[k].name, p.snr, p.f, p.rise, p.fraction};
+      row.arrival = strategies[k].arrival, row.picker = strategies[k].name;
+      row.snr_dB = p.snr, row.frequency_Hz = p.f, row.rise_periods = p.rise, row.precursor_fraction = p.fraction;
     }
     for (std::size_t i = 0; i < grid.seeds; ++i) {
       // The seed follows from the point's values, not its place in the grid,
@@ -180,9 +186,10 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
 
   PickerStudy study;
   for (const auto& c : cells) study.cells.insert(study.cells.end(), c.begin(), c.end());
-  // Pools the grid points that `same` groups with `key` (a point of the grid).
+  // Pools strategy k over the grid points at key's SNR (and precursor fraction).
   const auto pool = [&](std::size_t k, const Point& key, bool by_fraction) {
-    PickerBiasRow row{strategies[k].arrival, strategies[k].name, key.snr};
+    PickerBiasRow row;
+    row.arrival = strategies[k].arrival, row.picker = strategies[k].name, row.snr_dB = key.snr;
     if (by_fraction) row.precursor_fraction = key.fraction;
     Errors pooled;
     for (std::size_t c = 0; c < points.size(); ++c) {
@@ -241,11 +248,63 @@ std::string picker_bias_csv(const std::vector<PickerBiasRow>& rows) {
                     out);
 }
 
+std::string picker_example_figure_script(const UpvRecordPair& pair, const std::filesystem::path& png,
+                                         const std::string& title) {
+  const double t_lo = -10e-6, t_hi = 4 * pair.t_s_s;
+  std::string s = "set terminal pngcairo size 1200,700 font 'Sans,11'\nset output " + io::gnuplot_quote(png) + "\n";
+  std::string plots, marks;
+  const char* colours[] = {"#1f77b4", "#2ca02c", "#9467bd", "#d62728", "#ff7f0e", "#8c564b", "#e377c2"};
+  std::size_t colour = 0;
+  for (const auto& [arrival, record, offset] : {std::tuple{"P", &pair.p_channel, 0.0}, std::tuple{"S", &pair.s_channel, -2.6}}) {
+    double peak = 0;
+    std::vector<double> t, v;
+    for (std::size_t i = 0; i < record->size(); ++i)
+      if (record->time(i) >= t_lo && record->time(i) <= t_hi) peak = std::max(peak, std::abs(record->samples[i]));
+    for (std::size_t i = 0; i < record->size(); ++i)
+      if (record->time(i) >= t_lo && record->time(i) <= t_hi) {
+        t.push_back(record->time(i) * 1e6);
+        v.push_back(record->samples[i] / peak + offset);
+      }
+    const std::string block = std::string("rec") + arrival;
+    s += io::gnuplot_datablock(block, {t, v});
+    plots += std::string(plots.empty() ? "" : ", ") + "$" + block + " using 1:2 with lines lw 1 lc rgb '#555555' notitle";
+    marks += "set label '" + std::string(arrival) + " channel' at graph 0.01, first " + format_exact(offset + 0.5) +
+             " font 'Sans,11'\n";
+    // The true onsets on this channel: the S channel also holds the P precursor.
+    std::vector<std::pair<std::string, double>> truths = {{std::string("true ") + arrival, arrival == std::string("P") ? pair.t_p_s : pair.t_s_s}};
+    if (arrival == std::string("S")) truths.push_back({"true P (precursor)", pair.t_p_s});
+    for (const auto& [label, time] : truths)
+      marks += "set arrow from " + format_exact(time * 1e6) + ", " + format_exact(offset - 1.1) + " to " +
+               format_exact(time * 1e6) + ", " + format_exact(offset + 1.1) + " nohead lw 2.5 lc rgb 'black'\n" +
+               "set label '" + label + "' at " + format_exact(time * 1e6) + ", " + format_exact(offset + 1.2) +
+               " right offset -0.3,0 font 'Sans,9'\n";
+    double row = 0;
+    for (const auto& strategy : picker_strategies()) {
+      if (strategy.arrival != arrival) continue;
+      try {
+        const double tp = strategy.pick(pair).pick.time_s * 1e6;
+        const std::string c = colours[colour++ % 7];
+        marks += "set arrow from " + format_exact(tp) + ", " + format_exact(offset - 1.1) + " to " + format_exact(tp) +
+                 ", " + format_exact(offset + 1.1) + " nohead dt 2 lw 1.5 lc rgb '" + c + "'\n" + "set label '" +
+                 strategy.name + "' at " + format_exact(tp) + ", " + format_exact(offset - 0.75 + 0.3 * row) +
+                 " left offset 0.3,0 font 'Sans,9' tc rgb '" + c + "'\n";
+        row += 1;
+      } catch (const InputError&) {
+      }
+    }
+  }
+  s += marks;
+  s += "set xlabel 'time after the trigger [{/Symbol m}s]'\nset ytics ('' 0)\nset grid\nset key off\nset xrange [" +
+       format_exact(t_lo * 1e6) + ":" + format_exact(t_hi * 1e6) + "]\nset yrange [-4:1.6]\n";
+  if (!title.empty()) s += "set title '" + title + "'\n";
+  return s + "plot " + plots + "\n";
+}
+
 std::string picker_bias_cpp(const std::vector<PickerBiasRow>& rows) {
   std::string s;
   char buf[512];
   for (const auto& r : rows) {
-    std::snprintf(buf, sizeof buf, "{\"%s\", \"%s\", %.17g, %.17g, %.17g, %.17g, %zu, %zu, %zu, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g},\n",
+    std::snprintf(buf, sizeof buf, "{\"%s\", \"%s\", %.17g, %.17g, %.17g, %.17g, %zu, %zu, %zu, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g, {}},\n",
                   r.arrival.c_str(), r.picker.c_str(), r.snr_dB, r.frequency_Hz, r.rise_periods, r.precursor_fraction,
                   r.records, r.refused, r.flagged, r.median_periods, r.mad_periods, r.p90_abs_periods,
                   r.unflagged_median_periods, r.unflagged_mad_periods, r.unflagged_p90_abs_periods);

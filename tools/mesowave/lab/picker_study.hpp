@@ -30,6 +30,7 @@
 // `mw-pickers study` computed it with the default grid; a test recomputes it.
 // mw-upv states the row of the picker it used (state_pick_bias).
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -114,6 +115,12 @@ std::string picker_bias_cpp(const std::vector<PickerBiasRow>& rows);
 
 /// The pooled table of the default grid, as docs/upv-pickers.md prints it.
 const std::vector<PickerBiasRow>& measured_picker_bias();
+
+/// gnuplot script: one record pair (P channel above, S channel below,
+/// normalised) with the true onsets (solid) and every strategy's pick on it
+/// (dashed; refused ones left out), the figure of docs/upv-pickers.md.
+std::string picker_example_figure_script(const UpvRecordPair& pair, const std::filesystem::path& png,
+                                         const std::string& title);
 
 /// What mw-upv says about the pick it made.
 struct StatedBias {
