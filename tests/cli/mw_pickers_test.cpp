@@ -85,3 +85,16 @@ TEST(MwUpv, RealRecordsWithoutADensity) {
   EXPECT_TRUE(j.contains("t_p_pick_bias_us"));
   EXPECT_TRUE(j.contains("t_s_pick_bias_us"));
 }
+
+TEST(MwUpv, VelocitiesOnlyFromWaveforms) {
+  // Without --density-kg-m3 there is no product to declare: the run gives
+  // velocities and nu_d (it failed on declare_products before).
+  const auto r = run_tool("mw-upv", {"--from", (raw_dir() / "upv-truth.toml").string(), "--p-wave",
+                                     (raw_dir() / "upv-p.csv").string(), "--s-wave", (raw_dir() / "upv-s.csv").string(),
+                                     "--lowpass-kHz", "216", "--s-lowpass-kHz", "160"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const auto j = parse_json(r.out);
+  EXPECT_FALSE(j.contains("E_d_GPa"));
+  EXPECT_NEAR(j["t_p_us"].get<double>(), truth("upv-truth.toml", "true_t_p"), 0.5);  // as with a density
+  EXPECT_TRUE(j.contains("nu_d"));
+}
