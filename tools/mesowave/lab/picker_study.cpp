@@ -115,6 +115,14 @@ const std::vector<PickerStrategy>& picker_strategies() {
       s.push_back({"P", picker, "mw-upv's P chain with --picker " + picker + " on the P channel",
                    [picker](const UpvRecordPair& r) { return with_picker(r.p_channel, picker); }});
     }
+    // mw-upv --aic-after-us 30: its arrival check and AIC window one period of
+    // 33 kHz long instead of 10 us (a third of a period at 30 kHz).
+    s.push_back({"P", "aic-window-30us", "mw-upv's P chain with --aic-after-us 30",
+                 [](const UpvRecordPair& r) {
+                   OnsetOptions o;
+                   o.aic_after_s = 30e-6;
+                   return pick_onset(r.p_channel, o);
+                 }});
     for (const std::string picker : {"threshold", "aic", "envelope-peak"}) {
       s.push_back({"S", picker, "the P chain with --picker " + picker + " on the S channel (no t_p known)",
                    [picker](const UpvRecordPair& r) { return with_picker(r.s_channel, picker); }});
