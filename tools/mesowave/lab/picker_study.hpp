@@ -15,6 +15,8 @@
 //
 // Strategies (one entry each in picker_strategies(), looked up by arrival and name):
 //   P threshold | aic | envelope-peak   on the P channel, mw-upv's P chain;
+//   P aic-window-30us                   aic with --aic-after-us 30 (its arrival check and
+//                                       AIC window about one period long);
 //   S threshold | aic | envelope-peak   the same chain on the S channel, knowing
 //                                       nothing of the P wave: they find the precursor;
 //   S aic-after-p                       mw-upv's S chain: t_p picked (AIC) on the P
