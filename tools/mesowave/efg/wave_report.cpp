@@ -1,5 +1,6 @@
 #include "mesowave/efg/wave_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "mesowave/core/check.hpp"
@@ -28,7 +29,15 @@ WaveStripOptions WaveCommandLine::resolve() const {
   o.dynamics.alpha_damping_per_s = alpha_per_s;
   o.dynamics.stiffness_check_every = stiffness_check_every;
   o.dynamics.sample_stride = sample_stride;
-  o.dynamics.snapshot_stride = !snapshots.empty() && snapshot_stride == 0 ? 50 : snapshot_stride;
+  // the profiles pick the snapshot nearest each time: every other step keeps that within one step
+  o.dynamics.snapshot_stride = snapshot_stride > 0       ? snapshot_stride
+                               : !profiles.empty()      ? 2
+                               : !snapshots.empty()     ? 50
+                                                        : 0;
+  if (!profiles.empty() && profile_us.empty()) throw InputError("--profiles needs the times: --profile-us T (repeatable)");
+  for (double t : profile_us)
+    if (!std::isfinite(t) || t < 0) throw InputError("--profile-us (" + format_number(t) + ") must be >= 0");
+  if (unloading != 0 && unloading != 1) throw InputError("--unloading (" + std::to_string(unloading) + ") must be 1 (Eq. 27) or 0");
   return o;
 }
 
@@ -66,9 +75,82 @@ void add_wave_options(CLI::App& app, WaveCommandLine& v) {
   app.add_option("--snapshots", v.snapshots, "Folder for ParaView files of the nodes (wave.pvd), with --snapshot-stride");
   app.add_option("--snapshot-stride", v.snapshot_stride, "Steps between snapshots (default: 50 with --snapshots)");
   app.add_option("--threads", v.threads, "Threads (0: the cores the machine is not busy with, core/threads.hpp)");
+  app.add_option("--law", v.law, "The strip's law: " + strip_law_names() + " (efg/strip_law.hpp)")->capture_default_str();
+  app.add_option("--beta", v.law_parameters.beta, "quadratic: p = M s (1 + beta s)")->capture_default_str();
+  HugoniotParameters& h = v.law_parameters.hugoniot;
+  app.add_option("--e-v-th", h.e_v_th, "hugoniot: threshold volumetric strain, Eq. (26)")->capture_default_str();
+  app.add_option("--e-v", h.e_v, "hugoniot: e_v, Eq. (26)")->capture_default_str();
+  app.add_option("--a-v", h.a_v, "hugoniot: a_v, Eq. (26)")->capture_default_str();
+  app.add_option("--b-v", h.b_v, "hugoniot: b_v, Eq. (26)")->capture_default_str();
+  app.add_option("--unloading", v.unloading, "hugoniot: 1 unloads by Eq. (27), 0 on Eq. (25) (Section 4.2's test)")
+      ->capture_default_str();
+  app.add_option("--profiles", v.profiles, "CSV of -sigma_xx along the centre line at the --profile-us times");
+  app.add_option("--profile-us", v.profile_us, "A time of --profiles (repeatable; the nearest snapshot's)");
 }
 
-WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult& r) {
+WaveCommandRun run_wave_command(const WaveCommandLine& cl) {
+  WaveCommandRun w;
+  w.options = cl.resolve();
+  StripLawParameters p = cl.law_parameters;
+  p.hugoniot.unloading = cl.unloading == 1;
+  const WaveStripOptions& o = w.options;
+  w.law = make_strip_law(cl.law, {o.E_Pa, o.nu, o.thickness_m, o.density_kg_m3, PlaneState::plane_strain}, p);
+  w.options.material = w.law.point.get();
+  w.result = run_wave_strip(w.options);
+  std::vector<double> profile_s;
+  for (double t : cl.profile_us) profile_s.push_back(t * 1e-6);
+  w.outputs = wave_strip_outputs(w.options, w.result, &w.law, profile_s);
+  w.outputs.summary["law"] = cl.law;
+  return w;
+}
+
+namespace {
+
+// The sensor's -sigma_xx in the linear continuum: the pulse and its reflection from the free end
+// x = L (sign reversed), exact until that reflection comes back from the loaded end.
+double continuum_sigma_xx(const WaveStripOptions& o, const WaveStripResult& r, double x, double t) {
+  const PressureHistory p = o.custom ? o.custom
+                            : o.pulse == "triangular" ? PressureHistory(o.triangular)
+                                                      : PressureHistory(o.friedlander);
+  const double c = r.c_p_m_s;
+  const auto at = [&](double tau) { return tau < 0 ? 0.0 : p(tau); };
+  return -at(t - x / c) + at(t - (2 * o.length_m - x) / c);
+}
+
+nlohmann::ordered_json front_json(const ShockFrontComparison& c) {
+  const auto num = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr); };
+  nlohmann::ordered_json fronts = nlohmann::ordered_json::array();
+  for (const FrontWidth& f : c.fronts)
+    fronts.push_back({{"x_mm", f.x_m * 1e3},
+                      {"width_us", num(f.width_s * 1e6)},
+                      {"simple_wave_width_us", f.simple_wave_width_s * 1e6},
+                      {"before_breaking", f.before_breaking}});
+  return {{"shock_forms", c.formation.forms},
+          {"breaks_on", c.formation.loading ? "rise" : "fall"},
+          {"formation_distance_mm", c.formation.distance_m * 1e3},
+          {"formation_time_us", c.formation.time_s * 1e6},
+          {"breaking_compression", c.formation.compression},
+          {"c_0_m_s", c.c_0_m_s},
+          {"p_lo_MPa", c.p_lo_Pa * 1e-6},
+          {"p_hi_MPa", c.p_hi_Pa * 1e-6},
+          {"c_lo_m_s", c.c_lo_m_s},
+          {"c_hi_m_s", c.c_hi_m_s},
+          {"fronts", fronts},
+          {"meet_distance_mm", num(c.meet_distance_m * 1e3)},
+          {"meet_time_us", num(c.meet_time_s * 1e6)},
+          {"measured_meet_distance_mm", num(c.measured_meet_distance_m * 1e3)},
+          {"measured_meet_time_us", num(c.measured_meet_time_s * 1e6)},
+          {"fitted_sensors", c.fitted_sensors},
+          {"speed_level_MPa", c.speed_level_Pa * 1e-6},
+          {"shock_speed_m_s", num(c.shock_speed_m_s)},
+          {"jump_speed_m_s", c.jump_speed_m_s},
+          {"shock_speed_over_jump", num(c.shock_speed_m_s / c.jump_speed_m_s)}};
+}
+
+}  // namespace
+
+WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult& r, const StripLaw* law,
+                               const std::vector<double>& profile_s) {
   WaveOutputs w;
   const DynamicsResult& d = r.run;
   nlohmann::ordered_json sensors = nlohmann::ordered_json::array();
@@ -110,9 +192,17 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
   w.metrics = {{"c_p", r.c_p_m_s, "m/s"},       {"peak_speed_error", r.peak_speed_error, ""},
                {"energy_drift", d.energy_drift, ""}, {"dt", d.dt_first_s * 1e6, "us"},
                {"stable_dt", d.stable.dt_critical_s * 1e6, "us"}, {"wall", d.wall_s, "s"}};
+  const bool linear = !law || !law->nonlinear;
+  if (!linear && o.pulse == "triangular" && !o.custom && o.triangular.start_s == 0) {
+    w.summary["characteristics"] = front_json(compare_front_with_characteristics(o, r, *law->compression));
+    w.metrics.emplace_back("formation_distance", w.summary["characteristics"]["formation_distance_mm"].get<double>(), "mm");
+  }
   w.history_header = {"t_us"};
   for (const Sensor& s : r.sensors)
     for (const char* q : {"_sigma_xx_MPa", "_sigma_yy_MPa", "_v_x_m_s", "_v_y_m_s"}) w.history_header.push_back(s.name + q);
+  // the linear law's closed form beside the run (the continuum the peak speed is measured against)
+  if (linear)
+    for (const Sensor& s : r.sensors) w.history_header.push_back(s.name + "_sigma_xx_continuum_MPa");
   for (std::size_t i = 0; i < d.sample_t_s.size(); ++i) {
     std::vector<std::string> row{format_significant(d.sample_t_s[i] * 1e6, 10)};
     for (std::size_t k = 0; k < r.sensors.size(); ++k) {
@@ -122,7 +212,41 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
       row.push_back(format_significant(s.velocity_m_s[0], 10));
       row.push_back(format_significant(s.velocity_m_s[1], 10));
     }
+    if (linear)
+      for (const Sensor& s : r.sensors)
+        row.push_back(format_significant(continuum_sigma_xx(o, r, s.x.x(), d.sample_t_s[i]) * 1e-6, 10));
     w.history_rows.push_back(std::move(row));
+  }
+  if (!profile_s.empty()) {
+    if (d.snapshots.empty()) throw InputError("--profiles: the run kept no snapshots (--snapshot-stride)");
+    nlohmann::ordered_json taken = nlohmann::ordered_json::array();
+    std::vector<const NodeSnapshot*> picked;
+    w.profile_header = {"x_mm"};
+    for (double t : profile_s) {
+      std::size_t best = 0;
+      for (std::size_t i = 1; i < d.snapshots.size(); ++i)
+        if (std::abs(d.snapshots[i].first - t) < std::abs(d.snapshots[best].first - t)) best = i;
+      picked.push_back(&d.snapshots[best].second);
+      w.profile_header.push_back("p_MPa_at_" + format_number(t * 1e6) + "us");
+      taken.push_back({{"requested_us", t * 1e6}, {"snapshot_us", d.snapshots[best].first * 1e6}});
+    }
+    w.summary["profiles"] = taken;
+    // the node row nearest the centre line, in x order (the grid's nodes run x fastest or y
+    // fastest: sorting by x makes the file the same either way)
+    const NodeSnapshot& first = *picked.front();
+    double y_row = first.positions_m.at(0).y();
+    for (const auto& x : first.positions_m)
+      if (std::abs(x.y() - 0.5 * o.width_m) < std::abs(y_row - 0.5 * o.width_m)) y_row = x.y();
+    std::vector<std::size_t> row_nodes;
+    for (std::size_t n = 0; n < first.positions_m.size(); ++n)
+      if (std::abs(first.positions_m[n].y() - y_row) < 1e-9 * o.width_m) row_nodes.push_back(n);
+    std::sort(row_nodes.begin(), row_nodes.end(),
+              [&](std::size_t a, std::size_t b) { return first.positions_m[a].x() < first.positions_m[b].x(); });
+    for (std::size_t n : row_nodes) {
+      std::vector<std::string> row{format_significant(first.positions_m[n].x() * 1e3, 10)};
+      for (const NodeSnapshot* s : picked) row.push_back(format_significant(-s->stress_Pa.at(n)(0) * 1e-6, 10));
+      w.profile_rows.push_back(std::move(row));
+    }
   }
   return w;
 }
