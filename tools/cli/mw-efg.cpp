@@ -82,6 +82,10 @@ int main(int argc, char** argv) {
       for (const auto& [name, value, unit] : o.metrics) run.metric(name, value, unit);
       if (!wave_cl.history.empty()) run.write_text(wave_cl.history, io::to_csv(o.history_header, o.history_rows));
       if (!wave_cl.profiles.empty()) run.write_text(wave_cl.profiles, io::to_csv(o.profile_header, o.profile_rows));
+      if (!wave_cl.fronts.empty()) {
+        if (o.front_rows.empty()) throw InputError("--fronts needs a stiffening --law (quadratic | hugoniot) and the triangular pulse");
+        run.write_text(wave_cl.fronts, io::to_csv(o.front_header, o.front_rows));
+      }
       if (!wave_cl.snapshots.empty()) {
         efg::VtkSeries series(wave_cl.snapshots, "wave", [&](const fs::path& p) { return run.output(p); });
         for (const auto& [t_s, nodes] : result.run.snapshots) series.add(t_s * 1e6, nodes, {});

@@ -83,7 +83,8 @@ ShockFrontComparison compare_front_with_characteristics(const WaveStripOptions& 
   c.speed_level_Pa = 0.5 * (c.p_lo_Pa + c.p_hi_Pa);
   c.shock_speed_m_s = kNaN;
   const std::size_t m = r.sensors.size();
-  if (m >= 2) {
+  // a shock only past the levels' meeting: before it the front is still the simple wave's ramp
+  if (m >= 2 && r.sensors[m - 2].x.x() > c.meet_distance_m) {
     const double dt = arrival_time(r, m - 1, c.speed_level_Pa) - arrival_time(r, m - 2, c.speed_level_Pa);
     if (dt > 0) c.shock_speed_m_s = (r.sensors[m - 1].x.x() - r.sensors[m - 2].x.x()) / dt;
   }

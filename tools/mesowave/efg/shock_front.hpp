@@ -9,8 +9,9 @@
 //    until the two levels meet at x_meet = (p_hi - p_lo) / p_max t_r / (1 / c_lo - 1 / c_hi), at
 //    t_meet = tau_hi + x_meet / c_hi; the strip's widths at the sensors before x_b (where no
 //    characteristics have crossed yet) fitted by a line give the measured x_meet, t_meet;
-//  - past it the front is a shock: its speed between the last two sensors (the level midway
-//    between p_lo and p_hi) against the jump condition U^2 = (p_hi - p_lo) / (rho (s_hi - s_lo)).
+//  - past it the front is a shock: its speed between the last two sensors, when both lie past
+//    x_meet (the level midway between p_lo and p_hi timed), against the jump condition
+//    U^2 = (p_hi - p_lo) / (rho (s_hi - s_lo)).
 // The levels: p_hi = 0.9 p_max; p_lo = the larger of 0.1 p_max and the pressure where the law's
 // tangent is least on [0, s(p_max)] (the Y-function's dip: levels below it travel in a spreading
 // fan, not in the steepening front).
@@ -35,7 +36,7 @@ struct ShockFrontComparison {
   double meet_distance_m = 0, meet_time_s = 0;                 ///< characteristics: p_lo and p_hi meet
   double measured_meet_distance_m = 0, measured_meet_time_s = 0;  ///< the strip's (NaN: fewer than 2 sensors before x_b)
   int fitted_sensors = 0;
-  double shock_speed_m_s = 0;      ///< the strip's, between the last two sensors (NaN: not measurable)
+  double shock_speed_m_s = 0;      ///< the strip's, between the last two sensors (NaN: not both past x_meet, or not reached)
   double speed_level_Pa = 0;       ///< the level timed for it
   double jump_speed_m_s = 0;       ///< U of the jump condition between s_lo and s_hi
   double c_0_m_s = 0;              ///< sqrt(f'(0) / rho)

@@ -86,6 +86,7 @@ void add_wave_options(CLI::App& app, WaveCommandLine& v) {
       ->capture_default_str();
   app.add_option("--profiles", v.profiles, "CSV of -sigma_xx along the centre line at the --profile-us times");
   app.add_option("--profile-us", v.profile_us, "A time of --profiles (repeatable; the nearest snapshot's)");
+  app.add_option("--fronts", v.fronts, "CSV of the front's width per sensor against the simple wave (a stiffening law)");
 }
 
 WaveCommandRun run_wave_command(const WaveCommandLine& cl) {
@@ -160,9 +161,15 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
                        {"peak_time_us", r.peak_time_s[k] * 1e6},
                        {"expected_peak_time_us", (r.sensors[k].x.x() / r.c_p_m_s + r.pulse_peak_time_s) * 1e6},
                        {"peak_compression_MPa", r.peak_stress_Pa[k] * 1e-6}});
-  nlohmann::ordered_json dispersion = nlohmann::ordered_json::array();
-  for (const DispersionPoint& p : stencil_dispersion(o, {M_PI / 16, M_PI / 8, M_PI / 4, M_PI / 2, M_PI}, d.dt_first_s))
+  nlohmann::ordered_json dispersion = nlohmann::ordered_json::array(), by_kh = nlohmann::ordered_json::object();
+  const char* kh_names[] = {"pi_16", "pi_8", "pi_4", "pi_2", "pi"};
+  int kh_index = 0;
+  for (const DispersionPoint& p : stencil_dispersion(o, {M_PI / 16, M_PI / 8, M_PI / 4, M_PI / 2, M_PI}, d.dt_first_s)) {
     dispersion.push_back({{"kh", p.kh}, {"phase_speed_over_c_p", p.phase_speed_ratio}, {"with_time_step", p.with_time_step}});
+    // the same keyed by k h (a table's column reads a key path, not an array index)
+    by_kh[std::string("kh_") + kh_names[kh_index++]] = {{"phase_speed_over_c_p", p.phase_speed_ratio},
+                                                         {"with_time_step", p.with_time_step}};
+  }
   w.summary = {
       {"tool_summary", "explicit EFG wave in a strip (plane strain" + std::string(o.rollers ? ", rollers: uniaxial strain)" : ", free sides)")},
       {"nodes", r.nodes},
@@ -185,6 +192,7 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
       {"peak_speed_error", r.peak_speed_error},
       {"sensors", sensors},
       {"stencil_dispersion", dispersion},
+      {"stencil_dispersion_by_kh", by_kh},
       {"setup_s", r.setup_s},
       {"wall_s", d.wall_s},
       {"wall_per_step_us", d.steps > 0 ? d.wall_s / double(d.steps) * 1e6 : 0.0},
@@ -194,7 +202,14 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
                {"stable_dt", d.stable.dt_critical_s * 1e6, "us"}, {"wall", d.wall_s, "s"}};
   const bool linear = !law || !law->nonlinear;
   if (!linear && o.pulse == "triangular" && !o.custom && o.triangular.start_s == 0) {
-    w.summary["characteristics"] = front_json(compare_front_with_characteristics(o, r, *law->compression));
+    const ShockFrontComparison c = compare_front_with_characteristics(o, r, *law->compression);
+    w.summary["characteristics"] = front_json(c);
+    w.front_header = {"sensor", "x_mm", "width_us", "simple_wave_width_us", "before_breaking"};
+    const auto cell = [](double v) { return std::isfinite(v) ? format_significant(v, 4) : std::string(); };  // "": not reached
+    for (std::size_t k = 0; k < c.fronts.size(); ++k)
+      w.front_rows.push_back({r.sensors[k].name, format_significant(c.fronts[k].x_m * 1e3, 10), cell(c.fronts[k].width_s * 1e6),
+                              format_significant(c.fronts[k].simple_wave_width_s * 1e6, 4),
+                              c.fronts[k].before_breaking ? "yes" : "no"});
     w.metrics.emplace_back("formation_distance", w.summary["characteristics"]["formation_distance_mm"].get<double>(), "mm");
   }
   w.history_header = {"t_us"};
@@ -227,7 +242,7 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
       for (std::size_t i = 1; i < d.snapshots.size(); ++i)
         if (std::abs(d.snapshots[i].first - t) < std::abs(d.snapshots[best].first - t)) best = i;
       picked.push_back(&d.snapshots[best].second);
-      w.profile_header.push_back("p_MPa_at_" + format_number(t * 1e6) + "us");
+      w.profile_header.push_back("p_MPa_at_" + format_significant(t * 1e6, 9) + "us");  // 30, not 30.000000000000004
       taken.push_back({{"requested_us", t * 1e6}, {"snapshot_us", d.snapshots[best].first * 1e6}});
     }
     w.summary["profiles"] = taken;

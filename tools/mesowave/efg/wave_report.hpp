@@ -33,7 +33,7 @@ struct WaveCommandLine {
   StripLawParameters law_parameters;  ///< --beta; --e-v-th, --e-v, --a-v, --b-v, --unloading (1 | 0)
   int unloading = 1;
   std::vector<double> profile_us;     ///< --profile-us: the times of --profiles
-  std::filesystem::path history, snapshots, profiles, out;
+  std::filesystem::path history, snapshots, profiles, fronts, out;
   int threads = 0;
   /// The options in SI (InputError naming a value that is out of range).
   WaveStripOptions resolve() const;
@@ -48,6 +48,8 @@ struct WaveOutputs {
   std::vector<std::vector<std::string>> history_rows;
   std::vector<std::string> profile_header;  ///< x_mm, then p_MPa_at_<T>us (p = -sigma_xx) per --profile-us
   std::vector<std::vector<std::string>> profile_rows;
+  std::vector<std::string> front_header;  ///< sensor, x_mm, width_us, simple_wave_width_us, before_breaking (a stiffening law)
+  std::vector<std::vector<std::string>> front_rows;
 };
 /// `law`: the run's (null: the linear law, no characteristics); `profile_s`: the times of the
 /// profiles (each taken from the snapshot nearest it).
