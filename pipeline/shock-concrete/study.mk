@@ -82,12 +82,19 @@ $(SC_OUT)/load-deflection.png: $(foreach l,$(SC_LAWS),$(SC_OUT)/curve-$l.csv) $(
 
 # --- The linear strip (rollers: uniaxial strain), the bar's material: a 40/40 us triangle over 1 m
 # (the peak's speed between 200 and 800 mm) and a 10/10 us one over 0.5 m (k h up to 0.85 at 5 mm:
-# the dispersion shows), per node spacing.
+# the dispersion shows), per node spacing; and a 20 kHz 3-cycle Hann burst over 0.8 m with mw-fem's
+# explicit solver on the same bar (--fem-reference: one row of hexahedra of the same spacing, u_y =
+# u_z held), v_x at 300 mm against the closed form (the set-up of tests/efg/wave_strip_test.cpp).
 define SC_LINEAR
 $(SC_OUT)/strip-long-$1mm.json $(SC_OUT)/strip-long-$1mm.csv &: $(SC_BAR) $(BIN)/mw-efg
 	@mkdir -p $$(@D)
 	$(BIN)/mw-efg wave --from $(SC_BAR) --law linear --length-mm 1000 --spacing-mm $1 --rise-us 40 --fall-us 40 \
 	  --sensor-mm 200 --sensor-mm 800 --history $(SC_OUT)/strip-long-$1mm.csv --out $(SC_OUT)/strip-long-$1mm.json > /dev/null
+$(SC_OUT)/strip-hann-$1mm.json $(SC_OUT)/strip-hann-$1mm.csv &: $(SC_BAR) $(BIN)/mw-efg
+	@mkdir -p $$(@D)
+	$(BIN)/mw-efg wave --from $(SC_BAR) --law linear --pulse hann --frequency-kHz 20 --cycles 3 --length-mm 800 \
+	  --spacing-mm $1 --sensor-mm 300 --duration-us 250 --fem-reference --history $(SC_OUT)/strip-hann-$1mm.csv \
+	  --out $(SC_OUT)/strip-hann-$1mm.json > /dev/null
 $(SC_OUT)/strip-short-$1mm.json $(SC_OUT)/strip-short-$1mm.csv &: $(SC_BAR) $(BIN)/mw-efg
 	@mkdir -p $$(@D)
 	$(BIN)/mw-efg wave --from $(SC_BAR) --law linear --length-mm 500 --spacing-mm $1 --rise-us 10 --fall-us 10 \
@@ -104,6 +111,20 @@ $(SC_OUT)/strip-linear.csv: $(foreach h,$(SC_LINEAR_SPACINGS),$(SC_OUT)/strip-lo
 	  --column speed_kh_pi_4_with_step=stencil_dispersion_by_kh.kh_pi_4.with_time_step --column energy_drift --column wall_s \
 	  --round dt_us=3 --round stable_dt_us=3 --round c_p_m_s=1 --round peak_speed_m_s=1 --round peak_speed_error=4 \
 	  --round speed_kh_pi_8=4 --round speed_kh_pi_4=4 --round speed_kh_pi_4_with_step=4 --round wall_s=3 --csv $@ > /dev/null
+
+$(SC_OUT)/strip-fem.csv: $(foreach h,$(SC_LINEAR_SPACINGS),$(SC_OUT)/strip-hann-$(h)mm.json) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name spacing_mm $(foreach h,$(SC_LINEAR_SPACINGS),--row $h=$(SC_OUT)/strip-hann-$(h)mm.json) \
+	  --column efg_rms_error=fem_reference.sensors.x0.efg_rms_error --column fem_rms_error=fem_reference.sensors.x0.fem_rms_error \
+	  --column efg_fem_rms_difference=fem_reference.sensors.x0.efg_fem_rms_difference --column efg_nodes=nodes \
+	  --column efg_dt_us=dt_us --column efg_wall_s=wall_s --column fem_elements=fem_reference.elements \
+	  --column fem_dt_us=fem_reference.dt_us --column fem_wall_s=fem_reference.wall_s \
+	  --round efg_rms_error=4 --round fem_rms_error=4 --round efg_fem_rms_difference=4 --round efg_dt_us=3 --round fem_dt_us=3 \
+	  --round efg_wall_s=3 --round fem_wall_s=3 --csv $@ > /dev/null
+
+$(SC_OUT)/strip-hann.png: $(SC_OUT)/strip-hann-$(SC_LINEAR_MM)mm.csv $(BIN)/mw-table
+	$(BIN)/mw-table plot $< --x t_us --y 'x0_v_x_m_s=EFG' --y 'x0_v_x_fem_m_s=mw-fem' --y 'x0_v_x_continuum_m_s=closed form' \
+	  --style lines --x-label 't [us]' --y-label 'v x at 300 mm [m/s]' --key 'inside top right' \
+	  --title 'Linear bar, $(SC_LINEAR_MM) mm: a 20 kHz 3-cycle burst, EFG and mw-fem against the closed form' --out $@ > /dev/null
 
 define SC_LINEAR_FIGURE
 $(SC_OUT)/strip-$1.png: $(SC_OUT)/strip-$1-$(SC_LINEAR_MM)mm.csv $(BIN)/mw-table
@@ -174,8 +195,8 @@ endef
 $(eval $(call SC_PROFILE_FIGURE,quadratic,Smooth law p = M s (1 + beta s)))
 $(eval $(call SC_PROFILE_FIGURE,hugoniot,Y-function without Eq. (27)))
 
-SC_TABLES := bending strip-linear shock
-SC_FIGURES := load-deflection.png strip-long.png strip-short.png profiles-quadratic.png profiles-hugoniot.png
+SC_TABLES := bending strip-linear strip-fem shock
+SC_FIGURES := load-deflection.png strip-long.png strip-short.png strip-hann.png profiles-quadratic.png profiles-hugoniot.png
 
 .PHONY: shock-concrete shock-concrete-summary
 shock-concrete: $(foreach t,$(SC_TABLES),$(SC_OUT)/$t.csv) $(addprefix $(SC_OUT)/,$(SC_FIGURES)) \

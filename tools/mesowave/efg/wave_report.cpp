@@ -18,6 +18,10 @@ WaveStripOptions WaveCommandLine::resolve() const {
   o.gauss = gauss;
   o.rollers = !free_sides;
   o.pulse = pulse;
+  if (pulse == "hann")  // the burst of mw-fem's and mw-dem's runs, so that --fem-reference loads both alike
+    o.custom = signal::HannBurst(require_positive("--frequency-kHz", frequency_kHz) * 1e3, require_positive("--cycles", cycles),
+                                 peak_MPa * 1e6);
+  if (fem_reference && pulse != "hann") throw InputError("--fem-reference needs --pulse hann (mw-fem's only load is a Hann burst)");
   o.triangular = {peak_MPa * 1e6, rise_us * 1e-6, fall_us * 1e-6, start_us * 1e-6};
   o.friedlander = {peak_MPa * 1e6, positive_us * 1e-6, decay, start_us * 1e-6};
   for (double x : sensor_mm) o.sensor_x_m.push_back(x * 1e-3);
@@ -51,7 +55,11 @@ void add_wave_options(CLI::App& app, WaveCommandLine& v) {
   app.add_option("--nu", v.nu, "Poisson's ratio")->capture_default_str();
   app.add_option("--density-kg-m3", v.density_kg_m3, "Density")->capture_default_str();
   app.add_option("--pulse", v.pulse, "triangular (--peak-MPa, --rise-us, --fall-us) | friedlander (--peak-MPa, "
-                                     "--positive-us, --decay)")->capture_default_str();
+                                     "--positive-us, --decay) | hann (--peak-MPa, --frequency-kHz, --cycles)")->capture_default_str();
+  app.add_option("--frequency-kHz", v.frequency_kHz, "Hann burst: centre frequency")->capture_default_str();
+  app.add_option("--cycles", v.cycles, "Hann burst: cycles")->capture_default_str();
+  app.add_flag("--fem-reference", v.fem_reference, "Run mw-fem's explicit solver on the same bar (--pulse hann): v_x beside "
+                                                   "the history, rms errors against the closed form in the summary");
   app.add_option("--peak-MPa", v.peak_MPa, "Peak pressure on x = 0")->capture_default_str();
   app.add_option("--rise-us", v.rise_us, "Triangular: rise time")->capture_default_str();
   app.add_option("--fall-us", v.fall_us, "Triangular: fall time")->capture_default_str();
@@ -98,9 +106,11 @@ WaveCommandRun run_wave_command(const WaveCommandLine& cl) {
   w.law = make_strip_law(cl.law, {o.E_Pa, o.nu, o.thickness_m, o.density_kg_m3, PlaneState::plane_strain}, p);
   w.options.material = w.law.point.get();
   w.result = run_wave_strip(w.options);
+  if (cl.fem_reference)
+    w.fem = fem_bar_reference(w.options, signal::HannBurst(cl.frequency_kHz * 1e3, cl.cycles, cl.peak_MPa * 1e6), w.result);
   std::vector<double> profile_s;
   for (double t : cl.profile_us) profile_s.push_back(t * 1e-6);
-  w.outputs = wave_strip_outputs(w.options, w.result, &w.law, profile_s);
+  w.outputs = wave_strip_outputs(w.options, w.result, &w.law, profile_s, w.fem ? &*w.fem : nullptr);
   w.outputs.summary["law"] = cl.law;
   return w;
 }
@@ -151,7 +161,7 @@ nlohmann::ordered_json front_json(const ShockFrontComparison& c) {
 }  // namespace
 
 WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult& r, const StripLaw* law,
-                               const std::vector<double>& profile_s) {
+                               const std::vector<double>& profile_s, const FemBarReference* fem) {
   WaveOutputs w;
   const DynamicsResult& d = r.run;
   nlohmann::ordered_json sensors = nlohmann::ordered_json::array();
@@ -218,6 +228,23 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
   // the linear law's closed form beside the run (the continuum the peak speed is measured against)
   if (linear)
     for (const Sensor& s : r.sensors) w.history_header.push_back(s.name + "_sigma_xx_continuum_MPa");
+  if (fem) {
+    nlohmann::ordered_json per_sensor = nlohmann::ordered_json::object();
+    for (std::size_t k = 0; k < r.sensors.size(); ++k) {
+      w.history_header.push_back(r.sensors[k].name + "_v_x_fem_m_s");
+      w.history_header.push_back(r.sensors[k].name + "_v_x_continuum_m_s");
+      per_sensor[r.sensors[k].name] = {{"x_mm", fem->sensor_x_m[k] * 1e3},
+                                       {"efg_rms_error", fem->efg_error[k]},
+                                       {"fem_rms_error", fem->fem_error[k]},
+                                       {"efg_fem_rms_difference", fem->efg_fem_difference[k]}};
+    }
+    w.summary["fem_reference"] = {{"what", "mw-fem explicit (fem::run_explicit), one row of hexahedra, u_y = u_z held; v_x, "
+                                           "rms over the record / the closed form's peak"},
+                                  {"elements", fem->elements},
+                                  {"dt_us", fem->dt_s * 1e6},
+                                  {"wall_s", fem->wall_s},
+                                  {"sensors", per_sensor}};
+  }
   for (std::size_t i = 0; i < d.sample_t_s.size(); ++i) {
     std::vector<std::string> row{format_significant(d.sample_t_s[i] * 1e6, 10)};
     for (std::size_t k = 0; k < r.sensors.size(); ++k) {
@@ -230,6 +257,12 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
     if (linear)
       for (const Sensor& s : r.sensors)
         row.push_back(format_significant(continuum_sigma_xx(o, r, s.x.x(), d.sample_t_s[i]) * 1e-6, 10));
+    if (fem)
+      for (std::size_t k = 0; k < r.sensors.size(); ++k) {
+        const double v = fem->v_x_m_s[k][i];
+        row.push_back(std::isfinite(v) ? format_significant(v, 10) : std::string());  // "": past the FEM's record
+        row.push_back(format_significant(continuum_velocity_m_s(o, r.c_p_m_s, fem->sensor_x_m[k], d.sample_t_s[i]), 10));
+      }
     w.history_rows.push_back(std::move(row));
   }
   if (!profile_s.empty()) {

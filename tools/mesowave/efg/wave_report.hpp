@@ -7,6 +7,7 @@
 // (efg/shock_front), and --profiles writes -sigma_xx along the centre line at chosen times.
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <tuple>
@@ -14,6 +15,7 @@
 
 #include "mesowave/efg/shock_front.hpp"
 #include "mesowave/efg/strip_law.hpp"
+#include "mesowave/efg/wave_fem_reference.hpp"
 #include "mesowave/efg/wave_strip.hpp"
 
 namespace mesowave::efg {
@@ -33,6 +35,8 @@ struct WaveCommandLine {
   StripLawParameters law_parameters;  ///< --beta; --e-v-th, --e-v, --a-v, --b-v, --unloading (1 | 0)
   int unloading = 1;
   std::vector<double> profile_us;     ///< --profile-us: the times of --profiles
+  double frequency_kHz = 20, cycles = 3;  ///< --pulse hann
+  bool fem_reference = false;         ///< --fem-reference: mw-fem's bar beside the run (--pulse hann)
   std::filesystem::path history, snapshots, profiles, fronts, out;
   int threads = 0;
   /// The options in SI (InputError naming a value that is out of range).
@@ -53,14 +57,17 @@ struct WaveOutputs {
 };
 /// `law`: the run's (null: the linear law, no characteristics); `profile_s`: the times of the
 /// profiles (each taken from the snapshot nearest it).
+/// `fem`: mw-fem's bar (--fem-reference), its v_x beside each sensor's history.
 WaveOutputs wave_strip_outputs(const WaveStripOptions& options, const WaveStripResult& result,
-                               const StripLaw* law = nullptr, const std::vector<double>& profile_s = {});
+                               const StripLaw* law = nullptr, const std::vector<double>& profile_s = {},
+                               const FemBarReference* fem = nullptr);
 
 /// What `mw-efg wave` runs: the options resolved, the law made from the registry, the strip run.
 struct WaveCommandRun {
   WaveStripOptions options;
   StripLaw law;
   WaveStripResult result;
+  std::optional<FemBarReference> fem;
   WaveOutputs outputs;
 };
 WaveCommandRun run_wave_command(const WaveCommandLine& command_line);
