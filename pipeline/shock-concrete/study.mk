@@ -17,11 +17,12 @@
 #   stress profiles at several times, three node spacings.
 # The blasted slab (Section 4.3, Fig. 12) is not built: cracks in dynamics do not exist yet.
 #
-# Sizes (QUICK=0, measured on the 2-core development machine, one run after the other): the beams on
-# the 5 mm grid (1932 nodes, about 20 s a law for the complete curve; the 2.5 mm grid would take about
-# 10 min a law), the strips at 10, 5 and 2.5 mm (the 2.5 mm one about 12 s), the shock strips at 2,
-# 1 and 0.5 mm (about 5 s at 1 mm, 40 s at 0.5 mm). The quick tree: the 10 mm beam (about 2 s a
-# law), strips at 20 and 10 mm, shock strips at 4 and 2 mm - seconds in all.
+# Sizes (QUICK=0; the runs' own wall times on the 2-core development machine at load 9-11, one run
+# after the other; docs/efg.md, "The shock-concrete study"): the beams on the 5 mm grid (1932 nodes,
+# 23-26 s a law for the complete curve; the 2.5 mm grid would take about 10 min a law), the linear
+# strips at 10, 5 and 2.5 mm (13 s in all), the shock strips at 2, 1 and 0.5 mm (116 s in all, 100 s
+# of it the two 0.5 mm runs). The quick tree: the 10 mm beam (about 1.5 s a law), strips at 20 and
+# 10 mm, shock strips at 4 and 2 mm - about 4 s of tool time.
 
 # Study prefix: SC (make variables SC_*, functions sc_*; scripts/new-study renames them).
 PIPELINE_GOALS += shock-concrete-summary
@@ -138,13 +139,18 @@ $(eval $(call SC_LINEAR_FIGURE,short,100,400,10/10 us))
 
 # --- Shock steepening: a 400 x 12 mm strip (the tests' is 300 mm long: tests/efg/shock_steepening_test.cpp),
 # the sensors at 10-300 mm (the last two past where the smooth law's levels meet, 212 mm, for the
-# shock speed), 140 us (the Y-function's shock, at about 2600 m/s, passes 300 mm at about 130 us; the
-# elastic precursor's reflection from x = 400 mm is back at 300 mm only at 164 us), the step
+# shock speed), 110 us for the smooth law (its shock, at about 3850 m/s, passes 300 mm at about 90 us
+# and meets the free end x = 400 mm at about 115 us; past that the 0.5 mm strip's reflected shock blows
+# up the undamped run) and 140 us for the Y-function (its shock, at about 2600 m/s, passes 300 mm at
+# about 130 us; the elastic precursor's reflection is back at 300 mm only at 164 us), the step
 # re-read every step (a 2 mm strip stiffens faster than every 10th step catches); the bar, material
 # and pulse from lab-data. quadratic: the smooth law; hugoniot: the Y-function without Eq. (27) (the
 # paper's Section 4.2 test); hugoniot-unloading: with it (lab-data's unloading = 1).
 SC_SENSORS := $(foreach x,10 30 50 100 150 200 250 300,--sensor-mm $x)
 SC_PROFILE_TIMES := $(foreach t,20 40 60 80 100,--profile-us $t)
+sc_duration_quadratic := 110
+sc_duration_hugoniot := 140
+sc_duration_hugoniot-unloading := 140
 sc_inputs_quadratic := $(SC_BAR) $(SC_SMOOTH)
 sc_args_quadratic := --law quadratic --from $(SC_BAR) --from $(SC_SMOOTH)
 sc_inputs_hugoniot := $(SC_BAR) $(SC_HUGONIOT)
@@ -159,7 +165,7 @@ SC_SHOCK_LAWS := quadratic hugoniot hugoniot-unloading
 define SC_SHOCK
 $(SC_OUT)/shock-$1$3.json $(SC_OUT)/profiles-$1$3.csv $(SC_OUT)/fronts-$1$3.csv &: $(sc_inputs_$1) $(BIN)/mw-efg
 	@mkdir -p $$(@D)
-	$(BIN)/mw-efg wave $(sc_args_$1) --length-mm 400 --width-mm 12 --spacing-mm $2 --duration-us 140 --stiffness-check 1 \
+	$(BIN)/mw-efg wave $(sc_args_$1) --length-mm 400 --width-mm 12 --spacing-mm $2 --duration-us $(sc_duration_$1) --stiffness-check 1 \
 	  $(SC_SENSORS) --profiles $(SC_OUT)/profiles-$1$3.csv $(SC_PROFILE_TIMES) --fronts $(SC_OUT)/fronts-$1$3.csv \
 	  --out $(SC_OUT)/shock-$1$3.json > /dev/null
 endef
