@@ -36,13 +36,13 @@ endif
 # The choice as a file, rewritten only when it changes: switching re-runs the calibration and
 # what follows it, switching back re-runs it again, and a second make with the same choice runs nothing.
 CC_CALIBRATION_CHOICE := $(CC_OUT)/calibration-targets.choice
-$(CC_CALIBRATION_CHOICE): cc-calibration-choice-check
+$(CC_CALIBRATION_CHOICE): concrete-cube-calibration-choice-check
 	@mkdir -p $(@D)
 	@echo '$(CC_CALIBRATION_TARGETS): $(CC_CALIBRATION_TARGET_FILES)' | cmp -s - $@ || \
 	  echo '$(CC_CALIBRATION_TARGETS): $(CC_CALIBRATION_TARGET_FILES)' > $@
 # No recipe, no file: the choice file's recipe runs every time (it rewrites the file only on a change).
-.PHONY: cc-calibration-choice-check
-cc-calibration-choice-check:
+.PHONY: concrete-cube-calibration-choice-check
+concrete-cube-calibration-choice-check:
 
 $(CC_OUT)/calibration.json $(CC_OUT)/calibration-trials.csv $(CC_OUT)/calibration-targets.csv \
     $(CC_OUT)/calibration-trajectory.png $(CC_OUT)/calibration-stress-strain.png &: $(CC_COMPRESSION_SCENE) \
