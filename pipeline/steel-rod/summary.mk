@@ -16,7 +16,9 @@ SR_MEASURED := $(foreach m,$(SR_MODELS),$(SR_OUT)/measure-$m.csv) $(SR_OUT)/meas
 SR_PCCS := $(foreach m,$(SR_MODELS),$(call sr_per_f,pcc-$m,csv))
 # The FEM record in ms, as its first run reports it (steps x dt): the experiment's, or the quick
 # tree's --duration-ms. A shell expansion for recipes, with the run as a prerequisite.
-SR_FEM_FIRST := $(SR_OUT)/fem-$(SR_FEM_MESH)mm-$(firstword $(SR_FREQS))kHz.json
+# (its report is a side file of the run's rule, whose target is the signal file: rules depend on that)
+SR_FEM_FIRST_RUN := $(SR_OUT)/fem-$(SR_FEM_MESH)mm-$(firstword $(SR_FREQS))kHz.h5
+SR_FEM_FIRST := $(SR_FEM_FIRST_RUN:.h5=.json)
 sr_record_ms = $$(jq '.steps * .dt_us / 1000' $(SR_FEM_FIRST))
 
 # Per model and frequency: PCC of sensor S against the FEM (signals and envelopes).
@@ -79,7 +81,7 @@ $(SR_OUT)/figure9.png: $(SR_MEASURED) $(SR_EXPERIMENT) $(BIN)/mw-dispersion
 	  --plot-f-range-kHz 45,155 --plot-key outside,right,top --plot $@ > /dev/null
 
 # Speed against error: one point per model (its own marker and legend entry), as the cube's.
-$(SR_OUT)/speed-error.png: $(SR_OUT)/speed.csv $(SR_FEM_FIRST) $(BIN)/mw-table
+$(SR_OUT)/speed-error.png: $(SR_OUT)/speed.csv $(SR_FEM_FIRST_RUN) $(BIN)/mw-table
 	$(BIN)/mw-table plot $< --x wall_s --y rss_m2_s2 --label-column model --log-x --log-y \
 	  --x-label "wall time of one $(sr_record_ms) ms run, one thread [s]" \
 	  --y-label 'RSS of the group velocity, $(subst $(sr_comma),-,$(SR_BAND_KHZ)) kHz [m^2/s^2]' \
@@ -88,7 +90,7 @@ $(SR_OUT)/speed-error.png: $(SR_OUT)/speed.csv $(SR_FEM_FIRST) $(BIN)/mw-table
 SR_SUMMARY_PARTS := $(foreach t,table1 table2 velocity speed,$(SR_OUT)/$t.md) $(SR_OUT)/findings.md
 # The rod's length is the packings' (the experiment's, or the quick tree's override).
 $(SR_OUT)/summary.md: $(SR_SUMMARY_PARTS) $(SR_OUT)/pcc.csv $(SR_OUT)/figure9.png $(SR_OUT)/speed-error.png \
-    $(SR_OUT)/packing-1.03R.h5 $(SR_FEM_FIRST) pipeline/steel-rod/summarize.sh
+    $(SR_OUT)/packing-1.03R.h5 $(SR_FEM_FIRST_RUN) pipeline/steel-rod/summarize.sh
 	pipeline/steel-rod/summarize.sh $(SR_OUT) $(SR_FEM_MESH) $(words $(SR_FREQS)) $(sr_record_ms) $(SR_ALPHA_PER_S) \
 	  $$(jq .length_mm $(SR_OUT)/packing-1.03R.json) $(subst $(sr_comma),-,$(SR_BAND_KHZ)) > $@
 
