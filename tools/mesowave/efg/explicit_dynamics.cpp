@@ -129,7 +129,7 @@ Eigen::VectorXd ExplicitDynamics::external_force(double t_s) const {
   return f;
 }
 
-double ExplicitDynamics::point_forces(const Eigen::VectorXd& u, std::vector<PointState>& states,
+double ExplicitDynamics::point_forces(const Eigen::VectorXd& u, const Eigen::VectorXd* v, std::vector<PointState>& states,
                                       std::vector<Eigen::Vector3d>& s, int threads) const {
   const auto& shape = model_->shape_functions();
   const auto& points = model_->discretisation().points;
@@ -139,6 +139,7 @@ double ExplicitDynamics::point_forces(const Eigen::VectorXd& u, std::vector<Poin
 #pragma omp parallel for num_threads(threads) schedule(static) reduction(max : smax)
   for (std::int64_t p = 0; p < np; ++p) {
     PointState& st = states[std::size_t(p)];
+    st.strain_rate_1_s = v ? strain_of(shape[std::size_t(p)], *v) : Eigen::Vector3d::Zero();
     s[std::size_t(p)] = material_->update(strain_of(shape[std::size_t(p)], u), st) * (t * points[std::size_t(p)].weight_m2);
     smax = std::max(smax, st.modulus_scale);
   }
@@ -158,11 +159,21 @@ Eigen::Vector2d ExplicitDynamics::node_internal_force(std::int64_t i, const std:
 }
 
 Eigen::VectorXd ExplicitDynamics::internal_force(const Eigen::VectorXd& u, std::vector<PointState>& states) const {
+  return internal_force_with(u, nullptr, states);
+}
+
+Eigen::VectorXd ExplicitDynamics::internal_force(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                                 std::vector<PointState>& states) const {
+  return internal_force_with(u, &v, states);
+}
+
+Eigen::VectorXd ExplicitDynamics::internal_force_with(const Eigen::VectorXd& u, const Eigen::VectorXd* v,
+                                                      std::vector<PointState>& states) const {
   const std::size_t np = model_->shape_functions().size();
   if (states.size() != np) states.assign(np, PointState{});
   std::vector<Eigen::Vector3d> s(np);
   const int nt = region_threads(np, 2000);
-  point_forces(u, states, s, nt);
+  point_forces(u, v, states, s, nt);
   Eigen::VectorXd f(Eigen::Index(model_->dof_count()));
   const auto nn = std::int64_t(model_->mls().node_count());
 #pragma omp parallel for num_threads(nt) schedule(static)
@@ -238,7 +249,7 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
 
   for (std::int64_t n = 0; t < o.duration_s; ++n) {
     // Stresses at the points from u^n, each point writing its own entry.
-    const double smax = point_forces(u, states, s, nt);
+    const double smax = point_forces(u, &v, states, s, nt);  // v = v^{n-1/2}: the points' strain rates
     r.max_modulus_scale = std::max(r.max_modulus_scale, smax);
     if (n % o.stiffness_check_every == 0) {  // the stable step of the stiffened law
       dt_half = dt_base / std::sqrt(std::max(1.0, smax));
@@ -305,6 +316,7 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
       for (std::size_t k = 0; k < sensors.size(); ++k) {
         SensorSample smp;
         smp.velocity_m_s = n == 0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(0.5 * (displacement_of(sensor_sf[k], v) + displacement_of(sensor_sf[k], vs)));
+        sensor_state[k].strain_rate_1_s = strain_of(sensor_sf[k], v);
         smp.stress_Pa = material_->update(strain_of(sensor_sf[k], u_prev), sensor_state[k]);
         r.sensors[k].push_back(smp);
       }
@@ -313,7 +325,10 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
         r.max_constraint_violation_m =
             std::max(r.max_constraint_violation_m, (C_ * u - constraints_->d()).cwiseAbs().maxCoeff());
     } else {
-      for (std::size_t k = 0; k < sensors.size(); ++k) material_->update(strain_of(sensor_sf[k], u_prev), sensor_state[k]);
+      for (std::size_t k = 0; k < sensors.size(); ++k) {
+        sensor_state[k].strain_rate_1_s = strain_of(sensor_sf[k], v);
+        material_->update(strain_of(sensor_sf[k], u_prev), sensor_state[k]);
+      }
     }
     if (o.snapshot_stride > 0 && (n % o.snapshot_stride == 0 || last)) {
       NodeSnapshot snap;

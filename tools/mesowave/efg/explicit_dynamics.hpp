@@ -150,6 +150,9 @@ class ExplicitDynamics {
   /// f_int(u) = sum_g B^T sigma(B u) w t, updating `states` (one per Gauss point). For the linear law
   /// it equals K u to round-off (tested). Parallel, the same bits for any thread count.
   Eigen::VectorXd internal_force(const Eigen::VectorXd& u, std::vector<PointState>& states) const;
+  /// The same with the velocity v (MLS parameters) whose strain rate B v each point's state gets before
+  /// its update (PointState::strain_rate_1_s), as in the run with v = v^{n-1/2}.
+  Eigen::VectorXd internal_force(const Eigen::VectorXd& u, const Eigen::VectorXd& v, std::vector<PointState>& states) const;
   /// f_ext(t) = sum_l p_l(t) f_1,l.
   Eigen::VectorXd external_force(double t_s) const;
   /// Runs from rest (u = v = 0, fresh PointStates). InputError: bad options (one line each), a step
@@ -159,8 +162,10 @@ class ExplicitDynamics {
  private:
   /// s_g = sigma_g(B_g u) w_g t at every Gauss point (updating `states`); the largest modulus_scale
   /// (at least 1). The one stress pass of internal_force and of the time step.
-  double point_forces(const Eigen::VectorXd& u, std::vector<PointState>& states, std::vector<Eigen::Vector3d>& s,
-                      int threads) const;
+  /// Each point's strain rate B_g v goes into its state first (v null: zero).
+  double point_forces(const Eigen::VectorXd& u, const Eigen::VectorXd* v, std::vector<PointState>& states,
+                      std::vector<Eigen::Vector3d>& s, int threads) const;
+  Eigen::VectorXd internal_force_with(const Eigen::VectorXd& u, const Eigen::VectorXd* v, std::vector<PointState>& states) const;
   /// Node i's f_int from the points' s_g, summed in point order (the same bits for any thread count).
   Eigen::Vector2d node_internal_force(std::int64_t i, const std::vector<Eigen::Vector3d>& s) const;
 

@@ -21,6 +21,9 @@ struct PointState {
   /// Y < 1 (Eq. (25) dips below 1 past e_v,th)
   double min_eps_v = 0.0;
   double modulus_scale = 1.0;  ///< tangent stiffness / D() at the last update
+  /// the strain rate eps_dot = B v^{n-1/2} [1/s] (Voigt, engineering shear), set by the integrator
+  /// before update (see the top of this file)
+  Eigen::Vector3d strain_rate_1_s = Eigen::Vector3d::Zero();
 };
 
 class PointMaterial {
