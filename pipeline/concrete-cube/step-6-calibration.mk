@@ -4,8 +4,9 @@
 # frictionless walls, the upper one at 25 mm/s with the inertial number checked
 # below 1e-4, extensometers at mid-height) and mw-calibrate cube, which varies
 # E_dem, nu_dem and T = C (friction angle 18 deg, given) from the paper's values
-# (the scene's material) until E_glob, nu_glob and the peak stress meet the static
-# tests (static-test.toml) within 1 % on E, 0.01 on nu and 2 % on strength
+# (the scene's material) until E_glob, nu_glob and the peak stress meet the
+# targets (CC_CALIBRATION_TARGETS below: the static tests, static-test.toml, or the lab's own step-4
+# results, raw-compress.json) within 1 % on E, 0.01 on nu and 2 % on strength
 # (docs/calibration.md). Every trial is a recorded mw-dem run; calibration.json
 # is the material of the wave runs (CC_MATERIAL, read by `mw-dem --from`).
 #
@@ -15,14 +16,42 @@
 CC_COMPRESSION_SCENE := $(CC_NOTES)/scenes/cube-compression.toml
 CC_CALIBRATION_TRIALS := $(CC_OUT)/calibration
 
-$(CC_OUT)/calibration.json $(CC_OUT)/calibration-trials.csv $(CC_OUT)/calibration-trajectory.png \
-    $(CC_OUT)/calibration-stress-strain.png &: $(CC_COMPRESSION_SCENE) $(CC_OUT)/packing.h5 \
-    $(CC_LAB)/static-test.toml $(BIN)/mw-calibrate $(BIN)/mw-dem
+# The calibration's targets, chosen here and only here (docs/calibration.md, "Which targets"):
+#   static-test  the paper's static tests: E_st_measured, nu_st and sigma_max of static-test.toml
+#                (Section 3.2; Table 2's experiment row). The default.
+#   raw-step-4   the lab's own step 4: E_st_measured_GPa and sigma_max_MPa of raw-compress.json
+#                (mw-compress on the load-frame records, raw-steps-2-4.mk); nu_st stays static-test.toml's
+#                (the paper takes nu_d; the records have no lateral strain). The last --from file wins.
+#   make reproduce-quick CC_CALIBRATION_TARGETS=raw-step-4
+# calibration.json and calibration-targets.csv (the report, under Table 2) say which file, entry and
+# SHA-256 each target came from.
+CC_CALIBRATION_TARGETS := static-test
+CC_CALIBRATION_TARGET_FILES.static-test := $(CC_LAB)/static-test.toml
+CC_CALIBRATION_TARGET_FILES.raw-step-4 := $(CC_LAB)/static-test.toml $(CC_OUT)/raw-compress.json
+CC_CALIBRATION_TARGET_FILES := $(CC_CALIBRATION_TARGET_FILES.$(CC_CALIBRATION_TARGETS))
+ifeq ($(strip $(CC_CALIBRATION_TARGET_FILES)),)
+$(error CC_CALIBRATION_TARGETS = '$(CC_CALIBRATION_TARGETS)' is not a choice: static-test or raw-step-4)
+endif
+
+# The choice as a file, rewritten only when it changes: switching re-runs the calibration and
+# what follows it, switching back re-runs it again, and a second make with the same choice runs nothing.
+CC_CALIBRATION_CHOICE := $(CC_OUT)/calibration-targets.choice
+$(CC_CALIBRATION_CHOICE): concrete-cube-calibration-choice-check
+	@mkdir -p $(@D)
+	@echo '$(CC_CALIBRATION_TARGETS): $(CC_CALIBRATION_TARGET_FILES)' | cmp -s - $@ || \
+	  echo '$(CC_CALIBRATION_TARGETS): $(CC_CALIBRATION_TARGET_FILES)' > $@
+# No recipe, no file: the choice file's recipe runs every time (it rewrites the file only on a change).
+.PHONY: concrete-cube-calibration-choice-check
+concrete-cube-calibration-choice-check:
+
+$(CC_OUT)/calibration.json $(CC_OUT)/calibration-trials.csv $(CC_OUT)/calibration-targets.csv \
+    $(CC_OUT)/calibration-trajectory.png $(CC_OUT)/calibration-stress-strain.png &: $(CC_COMPRESSION_SCENE) \
+    $(CC_OUT)/packing.h5 $(CC_CALIBRATION_TARGET_FILES) $(CC_CALIBRATION_CHOICE) $(BIN)/mw-calibrate $(BIN)/mw-dem
 	rm -rf $(CC_CALIBRATION_TRIALS)
-	$(BIN)/mw-calibrate --from $(CC_LAB)/static-test.toml cube --scene $(CC_COMPRESSION_SCENE) \
+	$(BIN)/mw-calibrate $(addprefix --from ,$(CC_CALIBRATION_TARGET_FILES)) cube --scene $(CC_COMPRESSION_SCENE) \
 	  --packing $(CC_OUT)/packing.h5 --work-dir $(CC_CALIBRATION_TRIALS) --trials $(CC_OUT)/calibration-trials.csv \
-	  --plot-trajectory $(CC_OUT)/calibration-trajectory.png --plot-curves $(CC_OUT)/calibration-stress-strain.png \
-	  --out $(CC_OUT)/calibration.json > /dev/null
+	  --targets-csv $(CC_OUT)/calibration-targets.csv --plot-trajectory $(CC_OUT)/calibration-trajectory.png \
+	  --plot-curves $(CC_OUT)/calibration-stress-strain.png --out $(CC_OUT)/calibration.json > /dev/null
 
 $(CC_OUT)/compression-paper-parameters.json $(CC_OUT)/compression-paper-parameters.csv \
     $(CC_OUT)/compression-paper-parameters.h5 &: $(CC_COMPRESSION_SCENE) $(CC_OUT)/packing.h5 \
@@ -50,7 +79,7 @@ $(CC_OUT)/table2-vs-paper.txt $(CC_OUT)/table2-vs-paper.csv &: $(CC_OUT)/calibra
 	  --csv $(CC_OUT)/table2-vs-paper.csv --text $(CC_OUT)/table2-vs-paper.txt > /dev/null
 
 CC_MATERIAL := $(CC_OUT)/calibration.json
-CC_CALIBRATION_RESULTS := $(CC_OUT)/calibration.json $(CC_OUT)/calibration-trajectory.png \
+CC_CALIBRATION_RESULTS := $(CC_OUT)/calibration.json $(CC_OUT)/calibration-targets.csv $(CC_OUT)/calibration-trajectory.png \
   $(CC_OUT)/calibration-stress-strain.png $(CC_OUT)/table2.csv $(CC_OUT)/table2-vs-paper.txt
 
 .PHONY: concrete-cube-calibration concrete-cube-calibration-summary
@@ -60,6 +89,9 @@ concrete-cube-calibration-summary: concrete-cube-calibration
 	@echo
 	@echo "== Concrete cube, step 6: calibration ($(CC_OUT)/calibration.json; trials: $(CC_OUT)/calibration-trials.csv) =="
 	@$(CC_PRINT_CSV) $(CC_OUT)/calibration-trials.csv
+	@echo
+	@echo "Targets (CC_CALIBRATION_TARGETS = $(CC_CALIBRATION_TARGETS)):"
+	@$(CC_PRINT_CSV) $(CC_OUT)/calibration-targets.csv
 	@echo
 	@echo "Table 2:"
 	@$(CC_PRINT_CSV) $(CC_OUT)/table2.csv

@@ -14,6 +14,10 @@ sr_per_f = $(foreach f,$(SR_FREQS),$(SR_OUT)/$1-$(f)kHz.$2)      # one file per 
 SR_FEM_LABEL := FEM $(SR_FEM_MESH) mm
 SR_MEASURED := $(foreach m,$(SR_MODELS),$(SR_OUT)/measure-$m.csv) $(SR_OUT)/measure-fem-$(SR_FEM_MESH)mm.csv
 SR_PCCS := $(foreach m,$(SR_MODELS),$(call sr_per_f,pcc-$m,csv))
+# The FEM record in ms, as its first run reports it (steps x dt): the experiment's, or the quick
+# tree's --duration-ms. A shell expansion for recipes, with the run as a prerequisite.
+SR_FEM_FIRST := $(SR_OUT)/fem-$(SR_FEM_MESH)mm-$(firstword $(SR_FREQS))kHz.json
+sr_record_ms = $$(jq '.steps * .dt_us / 1000' $(SR_FEM_FIRST))
 
 # Per model and frequency: PCC of sensor S against the FEM (signals and envelopes).
 $(SR_OUT)/pcc.csv: $(SR_PCCS) $(BIN)/mw-table
@@ -41,7 +45,7 @@ $(SR_OUT)/velocity.csv: $(SR_MEASURED) $(BIN)/mw-table
 	  --where 'f_kHz={f_kHz}' --column theory=theory_c_group_m_s --column '$(SR_FEM_LABEL)=c_group_m_s' \
 	  $(foreach m,$(SR_MODELS),--join $(SR_OUT)/measure-$m.csv:$m=c_group_m_s) --csv $@ > /dev/null
 
-# Speed against error: the median wall time of one run ($(SR_DURATION_MS) ms simulated) against the RSS.
+# Speed against error: the median wall time of one run (the FEM's record simulated) against the RSS.
 $(SR_OUT)/speed.csv: $(SR_MEASURED) $(foreach h,$(SR_SPEED_MESHES),$(SR_OUT)/measure-fem-$(h)mm.csv) $(BIN)/mw-table
 	$(BIN)/mw-table gather --key-name model \
 	  $(foreach h,$(SR_FEM_MESH) $(SR_SPEED_MESHES),--row 'FEM $h mm=$(call sr_list,$(call sr_per_f,fem-$(h)mm,json) $(SR_OUT)/measure-fem-$(h)mm.json)') \
@@ -75,17 +79,17 @@ $(SR_OUT)/figure9.png: $(SR_MEASURED) $(SR_EXPERIMENT) $(BIN)/mw-dispersion
 	  --plot-f-range-kHz 45,155 --plot-key outside,right,top --plot $@ > /dev/null
 
 # Speed against error: one point per model (its own marker and legend entry), as the cube's.
-$(SR_OUT)/speed-error.png: $(SR_OUT)/speed.csv $(BIN)/mw-table
+$(SR_OUT)/speed-error.png: $(SR_OUT)/speed.csv $(SR_FEM_FIRST) $(BIN)/mw-table
 	$(BIN)/mw-table plot $< --x wall_s --y rss_m2_s2 --label-column model --log-x --log-y \
-	  --x-label 'wall time of one $(SR_DURATION_MS) ms run, one thread [s]' \
+	  --x-label "wall time of one $(sr_record_ms) ms run, one thread [s]" \
 	  --y-label 'RSS of the group velocity, $(subst $(sr_comma),-,$(SR_BAND_KHZ)) kHz [m^2/s^2]' \
 	  --title 'Steel rod: speed against error (DEM chains, mw-fem axisymmetric; this machine)' --out $@ > /dev/null
 
 SR_SUMMARY_PARTS := $(foreach t,table1 table2 velocity speed,$(SR_OUT)/$t.md) $(SR_OUT)/findings.md
 # The rod's length is the packings' (the experiment's, or the quick tree's override).
 $(SR_OUT)/summary.md: $(SR_SUMMARY_PARTS) $(SR_OUT)/pcc.csv $(SR_OUT)/figure9.png $(SR_OUT)/speed-error.png \
-    $(SR_OUT)/packing-1.03R.h5 pipeline/steel-rod/summarize.sh
-	pipeline/steel-rod/summarize.sh $(SR_OUT) $(SR_FEM_MESH) $(words $(SR_FREQS)) $(SR_DURATION_MS) $(SR_ALPHA_PER_S) \
+    $(SR_OUT)/packing-1.03R.h5 $(SR_FEM_FIRST) pipeline/steel-rod/summarize.sh
+	pipeline/steel-rod/summarize.sh $(SR_OUT) $(SR_FEM_MESH) $(words $(SR_FREQS)) $(sr_record_ms) $(SR_ALPHA_PER_S) \
 	  $$(jq .length_mm $(SR_OUT)/packing-1.03R.json) $(subst $(sr_comma),-,$(SR_BAND_KHZ)) > $@
 
 .PHONY: steel-rod-summary

@@ -8,6 +8,7 @@
 
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/error.hpp"
+#include "mesowave/prov/run_record.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -56,6 +57,49 @@ TEST(Tool, FromFillsOptionsAndAnEntryNoOptionTakesIsAnError) {
   EXPECT_FALSE(fs::exists(dir / "c.txt"));
   write_file(dir / "declared.json", R"({"t_p_us": 35, "v_p_m_s": 4285.7, "foreign_keys": ["v_p_m_s"]})");
   EXPECT_EQ(run_tool_body({"--from", (dir / "declared.json").string()}, dir / "d.txt", &seen), 0);
+}
+
+// Run::origin agrees with the value the option got: the command line beats the files, the last
+// --from file named wins, and the record names the file, the entry and the file's SHA-256.
+TEST(Tool, OriginSaysWhichFileOrTheCommandLineGaveAnOption) {
+  TempDir dir;
+  const std::string paper = (dir / "paper.toml").string(), lab = (dir / "lab.json").string();
+  write_file(paper, "[t_p]\nvalue = 35.0\nunit = \"us\"\nsource = \"paper\"\ncite = \"Section 3.2\"\n");
+  write_file(lab, R"({"t_p_us": 34.5})");
+  const auto origin_of = [&](std::vector<std::string> args, double* seen) {
+    app::Tool tool("mw-probe", "A probe of app::Tool.");
+    double t_p_us = 0, t_s_us = 55.1;
+    tool.cli().add_option("--t-p-us", t_p_us, "t_p [us]");
+    tool.cli().add_option("--t-s-us", t_s_us, "t_s [us]");
+    args.insert(args.begin(), "mw-probe");
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    nlohmann::ordered_json o;
+    EXPECT_EQ(tool.run(int(argv.size()), argv.data(), [&](app::Run& run) {
+      *seen = t_p_us;
+      o = {{"t_p", run.origin("--t-p-us")}, {"t_s", run.origin("--t-s-us")}};
+    }), 0);
+    return o;
+  };
+  double seen = 0;
+  auto o = origin_of({"--from", paper, "--from", lab}, &seen);
+  EXPECT_EQ(seen, 34.5);
+  EXPECT_EQ(o["t_p"]["file"], lab);
+  EXPECT_EQ(o["t_p"]["entry"], "t_p_us");
+  EXPECT_EQ(o["t_p"]["source"], "output");
+  EXPECT_EQ(o["t_p"]["sha256"], prov::describe_file(lab).sha256);
+  EXPECT_FALSE(o["t_p"].contains("cite"));  // a tool's JSON has none but its own name
+  EXPECT_EQ(o["t_s"]["given"], "default");
+  o = origin_of({"--from", lab, "--from", paper}, &seen);
+  EXPECT_EQ(seen, 35.0);
+  EXPECT_EQ(o["t_p"]["file"], paper);
+  EXPECT_EQ(o["t_p"]["entry"], "t_p");
+  EXPECT_EQ(o["t_p"]["cite"], "Section 3.2");
+  o = origin_of({"--from", paper, "--t-p-us=36", "--t-s-us", "55.2"}, &seen);
+  EXPECT_EQ(seen, 36.0);
+  EXPECT_EQ(o["t_p"]["given"], "command line");
+  EXPECT_FALSE(o["t_p"].contains("file"));
+  EXPECT_EQ(o["t_s"]["given"], "command line");
 }
 
 TEST(Tool, DeclareProductsMakesEveryOtherEntryForeign) {

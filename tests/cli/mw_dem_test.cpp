@@ -29,22 +29,67 @@ dem::Packing rod(std::size_t n, double r, double d) {
   return p;
 }
 
-// The shipped rod scene, pointed at a packing written here.
-std::string rod_scene(const std::filesystem::path& packing) {
-  std::string text = test::read_file(std::filesystem::path(MESOWAVE_SOURCE_DIR) / "pipeline/steel-rod/scenes/rod-wave.toml");
-  const std::string key = "file = \"results/steel-rod/packing-1.03R.h5\"";
+void replace_once(std::string& text, const std::string& key, const std::string& by) {
   const auto at = text.find(key);
-  EXPECT_NE(at, std::string::npos);
-  text.replace(at, key.size(), "file = \"" + packing.string() + "\"");
+  ASSERT_NE(at, std::string::npos) << key;
+  text.replace(at, key.size(), by);
+}
+
+// A chain scene of the tests' own: the rod paper's 1.03 R chain (Table 1), a force burst on the
+// first sphere along the line, the acceleration of the last, 1.5 ms (the shipped rod scene's
+// values; that one takes its transducers from lab-data/steel-rod/experiment.toml, which needs a
+// line along z, and records the experiment as a third input).
+std::string rod_scene(const std::filesystem::path& packing) {
+  std::string text = R"toml([scene]
+name = "rod-wave"
+[packing]
+file = "PACKING"
+[material]
+E_dem_GPa = 660.0
+nu_dem = 0.3
+damping = 0.0
+bond_factor = 1.0
+[time]
+dt_ns = 50
+duration_ms = 1.5
+[[actuator]]
+name = "A"
+kind = "force"
+sphere = "first"
+direction = "line"
+amplitude_N = 1.0
+frequency_kHz = 100
+cycles = 5
+[[sensor]]
+name = "S"
+quantity = "acceleration"
+component = "line"
+sphere = "last"
+)toml";
+  replace_once(text, "PACKING", packing.string());
+  return text;
+}
+
+// The shipped rod scene, its packing and its experiment file given as absolute paths.
+std::string shipped_rod_scene(const std::filesystem::path& packing) {
+  const std::filesystem::path source = MESOWAVE_SOURCE_DIR;
+  std::string text = test::read_file(source / "pipeline/steel-rod/scenes/rod-wave.toml");
+  replace_once(text, "file = \"results/steel-rod/packing-1.03R.h5\"", "file = \"" + packing.string() + "\"");
+  replace_once(text, "file = \"../../../lab-data/steel-rod/experiment.toml\"",
+          "file = \"" + (source / "lab-data/steel-rod/experiment.toml").string() + "\"");
   return text;
 }
 
 }  // namespace
 
+// On the pipeline's packing: mw-pack line of the experiment's rod at 1.03 R.
 TEST(MwDem, InfoOnTheShippedRodSceneChoosesTheChain) {
   test::TempDir dir;
-  dem::write_packing_file(dir / "rod.h5", rod(191, 5.1e-3, 1.03 * 5.1e-3));
-  test::write_file(dir / "rod.toml", rod_scene(dir / "rod.h5"));
+  const auto pack = run_tool("mw-pack", {"line", "--experiment",
+                                         std::string(MESOWAVE_SOURCE_DIR) + "/lab-data/steel-rod/experiment.toml",
+                                         "--spacing-R", "1.03", "--packing", (dir / "rod.h5").string()});
+  ASSERT_EQ(pack.exit_status, 0) << pack.err;
+  test::write_file(dir / "rod.toml", shipped_rod_scene(dir / "rod.h5"));
   const auto r = run_tool("mw-dem", {"info", (dir / "rod.toml").string()});
   ASSERT_EQ(r.exit_status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "mesowave/io/csv.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave::test;
@@ -155,6 +156,61 @@ TEST(MwEfg, WaveWritesHistoriesSummaryAndSnapshots) {
   EXPECT_EQ(json::parse(v.out)[0]["datasets"].size(), 2 * std::size_t((steps - 1) / 20 + 2));  // every 20th and the last
 }
 
+// The stiffening laws by name: the characteristics' block in the summary (its x_b against the
+// quadratic law's closed form at the front, c_0 M t_r / (beta p_max)), the profiles along the
+// centre line; the linear run's history carries the closed form -p(t - x / c_p) beside each sensor.
+TEST(MwEfg, WaveLawsCharacteristicsProfilesAndTheContinuum) {
+  TempDir dir;
+  const auto r = run_tool("mw-efg", {"wave", "--law", "quadratic", "--beta", "40", "--length-mm", "100", "--width-mm", "8",
+                                     "--spacing-mm", "2", "--E-GPa", "20", "--peak-MPa", "500", "--rise-us", "20",
+                                     "--fall-us", "20", "--duration-us", "30", "--stiffness-check", "1", "--sensor-mm", "10", "--sensor-mm", "30",
+                                     "--profiles", (dir / "p.csv").string(), "--profile-us", "10", "--profile-us", "25",
+                                     "--threads", "1", "--out", (dir / "q.json").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json q = json::parse(read_file(dir / "q.json"));
+  EXPECT_EQ(q["law"], "quadratic");
+  const double M = 20e9 * 0.8 / (1.2 * 0.6), c0 = std::sqrt(M / 2400);
+  EXPECT_NEAR(q["characteristics"]["formation_distance_mm"].get<double>(), c0 * M * 20e-6 / (40 * 500e6) * 1e3, 1e-6);
+  EXPECT_EQ(q["characteristics"]["fronts"].size(), 2u);
+  EXPECT_EQ(q["profiles"].size(), 2u);
+  EXPECT_NEAR(q["profiles"][1]["snapshot_us"].get<double>(), 25, q["dt_us"].get<double>());  // every other step kept
+  const std::string p = read_file(dir / "p.csv");
+  EXPECT_EQ(p.rfind("x_mm,p_MPa_at_10us,p_MPa_at_25us\n0,", 0), 0u) << p.substr(0, 80);
+  EXPECT_EQ(std::count(p.begin(), p.end(), '\n'), 1 + 51);  // the centre row's 51 nodes
+
+  const auto l = run_tool("mw-efg", {"wave", "--length-mm", "200", "--spacing-mm", "10", "--sensor-mm", "50", "--rise-us",
+                                     "10", "--fall-us", "10", "--history", (dir / "h.csv").string(), "--threads", "1"});
+  ASSERT_EQ(l.exit_status, 0) << l.err;
+  const auto h = mesowave::io::read_csv(dir / "h.csv");
+  const auto t = h.column("t_us"), exact = h.column("x0_sigma_xx_continuum_MPa");
+  const double c_p = std::sqrt(30e9 * 0.8 / (1.2 * 0.6) / 2400);
+  for (std::size_t i = 0; i < h.rows.size(); i += 7) {
+    const double tau = h.number(i, t) * 1e-6 - 0.05 / c_p;  // the triangle 100 MPa, 10 us up, 10 us down
+    const double pulse = tau <= 0 ? 0 : tau < 10e-6 ? 100 * tau / 10e-6 : tau < 20e-6 ? 100 * (20e-6 - tau) / 10e-6 : 0;
+    EXPECT_NEAR(h.number(i, exact), -pulse, 1e-6) << h.number(i, t);  // before the reflection returns (0.35 m / c_p)
+  }
+}
+
+// --fem-reference: mw-fem's bar beside the EFG strip under the same 20 kHz burst (the set-up of
+// tests/efg/wave_strip_test.cpp's HannBurstAgreesWithTheFemOnTheSameBar, made here by the tool):
+// the lumped-mass Q1 bar lags by 1 - sin(kh/2)/(kh/2) = 1.2e-3 at k h = 0.17, the EFG by its
+// stencil's 0.5-0.8 %, so the FEM is the closer to the closed form and the difference between
+// them is the EFG's error.
+TEST(MwEfg, WaveFemReferenceOnTheSameBar) {
+  TempDir dir;
+  const auto r = run_tool("mw-efg", {"wave", "--pulse", "hann", "--frequency-kHz", "20", "--cycles", "3", "--peak-MPa", "1",
+                                     "--length-mm", "800", "--spacing-mm", "5", "--sensor-mm", "300", "--duration-us", "250",
+                                     "--fem-reference", "--history", (dir / "h.csv").string(), "--threads", "1", "--out",
+                                     (dir / "w.json").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json f = json::parse(read_file(dir / "w.json"))["fem_reference"]["sensors"]["x0"];
+  const double e_efg = f["efg_rms_error"], e_fem = f["fem_rms_error"], between = f["efg_fem_rms_difference"];
+  EXPECT_LT(e_fem, 0.5 * e_efg);
+  EXPECT_NEAR(between / e_efg, 1.0, 0.3);
+  const std::string h = read_file(dir / "h.csv");
+  EXPECT_NE(h.substr(0, h.find('\n')).find("x0_v_x_fem_m_s,x0_v_x_continuum_m_s"), std::string::npos);
+}
+
 TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
   struct Case {
     std::vector<std::string> args;
@@ -185,6 +241,13 @@ TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
       {{"wave", "--width-mm", "4"}, "at least 2 node spacings"},
       {{"wave", "--sensor-mm", "900"}, "sensor x"},
       {{"wave", "--density-kg-m3", "0"}, "density"},
+      {{"wave", "--law", "cubic"}, "--law cubic"},
+      {{"wave", "--law", "quadratic", "--beta", "0"}, "--beta (0)"},
+      {{"wave", "--unloading", "2"}, "--unloading (2)"},
+      {{"wave", "--profiles", "p.csv"}, "--profile-us"},
+      {{"wave", "--fem-reference"}, "--pulse hann"},
+      {{"wave", "--pulse", "hann", "--fem-reference", "--sensor-mm", "102"}, "must lie on a node of the FEM bar"},
+      {{"wave", "--pulse", "hann", "--frequency-kHz", "0"}, "--frequency-kHz"},
   };
   for (const auto& c : cases) {
     TempDir dir;

@@ -127,6 +127,20 @@ TEST(TableGather, AmbiguousOrMissingValuesAreErrorsNamingTheFile) {
             std::string::npos);
 }
 
+// A JSON null (a value its run could not measure, e.g. a shock speed before the shock reached two
+// sensors) is an empty cell, as a missing CSV cell is: never a zero, never an error.
+TEST(TableGather, AJsonNullIsAnEmptyCell) {
+  TempDir dir;
+  write_file(dir / "a.json", R"({"c": {"speed": null, "x": 2}})");
+  GatherSpec spec;
+  spec.key_name = "run";
+  spec.rows.push_back(parse_gather_row("a=" + (dir / "a.json").string()));
+  spec.columns = {parse_column_source("speed=c.speed"), parse_column_source("x=c.x")};
+  const auto t = gather_rows(spec);
+  ASSERT_EQ(t.rows.size(), 1u);
+  EXPECT_EQ(t.rows[0], (std::vector<std::string>{"a", "", "2"}));
+}
+
 TEST(TableGather, JoinMatchesKeysAsNumbersAndLeavesGapsEmpty) {
   CsvTable ours;
   ours.header = {"f_kHz", "pcc"};

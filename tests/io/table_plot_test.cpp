@@ -7,9 +7,13 @@
 #include <cmath>
 
 #include "mesowave/core/error.hpp"
+#include "support/input_error.hpp"
+#include "support/run_tool.hpp"
 
 using namespace mesowave;
 using namespace mesowave::io;
+using mesowave::test::TempDir;
+using mesowave::test::write_file;
 
 namespace {
 
@@ -84,6 +88,29 @@ TEST(TablePlot, BadOptionsAndColumnsAreInputErrors) {
   EXPECT_THROW(table_plot(table, o), InputError);
   o.y_columns = {"pcc"};
   o.x_column = "run";  // not numeric
+  EXPECT_THROW(table_plot(table, o), InputError);
+}
+
+// An overlay: another table's column against that table's own x, beside the main series.
+TEST(TablePlot, AnOverlayDrawsAnotherTablesColumnAgainstItsOwnX) {
+  TempDir dir;
+  write_file(dir / "b.csv", "f_kHz,pcc\n120,0.5\n180,\n");
+  TablePlotOptions o;
+  o.x_column = "f_kHz";
+  o.y_columns = {"pcc=a"};
+  o.overlays = {(dir / "b.csv").string() + ":pcc=b"};
+  EXPECT_EQ(table_plot_overlay_files(o), (std::vector<std::string>{(dir / "b.csv").string()}));
+  const auto spec = table_plot(table, o);
+  ASSERT_EQ(spec.series.size(), 2u);
+  EXPECT_EQ(spec.series[1].label, "b");
+  EXPECT_EQ(spec.series[1].x, (std::vector<double>{120, 180}));
+  EXPECT_EQ(spec.series[1].y[0], 0.5);
+  EXPECT_TRUE(std::isnan(spec.series[1].y[1]));  // an empty cell is a gap there too
+  o.overlays = {(dir / "b.csv").string() + ":pcc"};
+  EXPECT_EQ(table_plot(table, o).series[1].label, "pcc");  // the legend defaults to the column
+  o.overlays = {(dir / "b.csv").string()};
+  EXPECT_NE(test::input_error_of([&] { table_plot(table, o); }).find("FILE:COLUMN"), std::string::npos);
+  o.overlays = {(dir / "b.csv").string() + ":missing"};
   EXPECT_THROW(table_plot(table, o), InputError);
 }
 

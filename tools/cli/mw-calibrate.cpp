@@ -26,21 +26,25 @@ int main(int argc, char** argv) {
       "Calibrate the DEM micro-parameters against the lab (concrete paper, flowchart step 6; rod paper, Table 1) "
       "with virtual tests, each one `mw-dem run` of a test scene, recorded in the provenance database.\n"
       "cube: E_dem, nu_dem and T (C = T by default) so that the virtual compression test gives E_st, nu_st and "
-      "sigma_max within tolerance. Elastic trials (unbreakable bonds, to sigma_max / 3) fix E_dem (E_glob is "
-      "proportional to it) and nu_dem (secant on nu_glob); failure trials (the full law) fix T (secant on the peak "
+      "sigma_max within tolerance, as options or --from the static tests (static-test.toml) or mw-compress's JSON of the "
+      "lab's own records (E_st_measured_GPa, sigma_max_MPa; nu_st then from a second file: the records have no lateral "
+      "strain); the result records each target's origin (file, entry, SHA-256; --targets-csv). Elastic trials "
+      "(unbreakable bonds, to sigma_max / 3) fix E_dem (E_glob is proportional to it) and nu_dem (secant on nu_glob); failure trials (the full law) fix T (secant on the peak "
       "stress) and correct E_dem and nu_dem from the same runs (their modulus: the secant from 10 % to 1/3 of the peak).\n"
       "rod: the contact modulus E_dem (K_n = E_dem R) so that the chain's tension test gives the rod's E (E_DEM = K_n d / "
       "(pi R^2), proportional to E_dem: one rescaled trial and a check); rho_p is the packing's (mw-pack line).\n\n"
       "  mw-calibrate cube --scene pipeline/concrete-cube/scenes/cube-compression.toml --from "
       "lab-data/concrete-cube/static-test.toml --start-E-dem-GPa 10 --start-nu-dem 0.1 --start-T-MPa 10 --work-dir "
       "calib --out calibration.json --trials trials.csv --plot-trajectory trajectory.png --plot-curves curves.png\n"
+      "  mw-calibrate cube --scene pipeline/concrete-cube/scenes/cube-compression.toml --from lab-data/concrete-cube/"
+      "static-test.toml --from raw-compress.json --work-dir calib --out calibration.json --targets-csv targets.csv\n"
       "  mw-dem run pipeline/concrete-cube/scenes/cube-wave.toml --from calibration.json --signals waves.h5\n"
       "  mw-calibrate rod --scene pipeline/steel-rod/scenes/rod-tension.toml --packing packing-1.05R.h5 --experiment "
       "lab-data/steel-rod/experiment.toml --work-dir calib-rod --out rod-1.05R.json");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
 
-  fs::path scene_path, packing_path, work_dir, out, trials_csv, plot_trajectory, plot_curves, mw_dem_path, experiment_path;
+  fs::path scene_path, packing_path, work_dir, out, trials_csv, targets_csv, plot_trajectory, plot_curves, mw_dem_path, experiment_path;
   int threads = 0, max_trials = 12;
   auto common = [&](CLI::App* sub) {
     sub->add_option("--scene", scene_path, "The virtual test (TOML with a [test] table)")->required();
@@ -56,7 +60,7 @@ int main(int argc, char** argv) {
   std::optional<double> start_E, start_nu, start_T, friction_deg, E_rod_GPa;
   auto* cube = cli.add_subcommand("cube", "Compression test of a packed specimen: E_dem, nu_dem, T = C");
   common(cube);
-  cube->add_option("--E-st-measured-GPa", E_st_GPa, "Target: the static modulus E_st [GPa] (static-test.toml)")->required();
+  cube->add_option("--E-st-measured-GPa", E_st_GPa, "Target: the static modulus E_st [GPa] (static-test.toml, mw-compress)")->required();
   cube->add_option("--nu-st", nu_st, "Target: the static Poisson ratio (the paper takes nu_d)")->required();
   cube->add_option("--sigma-max-MPa", sigma_MPa, "Target: the compressive strength [MPa]")->required();
   cube->add_option("--start-E-dem-GPa", start_E, "First E_dem [GPa] (default: the scene's)");
@@ -68,6 +72,7 @@ int main(int argc, char** argv) {
   cube->add_option("--tolerance-nu", tol_nu, "Tolerance on nu_glob")->capture_default_str();
   cube->add_option("--tolerance-sigma-pct", tol_sigma_pct, "Tolerance on the peak stress [%]")->capture_default_str();
   cube->add_option("--trials", trials_csv, "The trial log (CSV)");
+  cube->add_option("--targets-csv", targets_csv, "CSV: each target, its tolerance, the calibrated value, where it was read from");
   cube->add_option("--plot-trajectory", plot_trajectory, "PNG: the trials against the targets");
   cube->add_option("--plot-curves", plot_curves, "PNG: stress-strain curves of the calibrated test, with the moduli");
 
@@ -99,12 +104,7 @@ int main(int argc, char** argv) {
       dem::RodCalibration calibration(dem::rod_target_E_GPa(E_rod_GPa, experiment_path), tol_rod_pct / 100,
                                       require_positive("--start-E-dem-GPa", start_E.value_or(m.E_dem_Pa / 1e9), "GPa"), max_trials);
       const dem::Packing chain = dem::read_packing_file(scene.packing_file);
-      while (auto t = calibration.next()) {
-        t = dem::with_results(*t, run_trial(t->number, {"--E-dem-GPa", format_exact(t->E_dem_GPa)}));
-        std::cerr << "mw-calibrate rod: trial " << t->number << ": E_dem " << format_number(t->E_dem_GPa) << " GPa -> E_DEM "
-                  << format_number(t->E_DEM_GPa) << " GPa\n";
-        calibration.record(*t);
-      }
+      dem::run_trials(calibration, run_trial, std::cerr);
       run.metric("E_DEM", calibration.result().E_DEM_GPa, "GPa");
       run.metric("E_dem", calibration.result().E_dem_GPa, "GPa");
       run.emit_json(dem::rod_calibration_summary(calibration, chain, m), out);
@@ -122,11 +122,7 @@ int main(int argc, char** argv) {
     const dem::DemParameters start{start_E ? *start_E * units::GPa : m.E_dem_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
     const double mu_deg = friction_deg.value_or(m.friction_angle_rad * 180 / 3.141592653589793);
     dem::CompressionCalibration calibration(targets, tolerances, start, max_trials);
-    while (auto trial = calibration.next()) {
-      const auto done = dem::with_results(*trial, run_trial(trial->number, dem::compression_trial_options(*trial, targets, mu_deg)));
-      std::cerr << "mw-calibrate: " << dem::describe(done) << "\n";
-      calibration.record(done);
-    }
+    dem::run_trials(calibration, run_trial, mu_deg, std::cerr);
     const dem::CalibrationTrial& best = calibration.result();
     run.metric("E_glob", best.E_glob_Pa / 1e9, "GPa");
     run.metric("nu_glob", best.nu_glob, "");
@@ -141,7 +137,9 @@ int main(int argc, char** argv) {
       io::run_gnuplot(dem::stress_strain_script(dem::read_trial_curve(best.summary_file), targets.E_Pa, targets.nu,
                                                 run.output(plot_curves), "Virtual compression test, calibrated parameters"));
     }
-    auto summary = dem::calibration_summary(calibration, mu_deg);
+    auto summary = dem::calibration_summary(
+        calibration, mu_deg, {run.origin("--E-st-measured-GPa"), run.origin("--nu-st"), run.origin("--sigma-max-MPa")});
+    if (!targets_csv.empty()) run.write_text(targets_csv, dem::calibration_targets_csv(summary));
     // The five values the wave runs take (mw-dem --from calibration.json); the rest is the record.
     app::declare_products(summary, {"E_dem_GPa", "nu_dem", "T_MPa", "C_MPa", "friction_angle_deg"});
     run.emit_json(summary, out);

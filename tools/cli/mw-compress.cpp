@@ -124,7 +124,9 @@ int main(int argc, char** argv) {
       run.metric("sigma_max", a.failure->sigma_max_Pa / units::MPa, "MPa");
     }
 
-    const auto summary = lab::compression_summary(a);
+    auto summary = lab::compression_summary(a);
+    // What the next step takes (mw-calibrate cube --from, docs/calibration.md); the rest is the record.
+    app::declare_products(summary, lab::compression_products(a));
     for (const auto& note : summary["notes"]) std::cerr << "note: " << note.get<std::string>() << "\n";
     for (const auto& warning : summary["warnings"]) std::cerr << "warning: " << warning.get<std::string>() << "\n";
     if (!cycles_file.empty() && a.cyclic) run.write_text(cycles_file, lab::cycles_csv(a));

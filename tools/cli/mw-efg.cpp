@@ -34,14 +34,18 @@ int main(int argc, char** argv) {
       "ParaView files of the crack, work of fracture against G_f x ligament, the elastic stiffness against the Q4 "
       "FEM and beam theory, the cost.\n"
       "  wave        explicit dynamics (central differences, lumped row-sum mass, the stable step by Lanczos): a "
-      "plane-strain strip with rollers under a triangular or Friedlander pressure on x = 0; sensor histories, the "
-      "peak speed against c_p = sqrt(M/rho), the stencil's dispersion, the energy balance, ParaView snapshots.\n\n"
+      "plane-strain strip with rollers under a triangular, Friedlander or Hann-burst pressure on x = 0; sensor "
+      "histories, the peak speed against c_p = sqrt(M/rho), the stencil's dispersion, the energy balance, ParaView "
+      "snapshots; --fem-reference: mw-fem on the same bar; with --law quadratic | hugoniot (the Y-function, Section "
+      "4.2) the front against the method of characteristics.\n\n"
       "  mw-efg cantilever --spacing-m 2 --refinements 2 --method both --table cantilever.csv --out cantilever.json\n"
       "  mw-efg cantilever --spacing-m 1 --basis quadratic --weight cubic-spline --support-scale 3.5 --gauss 4\n"
       "  mw-efg cantilever --spacing-m 1 --snapshots vtk   (ParaView: open vtk/cantilever.pvd)\n"
       "  mw-efg bending --from lab-data/shock-concrete/three-point-bending.toml --law bilinear --spacing-mm 5 "
       "--curve ld.csv --plot ld.png --crack-path crack.csv --snapshots vtk --out bending.json\n"
-      "  mw-efg wave --spacing-mm 2.5 --pulse friedlander --peak-MPa 50 --positive-us 20 --history h.csv --snapshots vtk");
+      "  mw-efg wave --spacing-mm 2.5 --pulse friedlander --peak-MPa 50 --positive-us 20 --history h.csv --snapshots vtk\n"
+      "  mw-efg wave --law hugoniot --unloading 0 --length-mm 300 --width-mm 12 --spacing-mm 1 --peak-MPa 2000 "
+      "--rise-us 20 --fall-us 20 --profiles p.csv --profile-us 20 --profile-us 60 --out shock.json");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
   fs::path out, table, snapshots, curve, plot, crack_path;
@@ -73,11 +77,16 @@ int main(int argc, char** argv) {
     const ThreadChoice thread_choice = use_threads(wave->parsed() ? wave_cl.threads : cant->parsed() ? cant_cl.threads : threads);
     const nlohmann::ordered_json thread_json = {{"count", thread_choice.count}, {"reason", thread_choice.reason}};
     if (wave->parsed()) {
-      const efg::WaveStripOptions wo = wave_cl.resolve();
-      const auto result = efg::run_wave_strip(wo);
-      const auto o = efg::wave_strip_outputs(wo, result);
+      const auto w = efg::run_wave_command(wave_cl);
+      const auto& o = w.outputs;
+      const auto& result = w.result;
       for (const auto& [name, value, unit] : o.metrics) run.metric(name, value, unit);
       if (!wave_cl.history.empty()) run.write_text(wave_cl.history, io::to_csv(o.history_header, o.history_rows));
+      if (!wave_cl.profiles.empty()) run.write_text(wave_cl.profiles, io::to_csv(o.profile_header, o.profile_rows));
+      if (!wave_cl.fronts.empty()) {
+        if (o.front_rows.empty()) throw InputError("--fronts needs a stiffening --law (quadratic | hugoniot) and the triangular pulse");
+        run.write_text(wave_cl.fronts, io::to_csv(o.front_header, o.front_rows));
+      }
       if (!wave_cl.snapshots.empty()) {
         efg::VtkSeries series(wave_cl.snapshots, "wave", [&](const fs::path& p) { return run.output(p); });
         for (const auto& [t_s, nodes] : result.run.snapshots) series.add(t_s * 1e6, nodes, {});

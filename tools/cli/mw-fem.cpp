@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
     sub->add_option("--force-N", force_N, "Peak force amplitude [N] (1)");
     sub->add_option("--alpha-damping", alpha, "Rayleigh mass-proportional damping alpha [1/s] (rod paper: 2000)")
         ->capture_default_str();
-    sub->add_option("--duration-ms", duration_ms, "Simulated time [ms] (1.5)");
+    sub->add_option("--duration-ms", duration_ms, "Simulated time [ms] (1.5, or --experiment's record)");
     sub->add_option("--sample-dt-us", sample_dt_us, "Sampling interval of the signals [us] (0.1)");
     sub->add_option("--dt-us", dt_us, "Time step [us] (default: the largest that divides the sampling interval "
                                       "and stays below the stable step)");

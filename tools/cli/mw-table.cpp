@@ -1,9 +1,8 @@
-// mw-table - summary tables and their plots from other runs' outputs, as
-// recorded runs: the concrete paper's Table 3 gathered from one mw-pcc table per
-// frequency, a speed-against-error table from the DEM run summaries, and a
-// gnuplot figure of any table, a table as Markdown, and the rod paper's findings
-// checked on the rod's tables - so every number and figure of the report has a
-// provenance run whose inputs are the files it came from.
+// mw-table - summary tables and their plots from other runs' outputs, as recorded runs: the
+// concrete paper's Table 3 gathered from one mw-pcc table per frequency, a speed-against-error
+// table from the DEM run summaries, a gnuplot figure of any tables, a table as Markdown, and the
+// rod paper's findings checked on the rod's tables - so every number and figure of the report
+// has a provenance run whose inputs are the files it came from.
 //
 //   mw-table gather --key-name f_kHz --row 100=pcc-100kHz.csv --row 150=pcc-150kHz.csv
 //       --where sensor=mean --column pcc_mean=pcc_signal --csv table3.csv
@@ -99,6 +98,7 @@ int main(int argc, char** argv) {
                  "exactly 1 has no place on a log axis and is left out)");
   plot->add_option("--key", o.key, "Where the legend goes (gnuplot: 'outside right top', 'below', 'inside bottom left')")
       ->capture_default_str();
+  plot->add_option("--overlay", o.overlays, "FILE:COLUMN[=LEGEND]: a line from another table, against its --x column");
   plot->add_option("--out", plot_out, "Figure to write (.png or .svg)")->type_name("FILE")->required();
 
   return tool.run(argc, argv, [&](app::Run& run) {
@@ -139,11 +139,11 @@ int main(int argc, char** argv) {
     io::require_plot_extension(plot_out);
     if (!y_range.empty()) o.y_range = std::pair{y_range[0], y_range[1]};
     io::require_table_plot_options(o);
+    for (const auto& f : io::table_plot_overlay_files(o)) run.input(f);
     run.input(table_path);
     const auto table = io::read_csv(table_path);
     const auto spec = io::table_plot(table, o);
     io::render_plot(spec, plot_out, run.output(plot_out));
-    run.out() << "wrote " << plot_out.string() << ": " << spec.series.size() << " series, " << table.rows.size()
-              << " rows\n";
+    run.out() << "wrote " << plot_out.string() << ": " << spec.series.size() << " series, " << table.rows.size() << " rows\n";
   });
 }

@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
                  "half-cycle. The S wave is "
                  "searched from 1.3 t_p on (v_s < v_p / sqrt(2) for nu > 0), past the P energy S transducers also "
                  "receive, up to 3.5 t_p (nu < 0.45), located by its envelope peak. Without a density only velocities "
-                 "and nu_d are given.\n\n"
+                 "and nu_d are given. Each pick states its picker's remaining bias (t_p_pick_bias_us: the median of pick - true "
+                 "onset on synthetic records at the record's SNR, docs/upv-pickers.md; not subtracted).\n\n"
                  "  mw-upv --path-mm 150 --t-p-us 35 --t-s-us 55.1 --density-kg-m3 2129.56\n"
                  "  mw-upv --from lab-data/concrete-cube/upv.toml --from results/concrete-cube/density.json\n"
                  "  mw-upv --path-mm 150 --p-wave raw/upv-p.csv --s-wave raw/upv-s.csv --density-kg-m3 2129.56 "
@@ -102,8 +103,11 @@ int main(int argc, char** argv) {
       io::run_gnuplot(lab::upv_figure_script(report.traces(), run.output(plot), title));
     }
     // What the next steps read (mw-estatic, mw-fem); the rest is there for the reader.
-    app::declare_products(j, j.contains("E_d_GPa") ? std::vector<std::string>{"E_d_GPa", "density_kg_m3"}
-                                                   : std::vector<std::string>{"density_kg_m3"});
+    // Without a density (velocities only) there is nothing for them.
+    std::vector<std::string> products;
+    for (const char* k : {"E_d_GPa", "density_kg_m3"})
+      if (j.contains(k)) products.push_back(k);
+    app::declare_products(j, products);
     run.emit_json(j, out);
   });
 }

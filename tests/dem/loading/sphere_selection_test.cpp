@@ -144,3 +144,51 @@ TEST(SphereSelection, CurvedFaceTakesTheSpheresUnderTheArc) {
   patch.size_m[0] = 6e-3;
   EXPECT_EQ(ids(s, spheres_under_patch(s, box, patch, "C")), (std::vector<std::int64_t>{9}));
 }
+
+// A line of spheres along z at a spacing below one radius (d = 0.95 R, the rod paper's first
+// chain, Table 1): on the end faces z- and z+ a patch takes the end sphere alone once it knows
+// the line. By depth alone it takes the next sphere too, whose surface lies d = 0.95 R from the
+// face, inside the default depth (the smallest radius, R). Hand-placed: the answer is the first
+// and the last sphere by construction.
+TEST(SphereSelection, APatchOnAnEndOfALineTakesTheEndSphere) {
+  const double r = 1e-3, d = 0.95 * r;
+  Packing p;
+  for (std::int64_t i = 0; i < 7; ++i) {
+    p.centres_m.push_back({r, r, r + double(i) * d});
+    p.radii_m.push_back(r);
+    p.ids.push_back(i);
+  }
+  const SphereSet s = make_sphere_set(p, 2000);
+  const Box box = bounding_box(s);
+  const Vec3 axis{0, 0, 1};
+  Patch lower;
+  lower.face = Face::parse("z-");
+  lower.relative = true;
+  lower.centre_rel = {0.5, 0.5, 0.0};
+  lower.size_m[0] = lower.size_m[1] = 0.2e-3;
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, lower, "A", axis)), (std::vector<std::int64_t>{0}));
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, lower, "A")), (std::vector<std::int64_t>{0, 1}));  // depth alone
+  Patch upper = lower;
+  upper.face = Face::parse("z+");
+  upper.centre_rel.z = 1.0;
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, upper, "S", axis)), (std::vector<std::int64_t>{6}));
+  // The line's axis may point either way: the face says which end.
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, upper, "S", Vec3{0, 0, -1})), (std::vector<std::int64_t>{6}));
+  // An explicit depth keeps the depth rule: 2 R reaches the spheres whose surface is within 2 R
+  // of the face, centres at r + i d <= 3 r: i = 0, 1, 2.
+  Patch deep = lower;
+  deep.depth_m = 2 * r;
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, deep, "A", axis)), (std::vector<std::int64_t>{0, 1, 2}));
+  // Off the axis the end sphere is not under the patch: refused, as any empty patch.
+  Patch off = lower;
+  off.centre_rel = {0.9, 0.5, 0.0};  // 0.8 mm from the axis, the patch 0.1 mm across either side
+  EXPECT_THROW(spheres_under_patch(s, box, off, "A", axis), mesowave::InputError);
+  // A side face runs along the line: every sphere touches it, the rule does not apply.
+  Patch side;
+  side.face = Face::parse("x-");
+  side.relative = true;
+  side.centre_rel = {0.0, 0.5, 0.5};
+  side.size_m[0] = 0.2e-3;
+  side.size_m[1] = 3.5 * d;  // centres within 1.75 d of the middle sphere (i = 3): i = 2, 3, 4
+  EXPECT_EQ(ids(s, spheres_under_patch(s, box, side, "B", axis)), (std::vector<std::int64_t>{2, 3, 4}));
+}

@@ -1,15 +1,19 @@
 // The shipped scenes parse, and the cube scene's transducers are the ones in
 // lab-data/concrete-cube/experiment.toml (as fractions of the cube), with D/F and E/G mirror pairs on
-// opposite faces (the paper: G = E and F = D for an ideal cube).
+// opposite faces (the paper: G = E and F = D for an ideal cube); the rod scenes, which take
+// lab-data/steel-rod/experiment.toml, run as they did when they named their end spheres.
 #include <gtest/gtest.h>
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
 
 #include "mesowave/core/units.hpp"
+#include "mesowave/dem/engine/simulation.hpp"
+#include "mesowave/dem/packing/packing_request.hpp"
 #include "mesowave/dem/scene/scene.hpp"
 #include "mesowave/experiment/experiment.hpp"
 
@@ -98,7 +102,100 @@ TEST(SceneFiles, RodSceneParses) {
   const Scene s = read_scene_file(kSource / "pipeline/steel-rod/scenes/rod-wave.toml");
   EXPECT_DOUBLE_EQ(s.material.E_dem_Pa, 660e9);
   EXPECT_DOUBLE_EQ(s.material.bond_factor, 1.0);
-  EXPECT_EQ(s.actuators.at(0).direction, "line");
-  EXPECT_EQ(s.sensors.at(0).component, "line");
+  // The transducers, the burst and the record are lab-data/steel-rod/experiment.toml's: A pushes
+  // inward from the z- end, S reads the normal of the z+ end (rod paper Section 4.2), the
+  // five-cycle 100 kHz burst of 1 N, 1.5 ms (Sections 4.2-4.3).
+  EXPECT_EQ(s.experiment_file, (kSource / "lab-data/steel-rod/experiment.toml").lexically_normal());
+  ASSERT_EQ(s.actuators.size(), 1u);
+  ASSERT_EQ(s.sensors.size(), 1u);
+  EXPECT_EQ(s.actuators[0].name, "A");
+  EXPECT_EQ(s.actuators[0].direction, "inward");
+  EXPECT_EQ(s.actuators[0].target.patch.face.name(), "z-");
+  EXPECT_DOUBLE_EQ(s.actuators[0].amplitude, 1.0);
+  EXPECT_DOUBLE_EQ(s.actuators[0].frequency_hz, 100e3);
+  EXPECT_DOUBLE_EQ(s.actuators[0].cycles, 5.0);
+  EXPECT_EQ(s.sensors[0].name, "S");
+  EXPECT_EQ(s.sensors[0].component, "normal");
+  EXPECT_EQ(s.sensors[0].target.patch.face.name(), "z+");
+  EXPECT_DOUBLE_EQ(s.duration_s, 1.5e-3);
   EXPECT_FALSE(s.material.breakable());
+}
+
+namespace {
+
+// The transducers the rod scenes typed themselves before they took the experiment (main at
+// 90fc0b3): the force burst on the first sphere along the line, the acceleration of the last.
+const char* kEndSphereScene = R"toml(
+[packing]
+file = "unused.h5"
+[material]
+E_dem_GPa = 1.0
+[time]
+dt_ns = 50
+duration_ms = 1.5
+[[actuator]]
+name = "A"
+kind = "force"
+sphere = "first"
+direction = "line"
+amplitude_N = 1.0
+frequency_kHz = 100
+cycles = 5
+[[sensor]]
+name = "S"
+quantity = "acceleration"
+component = "line"
+sphere = "last"
+)toml";
+
+}  // namespace
+
+// Each rod scene read through the experiment drives and reads what it did when it named the
+// spheres (kEndSphereScene), on the chain mw-pack line makes of the experiment at its spacing:
+// the same spheres (the first and the last), the same direction vectors to the bit, the chain
+// model, and the same samples to the bit - the pipeline's DEM results do not move. 0.95R is the
+// chain where a face patch needs the line rule (sphere_selection.hpp): by depth alone A would
+// also take the second sphere, whose surface lies 0.95 R from the face.
+TEST(SceneFiles, RodScenesThroughTheExperimentRunAsTheirEndSphereForm) {
+  const Scene ends = parse_scene(kEndSphereScene, "end-sphere scene");
+  const std::pair<const char*, double> scenes[] = {{"rod-wave-0.95R.toml", 0.95}, {"rod-wave.toml", 1.03},
+                                                   {"rod-wave-1.05R.toml", 1.05}, {"rod-wave-1.15R.toml", 1.15},
+                                                   {"rod-wave-0.95R-EDEM.toml", 0.95}};
+  for (const auto& [file, spacing_R] : scenes) {
+    PackingRequest request;
+    request.container = "line";
+    request.experiment = kSource / "lab-data/steel-rod/experiment.toml";
+    request.spacing_R = spacing_R;
+    const Packing packing = make_packing(request).packing;
+    const Scene shipped = read_scene_file(kSource / "pipeline/steel-rod/scenes" / file);
+    Scene own = shipped;  // its material and step, the transducers and record of before
+    own.experiment_file.clear();
+    own.actuators = ends.actuators;
+    own.sensors = ends.sensors;
+    own.duration_s = ends.duration_s;
+    const RunReport a = Simulation(shipped, packing).run(), b = Simulation(own, packing).run();
+    EXPECT_EQ(a.choice.model, "chain") << file;
+    EXPECT_EQ(b.choice.model, "chain") << file;
+    EXPECT_EQ(a.steps, b.steps) << file;
+    ASSERT_EQ(a.actuator_placements.size(), 1u);
+    ASSERT_EQ(a.sensor_placements.size(), 1u);
+    const auto last = std::uint32_t(packing.size() - 1);  // mw-pack numbers the line from z = 0
+    EXPECT_EQ(a.actuator_placements[0].spheres, (std::vector<std::uint32_t>{0})) << file;
+    EXPECT_EQ(a.sensor_placements[0].spheres, (std::vector<std::uint32_t>{last})) << file;
+    EXPECT_EQ(a.actuator_placements[0].spheres, b.actuator_placements.at(0).spheres) << file;
+    EXPECT_EQ(a.sensor_placements[0].spheres, b.sensor_placements.at(0).spheres) << file;
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_EQ(a.actuator_placements[0].direction[d], b.actuator_placements[0].direction[d]) << file << d;
+      EXPECT_EQ(a.sensor_placements[0].direction[d], b.sensor_placements[0].direction[d]) << file << d;
+    }
+    EXPECT_EQ(a.actuator_placements[0].direction.z, 1.0) << file;  // inward from z- = along the line, +z
+    EXPECT_EQ(a.actuator_placements[0].amplitude, b.actuator_placements[0].amplitude) << file;
+    EXPECT_EQ(a.actuator_placements[0].frequency_hz, b.actuator_placements[0].frequency_hz) << file;
+    EXPECT_EQ(a.actuator_placements[0].cycles, b.actuator_placements[0].cycles) << file;
+    ASSERT_EQ(a.signals.size(), 1u);
+    ASSERT_EQ(b.signals.size(), 1u);
+    EXPECT_EQ(a.signals[0].component, "normal");  // the experiment's name for the same +z
+    EXPECT_EQ(a.signals[0].samples, b.signals[0].samples) << file;  // bit for bit
+    EXPECT_GT(*std::max_element(a.signals[0].samples.begin(), a.signals[0].samples.end()), 0.0) << file;  // the wave arrived
+  }
 }

@@ -212,6 +212,27 @@ void Run::metric(const std::string& name, double value, const std::string& unit)
 
 void Run::param(const std::string& name, nlohmann::ordered_json value) { extra_params_[name] = std::move(value); }
 
+nlohmann::ordered_json Run::origin(const std::string& option) const {
+  nlohmann::ordered_json o = {{"option", option}};
+  for (const auto& arg : command_line_) {
+    if (arg == "--") break;
+    if (arg == option || arg.rfind(option + "=", 0) == 0) {
+      o["given"] = "command line";
+      return o;
+    }
+  }
+  const std::string name = option.rfind("--", 0) == 0 ? option.substr(2) : option;
+  for (auto file = from_files_.rbegin(); file != from_files_.rend(); ++file)  // the last file named wins
+    for (const auto& q : file->content.quantities)
+      if (q.option_name() == name) {
+        o.update({{"file", file->path}, {"entry", q.name}, {"sha256", file->sha256}, {"source", q.source}});
+        if (q.source != "output") o["cite"] = q.cite;  // a tool's JSON: its cite is only the file's name
+        return o;
+      }
+  o["given"] = "default";
+  return o;
+}
+
 void Run::emit_json(const nlohmann::ordered_json& object, const fs::path& out_path) {
   const std::string text = object.dump(2) + "\n";
   std::cout << text;
@@ -254,8 +275,8 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
   record.argv.assign(argv, argv + argc);
 
   nlohmann::ordered_json from_ignored;
+  std::vector<std::pair<std::string, io::QuantityFile>> from_files;
   try {
-    std::vector<std::pair<std::string, io::QuantityFile>> from_files;
     for (const auto& file : from_files_in(argc, argv))  // named errors first
       from_files.emplace_back(file, io::read_quantity_document(file));
     app_.parse(from_options_first(argc, argv));
@@ -277,6 +298,13 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
     if (records_runs_ && !db_path_.empty()) db.emplace(prov::Database::open(db_path_));
     for (const auto& file : app_.get_option("--from")->as<std::vector<std::string>>())
       if (!file.empty()) run.input(file);
+    for (auto& [path, content] : from_files)
+      run.from_files_.push_back({path, std::move(content), prov::describe_file(path).sha256});
+    for (int i = 1; i < argc; ++i) {  // the command line without its --from files, for Run::origin
+      const std::string arg = argv[i];
+      if (arg == "--from") ++i;
+      else if (arg.rfind("--from=", 0) != 0) run.command_line_.push_back(arg);
+    }
   } catch (const InputError& e) {
     std::cerr << "error: " << one_line(e.what()) << "\n";
     return 1;

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "mesowave/io/output_stage.hpp"
+#include "mesowave/io/quantity_file.hpp"
 #include "mesowave/prov/run_record.hpp"
 
 namespace mesowave::app {
@@ -46,6 +47,13 @@ public:
   /// A parameter that is not an option (a derived choice worth recording).
   void param(const std::string& name, nlohmann::ordered_json value);
 
+  /// Where the value of `option` ("--nu-st") came from, for a result that must say what it was
+  /// computed from (mw-calibrate's targets): {"option", "given": "command line"}; or the --from
+  /// file that filled it - the last one named with an entry for it, as --from takes them -
+  /// {"option", "file" (as named), "entry", "sha256", "source", "cite" (TOML entries)}; or
+  /// {"option", "given": "default"}.
+  nlohmann::ordered_json origin(const std::string& option) const;
+
   /// Prints `object` (pretty, one key per line) on stdout and, if
   /// `out_path` is not empty, stages it to that file as well.
   void emit_json(const nlohmann::ordered_json& object, const std::filesystem::path& out_path = {});
@@ -58,6 +66,13 @@ private:
   std::vector<prov::FileRecord> inputs_;
   std::vector<prov::MetricRecord> metrics_;
   nlohmann::ordered_json extra_params_ = nlohmann::ordered_json::object();
+  struct FromFile {
+    std::string path;  ///< as named on the command line
+    io::QuantityFile content;
+    std::string sha256;
+  };
+  std::vector<FromFile> from_files_;         ///< in command-line order
+  std::vector<std::string> command_line_;  ///< the arguments but the --from ones
 };
 
 class Tool {

@@ -102,6 +102,7 @@ struct Source {
       if (node->is_number()) return digits ? format_significant(node->get<double>(), *digits) : format_exact(node->get<double>());
       if (node->is_string()) return node->get<std::string>();
       if (node->is_boolean()) return std::string(node->get<bool>() ? "true" : "false");
+      if (node->is_null()) return std::string();  // a value the run could not measure: an empty cell, never a zero
       throw InputError(path.string() + ": '" + source + "' is not a number, text or true/false");
     }
     const auto it = quantities.find(source);

@@ -25,7 +25,29 @@ double plotted(const std::string& text, bool one_minus, bool log_y) {
   return (log_y && !(v > 0)) ? std::numeric_limits<double>::quiet_NaN() : v;
 }
 
+struct Overlay {
+  std::string file, column, legend;
+};
+
+// FILE:COLUMN[=LEGEND]; the last ':' before the legend splits (a path may hold one).
+Overlay parse_overlay(const std::string& text) {
+  const auto eq = text.find('=');
+  const std::string head = text.substr(0, eq);
+  const auto colon = head.rfind(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == head.size())
+    throw InputError("--overlay " + text + " must be FILE:COLUMN or FILE:COLUMN=LEGEND");
+  Overlay o{head.substr(0, colon), head.substr(colon + 1), {}};
+  o.legend = eq == std::string::npos ? o.column : text.substr(eq + 1);
+  return o;
+}
+
 }  // namespace
+
+std::vector<std::string> table_plot_overlay_files(const TablePlotOptions& o) {
+  std::vector<std::string> files;
+  for (const auto& text : o.overlays) files.push_back(parse_overlay(text).file);
+  return files;
+}
 
 void require_table_plot_options(const TablePlotOptions& o) {
   if (o.style != "lines" && o.style != "points" && o.style != "linespoints")
@@ -68,6 +90,15 @@ PlotSpec table_plot(const io::CsvTable& table, const TablePlotOptions& o) {
       for (std::size_t r = 0; r < table.rows.size(); ++r) s.y.push_back(plotted(table.text(r, yc), o.one_minus, o.log_y));
       spec.series.push_back(std::move(s));
     }
+  }
+  for (const auto& text : o.overlays) {
+    const Overlay ov = parse_overlay(text);
+    const io::CsvTable other = io::read_csv(ov.file);
+    const auto ox = other.column(o.x_column), oy = other.column(ov.column);
+    PlotSeries s{ov.legend, {}, {}, point_style};
+    for (std::size_t r = 0; r < other.rows.size(); ++r)
+      s.x.push_back(other.number(r, ox)), s.y.push_back(plotted(other.text(r, oy), o.one_minus, o.log_y));
+    spec.series.push_back(std::move(s));
   }
   spec.logscale = std::string(o.log_x ? "x" : "") + (o.log_y ? "y" : "");
   return spec;

@@ -1,7 +1,9 @@
 #pragma once
 // A plot of a CSV table's columns against one of them (mw-table plot): one
 // series per y column, or one point per row named by a label column (speed
-// against error). Beside plot.hpp, whose PlotSpec it fills.
+// against error). Beside plot.hpp, whose PlotSpec it fills. Overlays add a column of another
+// table against that table's own x column (two runs' curves sampled at different x: the two
+// cohesive laws' load-deflection curves).
 #include <optional>
 #include <string>
 #include <utility>
@@ -22,7 +24,11 @@ struct TablePlotOptions {
   bool log_x = false, log_y = false;
   bool one_minus = false;              ///< plot 1 - y (e.g. the decorrelation 1 - PCC)
   std::string key = "outside right top";
+  std::vector<std::string> overlays;   ///< FILE:COLUMN[=LEGEND]: a line from another table (its own x column)
 };
+
+/// The files the overlays read (for the run's record).
+std::vector<std::string> table_plot_overlay_files(const TablePlotOptions& options);
 
 /// InputError for a style other than lines/points/linespoints or a y range
 /// whose end does not exceed its start.

@@ -87,6 +87,13 @@ nlohmann::ordered_json compression_summary(const CompressionAnalysis& a) {
   return j;
 }
 
+std::vector<std::string> compression_products(const CompressionAnalysis& a) {
+  std::vector<std::string> products;
+  if (a.cyclic) products.push_back("E_st_measured_GPa");
+  if (a.failure) products.push_back("sigma_max_MPa");
+  return products;
+}
+
 std::string cycles_csv(const CompressionAnalysis& a) {
   std::vector<std::vector<std::string>> rows;
   const auto& r = *a.cyclic;

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "mesowave/lab/compression_analysis.hpp"
 
@@ -27,6 +28,10 @@ struct CompressionAnalysis {
 /// mw-estatic --from), sigma_max_MPa, crosshead_multiplier with its fit, the
 /// readings, warnings and notes.
 nlohmann::ordered_json compression_summary(const CompressionAnalysis& a);
+/// The summary's products (the --from contract, app::declare_products): the step-4 results a
+/// later tool takes - E_st_measured_GPa (mw-estatic, mw-calibrate cube) with a cyclic test,
+/// sigma_max_MPa (mw-calibrate cube) with a failure test; every other entry is the record.
+std::vector<std::string> compression_products(const CompressionAnalysis& a);
 
 /// One row per load cycle: readings, holds, loading rate, secant modulus.
 std::string cycles_csv(const CompressionAnalysis& a);

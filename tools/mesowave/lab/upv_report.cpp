@@ -5,6 +5,7 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/units.hpp"
+#include "mesowave/lab/picker_study.hpp"
 #include "mesowave/lab/pulse_velocity.hpp"
 
 namespace mesowave::lab {
@@ -52,10 +53,15 @@ UpvReport upv_report(const UpvMeasurement& m) {
     report.s_pick = pick_time_of_flight(m.s_wave, read, o, d, "S wave");
     t_s_us = report.s_pick->tof_s / units::us;
   }
+  // The S chain after a P pick is a strategy of its own in the picker table.
+  const std::string s_strategy = report.s_pick ? report.s_pick->onset.pick.method + (t_p_us ? "-after-p" : "") : "";
   nlohmann::ordered_json picks;
   for (auto [pk, key] : {std::pair{&report.p_pick, "t_p"}, std::pair{&report.s_pick, "t_s"}}) {
     if (!*pk) continue;
     describe_pick(picks, key, **pk);
+    const bool p = pk == &report.p_pick;
+    describe_bias(picks, key,
+                  state_pick_bias((*pk)->record, (*pk)->onset, p ? "P" : "S", p ? (*pk)->onset.pick.method : s_strategy));
     report.warnings.insert(report.warnings.end(), (*pk)->onset.warnings.begin(), (*pk)->onset.warnings.end());
   }
 

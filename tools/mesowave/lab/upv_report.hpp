@@ -34,7 +34,8 @@ struct UpvMeasurement {
 
 struct UpvReport {
   /// path_mm, t_p_us, t_s_us, density_kg_m3, v_p_m_s, v_s_m_s, nu_d (and its
-  /// source), E_d_GPa, G_d_GPa, method, each pick's details, warnings.
+  /// source), E_d_GPa, G_d_GPa, method, each pick's details and the remaining
+  /// bias of its picker from the picker table (lab/picker_study.hpp), warnings.
   nlohmann::ordered_json summary;
   std::optional<TimeOfFlightPick> p_pick, s_pick;  ///< the picks on records, if any
   std::vector<std::string> warnings;               ///< the pickers'

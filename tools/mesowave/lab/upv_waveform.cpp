@@ -244,6 +244,13 @@ Onset pick_onset(const signal::Signal& raw, const OnsetOptions& o) {
     throw InputError("record " + s.name + ": the search window " + us(onset.search_begin_s) + " .. " +
                      us(onset.search_end_s) + " is empty");
   const auto first_index = std::size_t(std::ceil((onset.search_begin_s - s.t0_s) / s.dt_s - 1e-9));
+  {
+    double mean = 0, peak = 0;
+    for (std::size_t i = i0; i < i1; ++i) mean += s.samples[i] / double(i1 - i0);
+    for (std::size_t i = first_index; i < s.size() && s.time(i) <= onset.search_end_s; ++i)
+      peak = std::max(peak, std::abs(s.samples[i] - mean));
+    onset.snr_dB = 20 * std::log10(std::max(peak, 1e-300) / std::max(rms(s.samples, i0, i1), 1e-300));
+  }
   const std::string before = std::string("inside the ") +
                              (o.crosstalk_s > 0 && onset.search_begin_s <= o.crosstalk_s ? "cross-talk window" : "pre-trigger") +
                              "? (--crosstalk-us, the search window)";

@@ -85,6 +85,7 @@ struct Onset {
   signal::Pick locator;           ///< the locating pick (threshold crossing or envelope peak)
   double search_begin_s = 0, search_end_s = 0;
   double contrast = 0;            ///< AIC onset: RMS after / RMS before (0 if not computed)
+  double snr_dB = 0;              ///< 20 log10(max |x - noise mean| in the search window / noise RMS)
   std::vector<std::string> warnings;
 };
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <ostream>
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
@@ -85,7 +86,25 @@ std::string describe(const CalibrationTrial& t) {
   return line + " (" + t.model + " model, " + format_number(std::round(t.wall_s * 10) / 10) + " s)";
 }
 
-nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_deg) {
+void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_deg, std::ostream& log) {
+  while (auto trial = c.next()) {
+    const auto done = with_results(*trial, run(trial->number, compression_trial_options(*trial, c.targets(), friction_deg)));
+    log << "mw-calibrate: " << describe(done) << "\n";
+    c.record(done);
+  }
+}
+
+void run_trials(RodCalibration& c, const TrialRunner& run, std::ostream& log) {
+  while (auto t = c.next()) {
+    t = with_results(*t, run(t->number, {"--E-dem-GPa", format_exact(t->E_dem_GPa)}));
+    log << "mw-calibrate rod: trial " << t->number << ": E_dem " << format_number(t->E_dem_GPa) << " GPa -> E_DEM "
+        << format_number(t->E_DEM_GPa) << " GPa\n";
+    c.record(*t);
+  }
+}
+
+nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_deg,
+                                           const TargetOrigins& origins) {
   const CalibrationTrial& best = c.result();
   const auto& p = best.parameters;
   const auto& targets = c.targets();
@@ -109,7 +128,34 @@ nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, doub
   j["trial_count"] = c.trials().size();
   j["calibrated_by_trial"] = best.summary_file;
   j["trials_wall_s"] = total_wall;
+  const auto& tol = c.tolerances();
+  const auto target = [](double value, const char* unit, const std::string& tolerance, double calibrated,
+                         const nlohmann::ordered_json& origin) {
+    nlohmann::ordered_json t = {{"value", value}, {"unit", unit}, {"tolerance", tolerance}, {"calibrated", calibrated}};
+    if (origin.is_object()) t.update(origin);
+    return t;
+  };
+  j["targets"] = {
+      {"E_st", target(targets.E_Pa / 1e9, "GPa", format_number(100 * tol.E_relative) + " %", best.E_glob_Pa / 1e9,
+                      origins.E_st)},
+      {"nu_st", target(targets.nu, "", format_number(tol.nu_absolute), best.nu_glob, origins.nu_st)},
+      {"sigma_max", target(targets.sigma_Pa / 1e6, "MPa", format_number(100 * tol.sigma_relative) + " %",
+                           best.peak_Pa / 1e6, origins.sigma_max)}};
   return j;
+}
+
+std::string calibration_targets_csv(const nlohmann::ordered_json& summary) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& [name, t] : summary.at("targets").items()) {
+    const auto text = [&t](const char* key) { return t.contains(key) ? t.at(key).get<std::string>() : std::string(); };
+    const std::string sha = text("sha256");
+    rows.push_back({name, format_exact(t.at("value").get<double>()), text("unit"), text("tolerance"),
+                    format_significant(t.at("calibrated").get<double>(), 6), t.contains("file") ? text("file") : text("given"),
+                    text("entry"), text("source"), text("cite"), sha.substr(0, 12)});
+  }
+  return io::to_csv({"target", "value", "unit", "tolerance", "calibrated", "read_from", "entry", "source", "cite",
+                     "sha256_prefix"},
+                    rows);
 }
 
 nlohmann::ordered_json rod_calibration_summary(const RodCalibration& c, const Packing& chain,

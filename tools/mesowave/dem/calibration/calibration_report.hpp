@@ -7,6 +7,8 @@
 // targets, and the stress-strain curves of the calibrated test with the
 // target and calibrated moduli drawn.
 #include <filesystem>
+#include <functional>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -43,9 +45,36 @@ RodTrial with_results(RodTrial trial, const std::filesystem::path& summary_file)
 /// "trial 3 (elastic): E_dem 23.3 GPa, nu_dem 0.32 -> E_glob ..., nu_glob ... (linear model, 4.2 s)".
 std::string describe(const CalibrationTrial& trial);
 
+/// Runs a trial: its number and mw-dem options in, its summary file (trial-NN.json) out.
+using TrialRunner = std::function<std::filesystem::path(int trial, const std::vector<std::string>& options)>;
+/// Runs the calibration's trials until it has its result, a line per trial on `log`
+/// ("mw-calibrate: trial 3 (elastic): ...", describe()).
+void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_angle_deg, std::ostream& log);
+/// The rod's trials ("mw-calibrate rod: trial 1: E_dem 660 GPa -> E_DEM 220.6 GPa").
+void run_trials(RodCalibration& c, const TrialRunner& run, std::ostream& log);
+
+/// Where each target was read from: app::Run::origin of --E-st-measured-GPa, --nu-st and
+/// --sigma-max-MPa (the file, its entry and SHA-256, or the command line). The pipeline
+/// chooses the files (CC_CALIBRATION_TARGETS, pipeline/concrete-cube/step-6-calibration.mk):
+/// the paper's static tests (lab-data/concrete-cube/static-test.toml: E_st_measured, nu_st,
+/// sigma_max) or the lab's own step 4 (mw-compress's JSON: E_st_measured_GPa, sigma_max_MPa;
+/// its records carry no lateral strain, so nu_st stays the static-test file's).
+struct TargetOrigins {
+  nlohmann::ordered_json E_st, nu_st, sigma_max;
+};
+
 /// The calibrated cube: the flat keys that `mw-dem run --from` reads (E_dem_GPa,
-/// nu_dem, T_MPa, C_MPa, friction_angle_deg), then the results against the targets.
-nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_angle_deg);
+/// nu_dem, T_MPa, C_MPa, friction_angle_deg), then the results against the targets,
+/// then "targets": per target (E_st, nu_st, sigma_max) its value, unit, tolerance, the
+/// calibrated model's value and `origins`' record of where it was read from (nested: data for
+/// the reader, never an option value of `mw-dem --from`).
+nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_angle_deg,
+                                           const TargetOrigins& origins = {});
+/// The "targets" of a calibration_summary as a table, one row per target: target, value,
+/// unit, tolerance, calibrated (the model's E_glob, nu_glob, sigma_dem), read_from (the file or
+/// "command line"), entry, source, cite and the first 12 hex digits of the file's SHA-256 (the
+/// JSON has all 64; `mw-prov` finds the run that made a file by it).
+std::string calibration_targets_csv(const nlohmann::ordered_json& summary);
 /// The calibrated rod: the chain (spheres, R, d, rho_p), E_dem and K_n = E_dem R
 /// (Eq. 3), E_DEM against the target, and the trials. `material` is the
 /// scene's (all but E_dem).

@@ -11,9 +11,11 @@
 namespace mesowave::dem {
 namespace {
 
-std::vector<std::size_t> resolve(const SphereTarget& target, const SphereSet& s, const Box& box, const std::string& who) {
+// `line`: the packing's axis if its centres lie on one line (a patch on a face it crosses takes the end sphere).
+std::vector<std::size_t> resolve(const SphereTarget& target, const SphereSet& s, const Box& box,
+                                 const std::optional<Vec3>& line, const std::string& who) {
   switch (target.kind) {
-    case SphereTarget::Kind::patch: return spheres_under_patch(s, box, target.patch, who);
+    case SphereTarget::Kind::patch: return spheres_under_patch(s, box, target.patch, who, line);
     case SphereTarget::Kind::point: return {sphere_nearest(s, target.point_m)};
     case SphereTarget::Kind::end: return {sphere_at_end(s, target.last)};
   }
@@ -86,7 +88,7 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
   std::vector<ResolvedLoad> loads;
   for (const auto& a : scene_.actuators) {
     const std::string who = "actuator " + a.name;
-    loads.push_back({&a, resolve(a.target, spheres, box, who), direction_vector(a.direction, a.target, who, line)});
+    loads.push_back({&a, resolve(a.target, spheres, box, line, who), direction_vector(a.direction, a.target, who, line)});
   }
   // The sphere groups of each sensor (its patch, an extensometer's two pads), as its kind lists them.
   std::vector<std::vector<std::vector<std::size_t>>> sensor_groups;
@@ -94,7 +96,7 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     const std::string who = "sensor " + sensor.name;
     sensor_groups.emplace_back();
     for (const auto& [target, label] : sensor_kinds().get(sensor.kind, who).targets(sensor))
-      sensor_groups.back().push_back(resolve(*target, spheres, box, who + label));
+      sensor_groups.back().push_back(resolve(*target, spheres, box, line, who + label));
   }
   const std::string requested = options_.model != "auto" ? options_.model : scene_.model;
   choice_ = choose_model(requested, scene_, spheres, bonds, loads);

@@ -50,7 +50,7 @@ Vec3 patch_centre(const Patch& patch, const Box& box) {
 }
 
 std::vector<std::size_t> spheres_under_patch(const SphereSet& s, const Box& box, const Patch& patch,
-                                             const std::string& who) {
+                                             const std::string& who, const std::optional<Vec3>& line) {
   const Vec3 centre = patch_centre(patch, box);
   double depth = patch.depth_m;
   if (depth < 0) {
@@ -74,7 +74,17 @@ std::vector<std::size_t> spheres_under_patch(const SphereSet& s, const Box& box,
       chosen.push_back(k);
     }
   }
+  // A line across the face: only its end sphere there is at the surface (header). The line's
+  // axis along the face normal to the round-off of its unit vector (model_choice.cpp's test of a
+  // line along x, y or z).
+  std::optional<std::size_t> end;
+  if (!patch.face.curved && patch.depth_m < 0 && line && std::abs((*line)[a]) > 1 - 1e-12 && s.size() > 0) {
+    end = 0;
+    for (std::size_t k = 1; k < s.size(); ++k)
+      if (patch.face.upper ? s.centre_m[k][a] > s.centre_m[*end][a] : s.centre_m[k][a] < s.centre_m[*end][a]) end = k;
+  }
   for (std::size_t k = 0; k < s.size() && !patch.face.curved; ++k) {
+    if (end && k != *end) continue;
     const Vec3 c = s.centre_m[k];
     const double r = s.radius_m[k];
     const double gap = patch.face.upper ? plane - (c[a] + r) : (c[a] - r) - plane;

@@ -4,6 +4,7 @@
 // the one nearest to a point, or the first/last sphere of a line. A face is
 // one of a box's six (a cylinder's flat ends are z- and z+ of its bounding
 // box) or a cylinder's curved face (experiment/experiment.hpp's shapes).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,8 +53,17 @@ Vec3 patch_centre(const Patch& patch, const Box& box);
 /// within the patch depth of the face plane (curved: of the cylinder's surface, the
 /// patch measured as arc length around the axis and length along it); InputError
 /// naming `who` if none.
+///
+/// A line of spheres across the face (`line`: the packing's axis when its centres lie on one
+/// line, model_choice.hpp's line_axis, along the face's normal): a patch of the default depth
+/// takes the end sphere at that face alone, if its centre projects inside the patch. That sphere
+/// is the whole of the line's surface there, the others sit behind it on the axis; by depth
+/// alone a chain at a spacing below one radius (the rod paper's 0.95 R, Table 1) would also take
+/// the next sphere, whose surface lies d < R from the face. An experiment's end transducers (a
+/// rod's A and S) so drive and read the first and last sphere, as `sphere = "first"/"last"` does.
+/// An explicit depth_m keeps the depth rule.
 std::vector<std::size_t> spheres_under_patch(const SphereSet& spheres, const Box& box, const Patch& patch,
-                                             const std::string& who);
+                                             const std::string& who, const std::optional<Vec3>& line = std::nullopt);
 /// The sphere whose centre is nearest to `point` (ties: lowest packing index).
 std::size_t sphere_nearest(const SphereSet& spheres, const Vec3& point);
 /// The first or last sphere along the longest extent of the packing (a rod's ends).
