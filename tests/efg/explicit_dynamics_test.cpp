@@ -22,6 +22,7 @@
 
 #include "mesowave/core/format.hpp"
 #include "mesowave/efg/explicit_dynamics.hpp"
+#include "mesowave/efg/strain_rate.hpp"
 #include "support/input_error.hpp"
 
 using namespace mesowave;
@@ -306,4 +307,52 @@ TEST(ExplicitDynamics, BadOptionsAreOneLineEach) {
   massless.density_kg_m3 = 0;
   const ElasticModel m0(s.disc, massless, s.mls);
   EXPECT_NE(input_error_of([&] { lumped_mass(m0); }).find("density"), std::string::npos);
+}
+
+// Issue 16, strain rate: a prescribed uniform strain-rate field. v(x) = G x (MLS parameters v_I = G x_I:
+// a linear field, which the linear basis reproduces exactly) has the strain rate (G_xx, G_yy, G_xy + G_yx)
+// at every point, so each point's PointState::strain_rate_1_s (B v, what the run writes before every
+// update) is that to round-off, and f_t,dyn = DIF(rate) f_t follows CEB-FIP 1990's tensile formula at the
+// stretching principal rate, written out here from the code's printed coefficients (efg/strain_rate.hpp).
+TEST(ExplicitDynamics, PointsGetTheStrainRateOfAPrescribedUniformRateField) {
+  const Discretisation disc = rectangular_grid({0, 0, 0.1, 0.05}, 10, 5);
+  const MlsApproximation mls(disc.nodes, support_radii_by_spacing(disc.nodes, disc.spacing_m, 2.5));
+  const ElasticModel model(disc, kConcrete, mls);
+  const LinearElasticPoint linear(kConcrete);
+  const ExplicitDynamics dyn(model, linear, nullptr, {});
+  StrainRateParameters srp;
+  srp.f_cm_Pa = 30e6;
+  const double f_t = 3e6;
+  const double delta_s = 1.0 / (10 + 6 * 3.0);  // f_cm / 10 MPa = 3
+  struct Case {
+    Eigen::Matrix2d G;
+    double expected_dif;
+  };
+  // 1) rates (20, -5, 8) 1/s: the stretching principal rate 7.5 + hypot(12.5, 4) = 20.624 1/s, the low branch;
+  // 2) 200 1/s uniaxial: above the cap (100 1/s), the high branch at the cap.
+  const double r1 = 7.5 + std::hypot(12.5, 4.0);
+  Eigen::Matrix2d G1, G2;
+  G1 << 20, 3, 5, -5;  // G_xy + G_yx = 8
+  G2 << 200, 0, 0, 0;
+  const std::vector<Case> cases{{G1, std::pow(r1 / 3e-6, 1.016 * delta_s)},
+                                {G2, std::pow(10.0, 7.11 * delta_s - 2.33) * std::cbrt(100 / 3e-6)}};
+  for (const Case& c : cases) {
+    Eigen::VectorXd v(2 * Eigen::Index(disc.nodes.size()));
+    for (std::size_t i = 0; i < disc.nodes.size(); ++i) v.segment<2>(2 * Eigen::Index(i)) = c.G * disc.nodes[i];
+    std::vector<PointState> states;
+    dyn.internal_force(Eigen::VectorXd::Zero(v.size()), v, states);
+    const Eigen::Vector3d rate(c.G(0, 0), c.G(1, 1), c.G(0, 1) + c.G(1, 0));
+    ASSERT_EQ(states.size(), disc.points.size());
+    for (const PointState& st : states) {
+      // 1e-11 of the rate: the MLS reproduces a linear field to round-off (mls_test holds 1e-12 on the
+      // shape functions; the rate sums about 16 of them times |G x| ~ 20 1/s x 0.1 m)
+      ASSERT_LT((st.strain_rate_1_s - rate).norm(), 1e-11 * rate.norm());
+      // 1e-9 of f_t: the same formula at a rate that differs by round-off (1e-11), DIF ~ rate^0.036 or capped
+      EXPECT_NEAR(dynamic_tensile_strength_Pa(f_t, st.strain_rate_1_s, srp), c.expected_dif * f_t, 1e-9 * f_t);
+    }
+  }
+  // without a velocity (the static internal_force) the rate is zero and the strength static
+  std::vector<PointState> states;
+  dyn.internal_force(Eigen::VectorXd::Zero(2 * Eigen::Index(disc.nodes.size())), states);
+  for (const PointState& st : states) EXPECT_EQ(dynamic_tensile_strength_Pa(f_t, st.strain_rate_1_s, srp), f_t);
 }

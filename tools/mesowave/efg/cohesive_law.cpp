@@ -150,4 +150,20 @@ CohesiveResponse cohesive_response(const CohesiveLaw& law, double w_m, double w_
   return r;
 }
 
+double cohesive_dissipated_J_m2(const CohesiveLaw& law, double w_hist_m, double w_initial_m) {
+  const double wh = std::min(w_hist_m, law.w_max_m());
+  if (wh <= w_initial_m) return 0;
+  // Gauss-Legendre 8 on [-1, 1] (tabulated: this file does not reach efg/discretisation's generator)
+  static const double x[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                              0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+  static const double w[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                              0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  double area = 0.5 * law.traction_Pa(w_initial_m) * w_initial_m;
+  const int pieces = 16;
+  const double h = (wh - w_initial_m) / pieces;
+  for (int i = 0; i < pieces; ++i)
+    for (int q = 0; q < 8; ++q) area += 0.5 * h * w[q] * law.traction_Pa(w_initial_m + h * (i + 0.5 * (1 + x[q])));
+  return area - 0.5 * law.traction_Pa(wh) * wh;
+}
+
 }  // namespace mesowave::efg

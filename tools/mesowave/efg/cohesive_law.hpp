@@ -131,4 +131,12 @@ inline constexpr double initial_opening_fraction = 1e-3;
 /// w_max: the segment is traction-free), and for w < 0 the closed-face penalty f_t w / w_initial.
 CohesiveResponse cohesive_response(const CohesiveLaw& law, double w_m, double w_hist_m, double w_initial_m);
 
+/// Energy per face area [J/m^2] dissipated by a point that reached w_hist under cohesive_response: the
+/// path's area (the initial secant to w_initial, then the envelope to w_hist) less the triangle still
+/// stored on the secant at w_hist, 1/2 sigma_env(w_hist) w_hist. Quadrature on the law: 16 pieces of
+/// 8-point Gauss-Legendre, the rule of CohesiveInterface::dissipated_energy_J (exact for the
+/// exponential law's polynomial envelope at integer alpha; the bilinear kink inside a piece is not
+/// resolved exactly). Zero for w_hist <= w_initial.
+double cohesive_dissipated_J_m2(const CohesiveLaw& law, double w_hist_m, double w_initial_m);
+
 }  // namespace mesowave::efg

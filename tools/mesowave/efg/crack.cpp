@@ -118,6 +118,36 @@ void CrackSet::extend(std::size_t k, const Vec2& new_tip) {
   ++version_;
 }
 
+void CrackSet::extend_end(std::size_t k, bool at_end, const Vec2& new_point) {
+  if (k >= cracks_.size())
+    throw InputError("crack " + std::to_string(k) + " does not exist (" + std::to_string(cracks_.size()) + " cracks)");
+  Crack& c = cracks_[k];
+  if (!(at_end ? c.tip_at_end : c.tip_at_start))
+    throw InputError("crack " + std::to_string(k) + ": its " + (at_end ? "end" : "start") + " is not a tip");
+  auto& p = c.points;
+  if (at_end) {
+    check_segment(p.back(), new_point, k);
+    p.push_back(new_point);
+  } else {
+    check_segment(new_point, p.front(), k);
+    p.insert(p.begin(), new_point);
+  }
+  ++version_;
+}
+
+void CrackSet::close_tip(std::size_t k, bool at_end) {
+  if (k >= cracks_.size())
+    throw InputError("crack " + std::to_string(k) + " does not exist (" + std::to_string(cracks_.size()) + " cracks)");
+  (at_end ? cracks_[k].tip_at_end : cracks_[k].tip_at_start) = false;
+  ++version_;
+}
+
+void CrackSet::restore(const CrackSet& earlier) {
+  const std::uint64_t next = std::max(version_, earlier.version_) + 1;
+  cracks_ = earlier.cracks_;
+  version_ = next;
+}
+
 const Vec2& CrackSet::tip(std::size_t k) const {
   if (k >= cracks_.size())
     throw InputError("crack " + std::to_string(k) + " does not exist (" + std::to_string(cracks_.size()) + " cracks)");

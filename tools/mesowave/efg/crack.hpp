@@ -71,6 +71,16 @@ public:
   bool empty() const { return cracks_.empty(); }
   /// The end that extend() moves: the last point if tip_at_end, else the first (InputError: no tip).
   const Vec2& tip(std::size_t crack) const;
+  /// A crack with two tips (one that started inside the body, efg/dynamic_cracks) grows at either end:
+  /// appends `new_point` at the end (`at_end`) or the start; InputError when that end is not a tip or
+  /// the new segment has zero length.
+  void extend_end(std::size_t crack, bool at_end, const Vec2& new_point);
+  /// That end is no longer a tip (it ran out through a face or into another crack): diffraction and
+  /// transparency stop bending the weights around it.
+  void close_tip(std::size_t crack, bool at_end);
+  /// The cracks of `earlier` (a copy taken before a change that is undone) under a NEW version, so
+  /// that caches keyed on version() (ElasticModel's shape functions) see the change back.
+  void restore(const CrackSet& earlier);
   /// Shortest distance from p to any crack segment (+inf without cracks): keeps nodes and Gauss
   /// points off crack lines, where the crossing test cannot tell the sides apart.
   double distance(const Vec2& p) const;

@@ -42,8 +42,10 @@ Eigen::VectorXd lumped_mass(const ElasticModel& model) {
   return m;
 }
 
-StableStep stable_step(const ElasticModel& model, const Eigen::VectorXd& mass, const ConstraintSet* constraints) {
-  const Eigen::SparseMatrix<double> K = model.stiffness();
+StableStep stable_step(const ElasticModel& model, const Eigen::VectorXd& mass, const ConstraintSet* constraints,
+                       const Eigen::SparseMatrix<double>* extra_stiffness) {
+  Eigen::SparseMatrix<double> K = model.stiffness();
+  if (extra_stiffness) K += *extra_stiffness;
   const auto n = Eigen::Index(model.dof_count());
   Eigen::VectorXd inv_sqrt_m(n);
   for (Eigen::Index i = 0; i < n; ++i) inv_sqrt_m[i] = 1.0 / std::sqrt(mass[i / 2]);
@@ -102,21 +104,8 @@ ExplicitDynamics::ExplicitDynamics(const ElasticModel& model, const PointMateria
   }
   stable_ = stable_step(model, mass_, constraints_);
 
-  const auto& shape = model.shape_functions();
-  const std::size_t nodes = model.mls().node_count();
-  gather_start_.assign(nodes + 1, 0);
-  for (const auto& sf : shape)
-    for (std::int32_t i : sf.nodes) ++gather_start_[std::size_t(i) + 1];
-  for (std::size_t i = 0; i < nodes; ++i) gather_start_[i + 1] += gather_start_[i];
-  gather_point_.resize(std::size_t(gather_start_[nodes]));
-  gather_local_.resize(gather_point_.size());
-  std::vector<std::int64_t> fill(gather_start_.begin(), gather_start_.end() - 1);
-  for (std::size_t p = 0; p < shape.size(); ++p)  // ascending p within each node: the summation order
-    for (std::size_t a = 0; a < shape[p].nodes.size(); ++a) {
-      const auto k = std::size_t(fill[std::size_t(shape[p].nodes[a])]++);
-      gather_point_[k] = std::int32_t(p);
-      gather_local_[k] = std::int32_t(a);
-    }
+  gather_ = build_gather(model.shape_functions(), model.mls().node_count());
+  gather_version_ = crack_version();
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   for (const Rect& c : model.discretisation().cells)
     x0 = std::min(x0, c.x0), x1 = std::max(x1, c.x1), y0 = std::min(y0, c.y0), y1 = std::max(y1, c.y1);
@@ -129,7 +118,7 @@ Eigen::VectorXd ExplicitDynamics::external_force(double t_s) const {
   return f;
 }
 
-double ExplicitDynamics::point_forces(const Eigen::VectorXd& u, std::vector<PointState>& states,
+double ExplicitDynamics::point_forces(const Eigen::VectorXd& u, const Eigen::VectorXd* v, std::vector<PointState>& states,
                                       std::vector<Eigen::Vector3d>& s, int threads) const {
   const auto& shape = model_->shape_functions();
   const auto& points = model_->discretisation().points;
@@ -139,18 +128,42 @@ double ExplicitDynamics::point_forces(const Eigen::VectorXd& u, std::vector<Poin
 #pragma omp parallel for num_threads(threads) schedule(static) reduction(max : smax)
   for (std::int64_t p = 0; p < np; ++p) {
     PointState& st = states[std::size_t(p)];
+    st.strain_rate_1_s = v ? strain_of(shape[std::size_t(p)], *v) : Eigen::Vector3d::Zero();
     s[std::size_t(p)] = material_->update(strain_of(shape[std::size_t(p)], u), st) * (t * points[std::size_t(p)].weight_m2);
     smax = std::max(smax, st.modulus_scale);
   }
   return smax;
 }
 
+ExplicitDynamics::NodeGather ExplicitDynamics::build_gather(const std::vector<ShapeFunctions>& shape, std::size_t nodes) {
+  NodeGather g;
+  g.start.assign(nodes + 1, 0);
+  for (const auto& sf : shape)
+    for (std::int32_t i : sf.nodes) ++g.start[std::size_t(i) + 1];
+  for (std::size_t i = 0; i < nodes; ++i) g.start[i + 1] += g.start[i];
+  g.point.resize(std::size_t(g.start[nodes]));
+  g.local.resize(g.point.size());
+  std::vector<std::int64_t> fill(g.start.begin(), g.start.end() - 1);
+  for (std::size_t p = 0; p < shape.size(); ++p)  // ascending p within each node: the summation order
+    for (std::size_t a = 0; a < shape[p].nodes.size(); ++a) {
+      const auto k = std::size_t(fill[std::size_t(shape[p].nodes[a])]++);
+      g.point[k] = std::int32_t(p);
+      g.local[k] = std::int32_t(a);
+    }
+  return g;
+}
+
 Eigen::Vector2d ExplicitDynamics::node_internal_force(std::int64_t i, const std::vector<Eigen::Vector3d>& s) const {
+  return node_internal_force(gather_, i, s);
+}
+
+Eigen::Vector2d ExplicitDynamics::node_internal_force(const NodeGather& g, std::int64_t i,
+                                                      const std::vector<Eigen::Vector3d>& s) const {
   const auto& shape = model_->shape_functions();
   double fx = 0, fy = 0;
-  for (std::int64_t k = gather_start_[std::size_t(i)]; k < gather_start_[std::size_t(i) + 1]; ++k) {
-    const auto p = std::size_t(gather_point_[std::size_t(k)]);
-    const auto a = std::size_t(gather_local_[std::size_t(k)]);
+  for (std::int64_t k = g.start[std::size_t(i)]; k < g.start[std::size_t(i) + 1]; ++k) {
+    const auto p = std::size_t(g.point[std::size_t(k)]);
+    const auto a = std::size_t(g.local[std::size_t(k)]);
     fx += shape[p].dphi_dx[a] * s[p][0] + shape[p].dphi_dy[a] * s[p][2];
     fy += shape[p].dphi_dy[a] * s[p][1] + shape[p].dphi_dx[a] * s[p][2];
   }
@@ -158,15 +171,28 @@ Eigen::Vector2d ExplicitDynamics::node_internal_force(std::int64_t i, const std:
 }
 
 Eigen::VectorXd ExplicitDynamics::internal_force(const Eigen::VectorXd& u, std::vector<PointState>& states) const {
+  return internal_force_with(u, nullptr, states);
+}
+
+Eigen::VectorXd ExplicitDynamics::internal_force(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                                 std::vector<PointState>& states) const {
+  return internal_force_with(u, &v, states);
+}
+
+Eigen::VectorXd ExplicitDynamics::internal_force_with(const Eigen::VectorXd& u, const Eigen::VectorXd* v,
+                                                      std::vector<PointState>& states) const {
   const std::size_t np = model_->shape_functions().size();
   if (states.size() != np) states.assign(np, PointState{});
   std::vector<Eigen::Vector3d> s(np);
   const int nt = region_threads(np, 2000);
-  point_forces(u, states, s, nt);
+  point_forces(u, v, states, s, nt);
   Eigen::VectorXd f(Eigen::Index(model_->dof_count()));
   const auto nn = std::int64_t(model_->mls().node_count());
+  NodeGather now;  // the cracks changed since construction: the gather of the current shape functions
+  const NodeGather* g = &gather_;
+  if (crack_version() != gather_version_) g = &(now = build_gather(model_->shape_functions(), std::size_t(nn)));
 #pragma omp parallel for num_threads(nt) schedule(static)
-  for (std::int64_t i = 0; i < nn; ++i) f.segment<2>(2 * i) = node_internal_force(i, s);
+  for (std::int64_t i = 0; i < nn; ++i) f.segment<2>(2 * i) = node_internal_force(*g, i, s);
   return f;
 }
 
@@ -182,11 +208,21 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
   if (o.snapshot_stride < 0) throw InputError("snapshot stride (" + std::to_string(o.snapshot_stride) + ") must be >= 0");
   if (!std::isfinite(o.displacement_bound_m) || o.displacement_bound_m < 0)
     throw InputError("displacement bound (" + format_quantity(o.displacement_bound_m, "m") + ") must be >= 0 (0: the body's diagonal)");
-  const double dt_crit = stable_.dt_critical_s;
+  DynamicsCracks* const cracks = o.cracks;
+  if (cracks && C_.rows() > 0)
+    throw InputError("growing cracks with " + std::to_string(C_.rows()) +
+                     " constraint rows: not supported (the rows keep the shape functions of the start)");
+  // with cracks, the stable step of K plus the faces' penalty stiffness (pre-placed cracks' too)
+  StableStep stable = stable_;
+  if (cracks) {
+    const Eigen::SparseMatrix<double> Kc = cracks->stiffness_bound();
+    stable = stable_step(*model_, mass_, constraints_, &Kc);
+  }
+  const double dt_crit = stable.dt_critical_s;
   if (o.dt_s > dt_crit && !o.allow_unstable)
     throw InputError("time step (" + format_quantity(o.dt_s * 1e6, "us") + ") exceeds the stable step 2/omega_max (" +
                      format_quantity(dt_crit * 1e6, "us") + ") of this model");
-  const double dt_base = o.dt_s > 0 ? o.dt_s : o.dt_fraction * dt_crit;
+  double dt_base = o.dt_s > 0 ? o.dt_s : o.dt_fraction * dt_crit;
   const double bound = o.displacement_bound_m > 0 ? o.displacement_bound_m : body_diagonal_m_;
 
   const auto& shape = model_->shape_functions();
@@ -221,7 +257,16 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
   }
 
   DynamicsResult r;
-  r.stable = stable_;
+  r.stable = stable;
+  NodeGather gather_cracked;  // the gather lists after a crack changed the shape functions
+  const NodeGather* gather = &gather_;
+  if (crack_version() != gather_version_) {  // cracks placed after construction
+    gather_cracked = build_gather(shape, std::size_t(nn));
+    gather = &gather_cracked;
+  }
+  Eigen::VectorXd f_cracks;
+  if (cracks) f_cracks = Eigen::VectorXd::Zero(ndof);
+  bool recheck_step = false;
   r.threads = nt;
   r.dt_first_s = dt_base;
   r.dt_min_s = dt_base;
@@ -238,9 +283,10 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
 
   for (std::int64_t n = 0; t < o.duration_s; ++n) {
     // Stresses at the points from u^n, each point writing its own entry.
-    const double smax = point_forces(u, states, s, nt);
+    const double smax = point_forces(u, &v, states, s, nt);  // v = v^{n-1/2}: the points' strain rates
     r.max_modulus_scale = std::max(r.max_modulus_scale, smax);
-    if (n % o.stiffness_check_every == 0) {  // the stable step of the stiffened law
+    if (n % o.stiffness_check_every == 0 || recheck_step) {  // the stable step of the stiffened law
+      recheck_step = false;
       dt_half = dt_base / std::sqrt(std::max(1.0, smax));
       r.dt_min_s = std::min(r.dt_min_s, dt_half);
     }
@@ -250,12 +296,20 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
     // Each node: f_int by its points in point order, f_ext, the unconstrained velocity.
 #pragma omp parallel for num_threads(nt) schedule(static)
     for (std::int64_t i = 0; i < nn; ++i) {
-      f_int.segment<2>(2 * i) = node_internal_force(i, s);
+      f_int.segment<2>(2 * i) = node_internal_force(*gather, i, s);
       for (Eigen::Index d = 2 * i; d < 2 * i + 2; ++d) {
         double fe = 0;
         for (std::size_t l = 0; l < loads_.size(); ++l) fe += p_now[l] * unit_loads_[l][d];
         f_ext[d] = fe;
         vs[d] = keep * v[d] + gain * (fe - f_int[d]) * inv_mass_dof_[d];
+      }
+    }
+    if (cracks) {  // the faces' cohesive tractions and contact: part of f_int
+      f_cracks.setZero();
+      cracks->add_forces(u, f_cracks);
+      for (Eigen::Index d = 0; d < ndof; ++d) {
+        f_int[d] += f_cracks[d];
+        vs[d] -= gain * f_cracks[d] * inv_mass_dof_[d];
       }
     }
     if (C_.rows() > 0) {  // forward-increment multipliers: C u^{n+1} = d exactly
@@ -305,6 +359,7 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
       for (std::size_t k = 0; k < sensors.size(); ++k) {
         SensorSample smp;
         smp.velocity_m_s = n == 0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(0.5 * (displacement_of(sensor_sf[k], v) + displacement_of(sensor_sf[k], vs)));
+        sensor_state[k].strain_rate_1_s = strain_of(sensor_sf[k], v);
         smp.stress_Pa = material_->update(strain_of(sensor_sf[k], u_prev), sensor_state[k]);
         r.sensors[k].push_back(smp);
       }
@@ -313,7 +368,10 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
         r.max_constraint_violation_m =
             std::max(r.max_constraint_violation_m, (C_ * u - constraints_->d()).cwiseAbs().maxCoeff());
     } else {
-      for (std::size_t k = 0; k < sensors.size(); ++k) material_->update(strain_of(sensor_sf[k], u_prev), sensor_state[k]);
+      for (std::size_t k = 0; k < sensors.size(); ++k) {
+        sensor_state[k].strain_rate_1_s = strain_of(sensor_sf[k], v);
+        material_->update(strain_of(sensor_sf[k], u_prev), sensor_state[k]);
+      }
     }
     if (o.snapshot_stride > 0 && (n % o.snapshot_stride == 0 || last)) {
       NodeSnapshot snap;
@@ -323,6 +381,18 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
         snap.stress_Pa.push_back(states[nearest_point[std::size_t(i)]].stress);
       }
       r.snapshots.emplace_back(t, std::move(snap));
+    }
+    if (cracks && cracks->advance(t + dt_half, u, states)) {  // a crack changed: new shape functions
+      gather_cracked = build_gather(shape, std::size_t(nn));
+      gather = &gather_cracked;
+      for (std::size_t k = 0; k < sensors.size(); ++k)
+        sensor_sf[k] = model_->mls().evaluate(sensors[k].x, "sensor '" + sensors[k].name + "'");
+      for (std::size_t i = 0; i < node_sf.size(); ++i) node_sf[i] = model_->mls().evaluate(nodes[i], "node " + std::to_string(i));
+      const Eigen::SparseMatrix<double> Kc = cracks->stiffness_bound();
+      stable = stable_step(*model_, mass_, constraints_, &Kc);
+      r.stable = stable;
+      dt_base = std::min(dt_base, o.dt_fraction * stable.dt_critical_s);
+      recheck_step = true;
     }
     v = vs;
     t += dt_half;

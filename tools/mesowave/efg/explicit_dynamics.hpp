@@ -85,8 +85,10 @@ struct StableStep {
   std::string method;
 };
 
-/// The stable step of `model` with lumped `mass` (per node) under `constraints` (may be null).
-StableStep stable_step(const ElasticModel& model, const Eigen::VectorXd& mass_per_node, const ConstraintSet* constraints);
+/// The stable step of `model` with lumped `mass` (per node) under `constraints` (may be null), with
+/// `extra_stiffness` (full dofs, e.g. crack faces' penalties) added to K when not null.
+StableStep stable_step(const ElasticModel& model, const Eigen::VectorXd& mass_per_node, const ConstraintSet* constraints,
+                       const Eigen::SparseMatrix<double>* extra_stiffness = nullptr);
 
 /// A point whose velocity and stress are recorded: its own shape functions and its own PointState
 /// (updated every step, so a history-dependent law gives the same stress as at a Gauss point there).
@@ -106,6 +108,26 @@ struct EnergySample {
   double balance_J() const { return kinetic_J + internal_work_J + damping_J - external_work_J; }
 };
 
+/// Cracks that open and grow during a run (efg/dynamic_cracks implements it; issue 16). At every step n
+/// the run calls add_forces(u^n, f) with f zero, adds f to the continuum's f_int (so W_int holds the
+/// faces' work and the energy balance stays exact), and after u^{n+1} calls advance(t^{n+1}, u^{n+1},
+/// states) with the points' states of step n (stress, strain rate). When advance returns true the
+/// CrackSet changed and the model's shape functions were recomputed: the run rebuilds its node gather
+/// lists and its sensors' and snapshot nodes' shape functions, and recomputes the stable step with
+/// stiffness_bound() added to K (then dt = dt_fraction x that step, or the caller's dt where lower).
+/// The lumped mass stays the one of the start: the row sums move between nodes when the shape
+/// functions are cut, the body's mass does not change, and a mass changed at a crack would change the
+/// kinetic energy without a force doing work. Runs with constraint rows are refused (their rows hold
+/// the shape functions of the start, which a crack would make stale).
+class DynamicsCracks {
+ public:
+  virtual ~DynamicsCracks() = default;
+  virtual void add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& f) const = 0;
+  virtual bool advance(double t_s, const Eigen::VectorXd& u, const std::vector<PointState>& states) = 0;
+  /// An upper bound of the faces' stiffness (full dof numbering) for the stable step.
+  virtual Eigen::SparseMatrix<double> stiffness_bound() const = 0;
+};
+
 struct DynamicsOptions {
   double duration_s = 0;            ///< simulated time; the run stops at the first t^n >= duration
   double dt_s = 0;                  ///< 0: dt_fraction x the stable step; else refused above it
@@ -118,6 +140,7 @@ struct DynamicsOptions {
   std::size_t min_points_per_thread = 2000;  ///< core/threads: fewer points per thread are not worth it
   bool allow_unstable = false;      ///< tests only: run above the stable step to see the guard stop it
   std::function<void(std::int64_t step, double t_s)> progress;  ///< now and then, from one thread
+  DynamicsCracks* cracks = nullptr;  ///< growing cracks (see DynamicsCracks); null: none
 };
 
 struct DynamicsResult {
@@ -150,6 +173,9 @@ class ExplicitDynamics {
   /// f_int(u) = sum_g B^T sigma(B u) w t, updating `states` (one per Gauss point). For the linear law
   /// it equals K u to round-off (tested). Parallel, the same bits for any thread count.
   Eigen::VectorXd internal_force(const Eigen::VectorXd& u, std::vector<PointState>& states) const;
+  /// The same with the velocity v (MLS parameters) whose strain rate B v each point's state gets before
+  /// its update (PointState::strain_rate_1_s), as in the run with v = v^{n-1/2}.
+  Eigen::VectorXd internal_force(const Eigen::VectorXd& u, const Eigen::VectorXd& v, std::vector<PointState>& states) const;
   /// f_ext(t) = sum_l p_l(t) f_1,l.
   Eigen::VectorXd external_force(double t_s) const;
   /// Runs from rest (u = v = 0, fresh PointStates). InputError: bad options (one line each), a step
@@ -159,10 +185,19 @@ class ExplicitDynamics {
  private:
   /// s_g = sigma_g(B_g u) w_g t at every Gauss point (updating `states`); the largest modulus_scale
   /// (at least 1). The one stress pass of internal_force and of the time step.
-  double point_forces(const Eigen::VectorXd& u, std::vector<PointState>& states, std::vector<Eigen::Vector3d>& s,
-                      int threads) const;
+  /// Each point's strain rate B_g v goes into its state first (v null: zero).
+  double point_forces(const Eigen::VectorXd& u, const Eigen::VectorXd* v, std::vector<PointState>& states,
+                      std::vector<Eigen::Vector3d>& s, int threads) const;
+  Eigen::VectorXd internal_force_with(const Eigen::VectorXd& u, const Eigen::VectorXd* v, std::vector<PointState>& states) const;
   /// Node i's f_int from the points' s_g, summed in point order (the same bits for any thread count).
   Eigen::Vector2d node_internal_force(std::int64_t i, const std::vector<Eigen::Vector3d>& s) const;
+  /// per node: (point, local index) of the points whose support holds it, ascending points
+  struct NodeGather {
+    std::vector<std::int64_t> start;
+    std::vector<std::int32_t> point, local;
+  };
+  static NodeGather build_gather(const std::vector<ShapeFunctions>& shape, std::size_t nodes);
+  Eigen::Vector2d node_internal_force(const NodeGather& g, std::int64_t i, const std::vector<Eigen::Vector3d>& s) const;
 
   const ElasticModel* model_;
   const PointMaterial* material_;
@@ -173,9 +208,9 @@ class ExplicitDynamics {
   Eigen::LLT<Eigen::MatrixXd> schur_;             ///< of C M^-1 C^T
   Eigen::SparseMatrix<double, Eigen::RowMajor> C_;
   StableStep stable_;
-  // per node: (point, local index) of the points whose support holds it, ascending points
-  std::vector<std::int64_t> gather_start_;
-  std::vector<std::int32_t> gather_point_, gather_local_;
+  NodeGather gather_;
+  std::uint64_t gather_version_ = 0;  ///< the CrackSet version gather_ was built for
+  std::uint64_t crack_version() const { return model_->mls().cracks() ? model_->mls().cracks()->version() : 0; }
   double body_diagonal_m_ = 0;
 };
 

@@ -6,6 +6,14 @@
 // needs none of it. `modulus_scale` is the ratio of the law's current tangent stiffness to D()'s:
 // the integrator shrinks the stable step by 1 / sqrt(largest scale) when the Y-function stiffens
 // the material (Eq. (24)).
+//
+// Strain rate (Section 3.3: the strengths grow with it). The integrator writes the point's strain
+// rate into the state before it calls update: eps_dot^n = B^n v^{n-1/2}, the central difference's
+// velocity between t^{n-1} and t^n through the point's current shape functions (zero at the first
+// step, from rest). That is (eps^n - eps^{n-1}) / dt_{n-1/2} while the shape functions stay; when a
+// crack grows and the point's shape functions change, a difference of stored strains would carry the
+// jump of the approximation as a spurious rate, B^n v^{n-1/2} does not. A law, or the crack criterion
+// (efg/dynamic_cracks: f_t,dyn = DIF(rate) f_t), reads state.strain_rate_1_s.
 #include <Eigen/Core>
 
 #include "mesowave/efg/material.hpp"
@@ -21,6 +29,9 @@ struct PointState {
   /// Y < 1 (Eq. (25) dips below 1 past e_v,th)
   double min_eps_v = 0.0;
   double modulus_scale = 1.0;  ///< tangent stiffness / D() at the last update
+  /// the strain rate eps_dot = B v^{n-1/2} [1/s] (Voigt, engineering shear), set by the integrator
+  /// before update (see the top of this file)
+  Eigen::Vector3d strain_rate_1_s = Eigen::Vector3d::Zero();
 };
 
 class PointMaterial {

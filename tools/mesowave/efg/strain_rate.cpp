@@ -70,4 +70,8 @@ PrincipalStrainRates principal_strain_rates(const Eigen::Vector3d& r) {
   return {std::max(0.0, mean + radius), std::max(0.0, radius - mean)};
 }
 
+double dynamic_tensile_strength_Pa(double f_t_Pa, const Eigen::Vector3d& strain_rate_1_s, const StrainRateParameters& p) {
+  return tensile_dif(principal_strain_rates(strain_rate_1_s).tension_1_s, p) * f_t_Pa;
+}
+
 }  // namespace mesowave::efg

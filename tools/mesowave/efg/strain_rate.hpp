@@ -67,4 +67,9 @@ struct PrincipalStrainRates {
 };
 PrincipalStrainRates principal_strain_rates(const Eigen::Vector3d& strain_rate_1_s);
 
+/// f_t,dyn = tensile_dif(rate) f_t [Pa] of a point whose strain rate (Voigt, PointState::strain_rate_1_s)
+/// is `strain_rate_1_s`: the rate is the stretching principal rate (principal_strain_rates), the rate of
+/// the direction that opens a crack; a point that only shortens keeps the static f_t (DIF 1 at rate 0).
+double dynamic_tensile_strength_Pa(double f_t_Pa, const Eigen::Vector3d& strain_rate_1_s, const StrainRateParameters& p);
+
 }  // namespace mesowave::efg
