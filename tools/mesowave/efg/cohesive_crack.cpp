@@ -26,16 +26,13 @@ void CohesiveInterface::evaluate_point(CohesivePoint& p) const {
 }
 
 void CohesiveInterface::add_segment(const Segment& s) {
-  const Vec2 d = s.b - s.a;
-  const double length = d.norm();
-  if (!(length > 0)) throw InputError("cohesive interface: a segment of zero length");
-  const Vec2 normal(d.y() / length, -d.x() / length);
-  const GaussRule rule = gauss_legendre(gauss_);
-  for (std::size_t k = 0; k < rule.x.size(); ++k) {
+  const SegmentGauss g = segment_gauss_points(s, gauss_);
+  if (g.points.empty()) throw InputError("cohesive interface: a segment of zero length");
+  for (const SegmentGaussPoint& q : g.points) {
     CohesivePoint p;
-    p.x = s.a + 0.5 * (1 + rule.x[k]) * d;
-    p.normal = normal;
-    p.length_weight_m = 0.5 * rule.w[k] * length;
+    p.x = q.x;
+    p.normal = g.normal;
+    p.length_weight_m = q.length_weight_m;
     p.w_hist_m = w_initial_;
     p.segment = segments_.size();
     evaluate_point(p);

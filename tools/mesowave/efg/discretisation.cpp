@@ -40,6 +40,18 @@ GaussRule gauss_legendre(int n) {
   return rule;
 }
 
+SegmentGauss segment_gauss_points(const Segment& s, int n) {
+  SegmentGauss out;
+  const Vec2 d = s.b - s.a;
+  const double length = d.norm();
+  if (!(length > 0)) return out;
+  out.normal = Vec2(d.y() / length, -d.x() / length);
+  const GaussRule rule = gauss_legendre(n);
+  for (std::size_t q = 0; q < rule.x.size(); ++q)
+    out.points.push_back({s.a + 0.5 * (1 + rule.x[q]) * d, 0.5 * rule.w[q] * length});
+  return out;
+}
+
 Discretisation rectangular_grid(const Rect& body, int nx, int ny, int gauss, std::vector<Vec2> extra_nodes,
                                 const std::function<bool(const Rect& cell)>& keep_cell) {
   if (!(std::isfinite(body.x0) && std::isfinite(body.x1) && std::isfinite(body.y0) && std::isfinite(body.y1)) ||

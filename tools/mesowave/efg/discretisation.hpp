@@ -34,6 +34,20 @@ struct GaussRule {
 };
 GaussRule gauss_legendre(int n);
 
+/// The n-point Gauss-Legendre points along a segment a -> b, as the cohesive integrals along a crack
+/// use them (static interface and dynamic faces): position, the length each point stands for (the
+/// weights sum to |b - a|), and the unit normal (d.y, -d.x) / |d|, the right of a -> b. Empty for a
+/// segment of zero length.
+struct SegmentGaussPoint {
+  Vec2 x;
+  double length_weight_m = 0;
+};
+struct SegmentGauss {
+  Vec2 normal = Vec2::Zero();
+  std::vector<SegmentGaussPoint> points;
+};
+SegmentGauss segment_gauss_points(const Segment& s, int n);
+
 /// Regular cells over `body` (nx x ny), corners as nodes, `gauss` points per direction (default 2,
 /// the paper's choice), `extra_nodes` appended. `keep_cell`, when given, drops the cells it returns
 /// false for (and the corners no kept cell has): a hole or a re-entrant corner; a notch is better a

@@ -99,16 +99,12 @@ std::int32_t DynamicCracks::make_law(double f_t_dyn_Pa) {
 }
 
 void DynamicCracks::add_face_segment(const Segment& s, std::int32_t law, std::size_t crack) {
-  const Vec2 d = s.b - s.a;
-  const double length = d.norm();
-  if (!(length > 0)) return;
-  const Vec2 normal(d.y() / length, -d.x() / length);
-  const GaussRule rule = gauss_legendre(o_.cohesive_gauss);
-  for (std::size_t q = 0; q < rule.x.size(); ++q) {
+  const SegmentGauss g = segment_gauss_points(s, o_.cohesive_gauss);
+  for (const SegmentGaussPoint& q : g.points) {
     CrackFacePoint p;
-    p.x = s.a + 0.5 * (1 + rule.x[q]) * d;
-    p.normal = normal;
-    p.length_weight_m = 0.5 * rule.w[q] * length;
+    p.x = q.x;
+    p.normal = g.normal;
+    p.length_weight_m = q.length_weight_m;
     p.law = law;
     p.w_initial_m = law >= 0 ? laws_[std::size_t(law)]->f_t_Pa() / k_ : 0.0;  // the initial secant is k (header)
     p.w_hist_m = p.w_initial_m;
