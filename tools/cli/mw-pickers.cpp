@@ -6,6 +6,7 @@
 //   mw-pickers --seeds 10 --cells cells.csv --out table.json
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/units.hpp"
 #include "mesowave/io/gnuplot.hpp"
 #include "mesowave/lab/picker_study.hpp"
 
@@ -39,7 +40,7 @@ int main(int argc, char** argv) {
 
   return tool.run(argc, argv, [&](app::Run& run) {
     grid.frequency_Hz.clear();
-    for (double f : frequency_kHz) grid.frequency_Hz.push_back(f * 1e3);
+    for (double f : frequency_kHz) grid.frequency_Hz.push_back(f * units::kHz);
     const auto study = lab::run_picker_study(grid);
     run.out() << lab::picker_bias_markdown(study.pooled) << "\nBy precursor fraction (S channel):\n\n";
     std::vector<lab::PickerBiasRow> s_rows;
