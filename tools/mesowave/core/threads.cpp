@@ -4,7 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <chrono>
 #include <fstream>
+#include <limits>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "mesowave/core/format.hpp"
 
@@ -16,15 +21,15 @@ int threads_for_work(int count, const ThreadWork& work) {
   return int(std::clamp<std::size_t>(by_work, 1, std::size_t(std::max(1, count))));
 }
 
-ThreadChoice thread_rule(int requested, int cores, double load, const ThreadWork& work) {
+ThreadChoice thread_rule(int requested, int cores, double busy, const ThreadWork& work) {
   ThreadChoice c;
   if (requested > 0) {
     c.count = requested;
     c.reason = "requested (--threads " + std::to_string(requested) + ")";
   } else {
-    c.count = std::max(1, std::min(cores, int(std::lround(double(cores) - load))));
-    c.reason = std::to_string(c.count) + " of " + std::to_string(cores) + " cores (1-minute load average " +
-               format_number(std::round(load * 100) / 100) + " before the run)";
+    c.count = std::max(1, std::min(cores, int(std::lround(double(cores) - busy))));
+    c.reason = std::to_string(c.count) + " of " + std::to_string(cores) + " cores (" +
+               format_number(std::round(busy * 100) / 100) + " other runnable threads at the start)";
   }
   const int capped = threads_for_work(c.count, work);
   if (capped < c.count) {
@@ -35,11 +40,30 @@ ThreadChoice thread_rule(int requested, int cores, double load, const ThreadWork
   return c;
 }
 
+double other_runnable_threads(int samples) {
+  std::vector<double> others;
+  for (int i = 0; i < samples; ++i) {
+    if (i > 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::ifstream in("/proc/stat");
+    std::string key;
+    long long value = 0;
+    while (in >> key) {
+      if (key == "procs_running" && (in >> value)) {
+        others.push_back(double(std::max(0LL, value - 1)));
+        break;
+      }
+      in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    }
+  }
+  if (others.empty()) return 0;
+  std::sort(others.begin(), others.end());
+  const std::size_t n = others.size();
+  return n % 2 ? others[n / 2] : (others[n / 2 - 1] + others[n / 2]) / 2;
+}
+
 ThreadChoice use_threads(int requested, const ThreadWork& work) {
-  double load = 0;
-  std::ifstream in("/proc/loadavg");
-  if (!(in >> load)) load = 0;
-  const ThreadChoice c = thread_rule(requested, omp_get_num_procs(), load, work);
+  const double busy = requested > 0 ? 0 : other_runnable_threads();
+  const ThreadChoice c = thread_rule(requested, omp_get_num_procs(), busy, work);
   omp_set_num_threads(c.count);
   return c;
 }

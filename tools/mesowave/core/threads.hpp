@@ -5,9 +5,15 @@
 // parallel region costs a few microseconds that a small model does not repay.
 // So the rule is:
 //   1. `requested` threads if > 0 (--threads N);
-//   2. else the cores the machine is not busy with: cores minus the 1-minute
-//      load average, rounded, at least 1 (measured on 2 cores at load 8: two
-//      threads ran 2-3x slower than one);
+//   2. else the cores the machine is not busy with: cores minus the threads
+//      of other work that want a core NOW, at least 1 (measured on 2 cores at
+//      load 8: two threads ran 2-3x slower than one). "Now" is the kernel's
+//      runnable count (procs_running of /proc/stat, this thread excluded), the
+//      median of a few samples 10 ms apart so that a process starting or
+//      ending at that instant does not decide. Not the 1-minute load average:
+//      it still holds the run that just finished, so in a serial pipeline every
+//      run saw load 1.00 from its predecessor and took one thread on a
+//      2-core machine (issue 17: all 26 DEM and FEM runs of make reproduce);
 //   3. at most one thread per `min_per_thread` units of work (elements,
 //      spheres), so below 2 x min_per_thread one thread is used.
 // Every solver gives the same bits for any thread count, so the rule moves
@@ -32,13 +38,17 @@ struct ThreadWork {
   std::string unit = "items";
 };
 
-/// The rule itself, for a machine with `cores` cores at 1-minute load `load`.
-ThreadChoice thread_rule(int requested, int cores, double load, const ThreadWork& work = {});
+/// The rule itself, for a machine with `cores` cores on which `busy` threads of other work are runnable.
+ThreadChoice thread_rule(int requested, int cores, double busy, const ThreadWork& work = {});
+
+/// The runnable threads other than the caller, now: the median over `samples` readings 10 ms apart of
+/// procs_running - 1 from /proc/stat (0 where it cannot be read).
+double other_runnable_threads(int samples = 5);
 
 /// At most `count` threads, and at most one per work.min_per_thread items (at least 1).
 int threads_for_work(int count, const ThreadWork& work);
 
-/// The rule on this machine (OpenMP's core count, /proc/loadavg), applied:
+/// The rule on this machine (OpenMP's core count, other_runnable_threads), applied:
 /// OpenMP's next parallel regions use the chosen count.
 ThreadChoice use_threads(int requested, const ThreadWork& work = {});
 
