@@ -28,7 +28,7 @@ struct BlastCommandLine {
   std::string tensile_dif = "ceb-fip-1990";
   int strain_rate = 1;
   double crack_speed_limit_m_s = 500;  ///< 0: no limit (a contrast run)
-  double segment_mm = 0, min_crack_spacing_mm = 0, min_crack_radius_mm = 0, penalty_factor = 10;
+  double segment_mm = 0, min_crack_spacing_mm = 0, min_crack_radius_mm = 0, penalty_factor = 1;
   HugoniotParameters hugoniot;
   int unloading = 1;
   double charge_width_mm = 30, charge_thickness_mm = 40, explosive_density_kg_m3 = 1630, detonation_velocity_m_s = 6930;
