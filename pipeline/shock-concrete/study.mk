@@ -219,7 +219,7 @@ SC_SLAB_ARGS := --from $(SC_SLAB) --from $(SC_HUGONIOT) --duration-us 60 --threa
 $(SC_OUT)/slab.json $(SC_OUT)/slab-cracks.csv $(SC_OUT)/slab-energy.csv $(SC_OUT)/slab.png &: $(SC_SLAB) $(SC_HUGONIOT) $(BIN)/mw-efg
 	@mkdir -p $(@D)
 	$(BIN)/mw-efg blast $(SC_SLAB_ARGS) --spacing-mm $(SC_SLAB_MM) --cracks $(SC_OUT)/slab-cracks.csv \
-	  --energy $(SC_OUT)/slab-energy.csv --plot $(SC_OUT)/slab.png --snapshots $(SC_OUT)/slab-vtk --out $(SC_OUT)/slab.json > /dev/null
+	  --energy $(SC_OUT)/slab-energy.csv --plot $(SC_OUT)/slab.png --snapshots $(SC_OUT)/slab-vtk --snapshot-stride 2 --out $(SC_OUT)/slab.json > /dev/null
 define SC_SLAB_RUN
 $(SC_OUT)/slab-$1mm.json: $(SC_SLAB) $(SC_HUGONIOT) $(BIN)/mw-efg
 	@mkdir -p $$(@D)
