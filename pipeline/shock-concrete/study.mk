@@ -15,14 +15,20 @@
 #   Y-function (without Eq. (27), as the paper's test; and with it), against the method of
 #   characteristics: where and when the shock forms, its speed against the jump condition, the
 #   stress profiles at several times, three node spacings.
-# The blasted slab (Section 4.3, Fig. 12) is not built: cracks in dynamics do not exist yet.
+# - the blasted slab (Section 4.3, Fig. 12): `mw-efg blast`, a line charge on a 400 x 100 mm plain
+#   concrete slab in plane strain (lab-data/shock-concrete/blast-slab.toml), every part of the paper's
+#   list at once; the crack pattern over the compacted zone, and a node-spacing series (crack count,
+#   longest crack, compacted depth, wall time).
 #
 # Sizes (QUICK=0; the runs' own wall times on the 2-core development machine at load 9-11, one run
 # after the other; docs/efg.md, "The shock-concrete study"): the beams on the 5 mm grid (1932 nodes,
 # 23-26 s a law for the complete curve; the 2.5 mm grid would take about 10 min a law), the linear
 # strips at 10, 5 and 2.5 mm (13 s in all), the shock strips at 2, 1 and 0.5 mm (116 s in all, 100 s
 # of it the two 0.5 mm runs). The quick tree: the 10 mm beam (about 1.5 s a law), strips at 20 and
-# 10 mm, shock strips at 4 and 2 mm - about 4 s of tool time.
+# 10 mm, shock strips at 4 and 2 mm - about 4 s of tool time. The slab (one thread, load 9-11): 0.6 s at
+# 20 mm, 1.3 s at 15 mm, 15-31 s at 10 mm, 99 s at 7.5 mm (76 s of CPU; every crack change re-evaluates all shape
+# functions and runs Lanczos, so the cost follows the number of changes more than the steps); the quick
+# tree runs 20 and 15 mm (its figure 15 mm), the full one 15, 10 and 7.5 mm (its figure 7.5 mm).
 
 # Study prefix: SC (make variables SC_*, functions sc_*; scripts/new-study renames them).
 PIPELINE_GOALS += shock-concrete-summary
@@ -43,6 +49,8 @@ SC_LINEAR_SPACINGS := 20 10
 SC_LINEAR_MM := 10
 SC_SHOCK_SPACINGS := 4 2
 SC_SHOCK_MM := 2
+SC_SLAB_MM := 15
+SC_SLAB_SPACINGS := 20 15
 else
 SC_BEAM_MM := 5
 SC_BEAM_STEPS := --steps 60 --step-ratio 1.07
@@ -50,6 +58,8 @@ SC_LINEAR_SPACINGS := 10 5 2.5
 SC_LINEAR_MM := 5
 SC_SHOCK_SPACINGS := 2 1 0.5
 SC_SHOCK_MM := 1
+SC_SLAB_MM := 7.5
+SC_SLAB_SPACINGS := 15 10 7.5
 endif
 
 # --- Three-point bending: the complete curve (ligament interface) to 1e-4 of the peak, the Q4 FEM
@@ -201,17 +211,43 @@ endef
 $(eval $(call SC_PROFILE_FIGURE,quadratic,Smooth law p = M s (1 + beta s)))
 $(eval $(call SC_PROFILE_FIGURE,hugoniot,Y-function without Eq. (27)))
 
-SC_TABLES := bending strip-linear strip-fem shock
-SC_FIGURES := load-deflection.png strip-long.png strip-short.png strip-hann.png profiles-quadratic.png profiles-hugoniot.png
+# --- The blasted slab: 60 us (the wave crosses the 100 mm thickness in 33 us and returns as tension
+# from the free bottom), one thread (the runs' wall times are a column). The study's spacing gets the
+# crack and energy CSVs, the figure and the ParaView series; the others only their summaries.
+SC_SLAB := $(SC_LAB)/blast-slab.toml
+SC_SLAB_ARGS := --from $(SC_SLAB) --from $(SC_HUGONIOT) --duration-us 60 --threads 1
+$(SC_OUT)/slab.json $(SC_OUT)/slab-cracks.csv $(SC_OUT)/slab-energy.csv $(SC_OUT)/slab.png &: $(SC_SLAB) $(SC_HUGONIOT) $(BIN)/mw-efg
+	@mkdir -p $(@D)
+	$(BIN)/mw-efg blast $(SC_SLAB_ARGS) --spacing-mm $(SC_SLAB_MM) --cracks $(SC_OUT)/slab-cracks.csv \
+	  --energy $(SC_OUT)/slab-energy.csv --plot $(SC_OUT)/slab.png --snapshots $(SC_OUT)/slab-vtk --snapshot-stride 2 --out $(SC_OUT)/slab.json > /dev/null
+define SC_SLAB_RUN
+$(SC_OUT)/slab-$1mm.json: $(SC_SLAB) $(SC_HUGONIOT) $(BIN)/mw-efg
+	@mkdir -p $$(@D)
+	$(BIN)/mw-efg blast $(SC_SLAB_ARGS) --spacing-mm $1 --out $$@ > /dev/null
+endef
+$(foreach h,$(SC_SLAB_SPACINGS),$(eval $(call SC_SLAB_RUN,$h)))
+
+$(SC_OUT)/slab-spacing.csv: $(foreach h,$(SC_SLAB_SPACINGS),$(SC_OUT)/slab-$(h)mm.json) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name spacing_mm $(foreach h,$(SC_SLAB_SPACINGS),--row $h=$(SC_OUT)/slab-$(h)mm.json) \
+	  --column nodes --column gauss_points --column crack_count --column longest_crack_mm --column total_crack_length_mm \
+	  --column max_crack_speed_m_s --column refused_changes --column compacted_depth_mm=compacted.depth_mm \
+	  --column compacted_width_mm=compacted.width_mm --column max_compression_eps_v=compacted.max_compression_eps_v \
+	  --column balance_over_W_ext=energy.balance_over_W_ext --column energy_jump_J=energy.energy_jump_J \
+	  --column external_work_J=energy.external_work_J --column run_drift=energy.run_drift --column steps \
+	  --column wall_s=cost.wall_s \
+	  --round longest_crack_mm=1 --round total_crack_length_mm=1 --round max_crack_speed_m_s=1 --round compacted_depth_mm=1 \
+	  --round compacted_width_mm=1 --round max_compression_eps_v=4 --round balance_over_W_ext=3 --round energy_jump_J=0 \
+	  --round external_work_J=0 --round wall_s=2 --csv $@ > /dev/null
+
+SC_TABLES := bending strip-linear strip-fem shock slab-spacing
+SC_FIGURES := load-deflection.png strip-long.png strip-short.png strip-hann.png profiles-quadratic.png profiles-hugoniot.png slab.png
 
 .PHONY: shock-concrete shock-concrete-summary
 shock-concrete: $(foreach t,$(SC_TABLES),$(SC_OUT)/$t.csv) $(addprefix $(SC_OUT)/,$(SC_FIGURES)) \
-    $(SC_OUT)/fronts-quadratic.csv $(SC_OUT)/fronts-hugoniot.csv
+    $(SC_OUT)/fronts-quadratic.csv $(SC_OUT)/fronts-hugoniot.csv $(SC_OUT)/slab.json
 
 # Printing what is already made runs no tool.
 shock-concrete-summary: shock-concrete
 	@echo
-	@echo "== Shock concrete: three-point bending, linear strip, shock steepening ($(SC_OUT)) =="
+	@echo "== Shock concrete: three-point bending, linear strip, shock steepening, blasted slab ($(SC_OUT)) =="
 	@$(foreach t,$(SC_TABLES),echo; echo "$t:"; grep -v '^#' $(SC_OUT)/$t.csv | column -s, -t;)
-	@echo
-	@cat $(SC_NOTES)/slab-note.txt

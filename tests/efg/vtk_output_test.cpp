@@ -113,3 +113,25 @@ TEST(VtkOutput, MismatchedArraysAreRefused) {
   c.damage = {0.1, 0.2};
   EXPECT_THROW(efg::write_crack_vtp(dir / "c.vtp", c, 0.0), std::invalid_argument);
 }
+
+// The third part (the blasted slab's Gauss points): scalar arrays read back by VTK with their range; a
+// series that gives points at one step and not at another is refused.
+TEST(VtkOutput, PointPartIsReadBackByVtk) {
+  test::TempDir dir;
+  efg::VtkSeries series(dir.path(), "slab");
+  efg::PointCloudSnapshot p;
+  p.positions_m = {{0.0, 0.0}, {0.1, 0.05}, {0.2, 0.1}};
+  p.scalars = {{"min_eps_v", {-0.02, -0.001, 0.0}}, {"compacted", {1, 0, 0}}};
+  series.add(2e-5, nodes(1.0), efg::CrackSnapshot{}, &p);
+  const json all = check_vtk(series.finish());
+  ASSERT_EQ(all.size(), 1u);
+  const json& sets = all[0]["datasets"];
+  ASSERT_EQ(sets.size(), 3u);
+  EXPECT_EQ(sets[2]["part"], 2);
+  EXPECT_EQ(sets[2]["points"], 3);
+  EXPECT_DOUBLE_EQ(sets[2]["point_data"]["min_eps_v"]["range"][0].get<double>(), -0.02);
+  EXPECT_DOUBLE_EQ(sets[2]["point_data"]["compacted"]["range"][1].get<double>(), 1.0);
+  EXPECT_THROW(series.add(3e-5, nodes(1.0), efg::CrackSnapshot{}), std::invalid_argument);
+  p.scalars[0].second.pop_back();
+  EXPECT_THROW(efg::write_point_vtp(dir / "p.vtp", p, 0.0), std::invalid_argument);
+}

@@ -1,11 +1,13 @@
 // mw-efg - the element-free Galerkin solver of the shock-wave concrete paper (Larcher and
 // Stempniewski, Sections 2, 3.1 and 4.1): the elastic validation on Timoshenko & Goodier's
 // cantilever (against the closed form and the Q4 FEM) and the static three-point bending test with
-// a cohesive crack; the explicit dynamics (Sections 2.5, 3.2) on a roller strip under a pressure pulse.
+// a cohesive crack; the explicit dynamics (Sections 2.5, 3.2) on a roller strip under a pressure pulse;
+// the contact detonation of a slab with growing cracks (Section 4.3).
 //
 //   mw-efg cantilever --spacing-m 1 --refinements 2 --method both --table cantilever.csv
 //   mw-efg bending --from lab-data/shock-concrete/three-point-bending.toml --law exponential --curve ld.csv
 //   mw-efg wave --length-mm 500 --pulse triangular --peak-MPa 100 --rise-us 10 --fall-us 10 --history h.csv
+//   mw-efg blast --spacing-mm 5 --cracks c.csv --energy e.csv --plot slab.png --snapshots vtk --out blast.json
 #include <cmath>
 #include <optional>
 
@@ -13,6 +15,7 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/threads.hpp"
 #include "mesowave/efg/bending_report.hpp"
+#include "mesowave/efg/blast_command.hpp"
 #include "mesowave/efg/cantilever_command.hpp"
 #include "mesowave/efg/wave_report.hpp"
 #include "mesowave/io/csv.hpp"
@@ -37,7 +40,10 @@ int main(int argc, char** argv) {
       "plane-strain strip with rollers under a triangular, Friedlander or Hann-burst pressure on x = 0; sensor "
       "histories, the peak speed against c_p = sqrt(M/rho), the stencil's dispersion, the energy balance, ParaView "
       "snapshots; --fem-reference: mw-fem on the same bar; with --law quadratic | hugoniot (the Y-function, Section "
-      "4.2) the front against the method of characteristics.\n\n"
+      "4.2) the front against the method of characteristics.\n"
+      "  blast       the contact detonation of a plain concrete slab (Section 4.3), plane strain (a line charge): "
+      "discrete cracks with the spacing, radius and 500 m/s speed limits, the Y-function with unloading, the strain "
+      "rate effect, contact of closing faces; crack events, the compacted zone, energies, ParaView files, a figure.\n\n"
       "  mw-efg cantilever --spacing-m 2 --refinements 2 --method both --table cantilever.csv --out cantilever.json\n"
       "  mw-efg cantilever --spacing-m 1 --basis quadratic --weight cubic-spline --support-scale 3.5 --gauss 4\n"
       "  mw-efg cantilever --spacing-m 1 --snapshots vtk   (ParaView: open vtk/cantilever.pvd)\n"
@@ -45,7 +51,8 @@ int main(int argc, char** argv) {
       "--curve ld.csv --plot ld.png --crack-path crack.csv --snapshots vtk --out bending.json\n"
       "  mw-efg wave --spacing-mm 2.5 --pulse friedlander --peak-MPa 50 --positive-us 20 --history h.csv --snapshots vtk\n"
       "  mw-efg wave --law hugoniot --unloading 0 --length-mm 300 --width-mm 12 --spacing-mm 1 --peak-MPa 2000 "
-      "--rise-us 20 --fall-us 20 --profiles p.csv --profile-us 20 --profile-us 60 --out shock.json");
+      "--rise-us 20 --fall-us 20 --profiles p.csv --profile-us 20 --profile-us 60 --out shock.json\n"
+      "  mw-efg blast --from lab-data/shock-concrete/blast-slab.toml --spacing-mm 5 --cracks c.csv --plot slab.png --out blast.json");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
   fs::path out, table, snapshots, curve, plot, crack_path;
@@ -71,11 +78,19 @@ int main(int argc, char** argv) {
   auto* wave = cli.add_subcommand("wave", "Explicit dynamics: a pressure pulse along a roller strip");
   efg::add_wave_options(*wave, wave_cl);
   app::add_out_option(*wave, wave_cl.out);
+  efg::BlastCommandLine blast_cl;  // blast
+  auto* blast = cli.add_subcommand("blast", "Contact detonation of a concrete slab: cracks, compaction (Section 4.3)");
+  efg::add_blast_options(*blast, blast_cl);
+  app::add_out_option(*blast, blast_cl.out);
 
   return tool.run(argc, argv, [&](app::Run& run) {
     // same bits for any count (efg/elastic_model.hpp, efg/explicit_dynamics.hpp)
-    const ThreadChoice thread_choice = use_threads(wave->parsed() ? wave_cl.threads : cant->parsed() ? cant_cl.threads : threads);
+    const ThreadChoice thread_choice = use_threads(wave->parsed()    ? wave_cl.threads
+                                                   : cant->parsed()  ? cant_cl.threads
+                                                   : blast->parsed() ? blast_cl.threads
+                                                                     : threads);
     const nlohmann::ordered_json thread_json = {{"count", thread_choice.count}, {"reason", thread_choice.reason}};
+    if (blast->parsed()) return efg::run_blast_command(blast_cl, run, thread_json);
     if (wave->parsed()) {
       const auto w = efg::run_wave_command(wave_cl);
       const auto& o = w.outputs;
@@ -122,24 +137,6 @@ int main(int argc, char** argv) {
       run.emit_json(summary, out);
       return;
     }
-    if (cant->parsed()) {
-      const auto& c = cant_cl;
-      const auto study = efg::run_cantilever_study(c.beam, c.resolve(), c.method != "fem", c.method != "efg", c.refinements);
-      for (const auto& r : study.runs) {
-        const std::string key = (r.method == "EFG" ? "efg_" : "fem_") + std::to_string(r.nodes) + "_nodes_";
-        run.metric(key + "displacement_error", r.errors.displacement_L2, "");
-        run.metric(key + "energy_error", r.errors.energy, "");
-        run.metric(key + "wall", r.wall_s, "s");
-      }
-      if (!c.table.empty()) run.write_text(c.table, io::to_csv(study.table_header, study.table_rows));
-      if (!c.snapshots.empty()) {
-        efg::VtkSeries series(c.snapshots, "cantilever", [&](const fs::path& p) { return run.output(p); });
-        series.add(0.0, study.runs.back().snapshot, {});
-        series.finish();
-      }
-      auto summary = study.summary;
-      summary["threads"] = thread_json;
-      run.emit_json(summary, c.out);
-    }
+    if (cant->parsed()) efg::run_cantilever_command(cant_cl, run, thread_json);
   });
 }

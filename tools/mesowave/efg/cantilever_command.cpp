@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "mesowave/core/check.hpp"
+#include "mesowave/efg/vtk_output.hpp"
+#include "mesowave/io/csv.hpp"
 
 namespace mesowave::efg {
 
@@ -45,6 +47,25 @@ void add_cantilever_options(CLI::App& cant, CantileverCommandLine& v) {
   cant.add_option("--table", v.table, "Runs as CSV: method, cells, nodes, Gauss points, errors, wall time, memory");
   cant.add_option("--snapshots", v.snapshots, "Folder for ParaView files of the last (finest) run: cantilever.pvd");
   cant.add_option("--threads", v.threads, "Threads (0: the cores the machine is not busy with, core/threads.hpp)");
+}
+
+void run_cantilever_command(const CantileverCommandLine& c, app::Run& run, const nlohmann::ordered_json& threads) {
+  const auto study = run_cantilever_study(c.beam, c.resolve(), c.method != "fem", c.method != "efg", c.refinements);
+  for (const auto& r : study.runs) {
+    const std::string key = (r.method == "EFG" ? "efg_" : "fem_") + std::to_string(r.nodes) + "_nodes_";
+    run.metric(key + "displacement_error", r.errors.displacement_L2, "");
+    run.metric(key + "energy_error", r.errors.energy, "");
+    run.metric(key + "wall", r.wall_s, "s");
+  }
+  if (!c.table.empty()) run.write_text(c.table, io::to_csv(study.table_header, study.table_rows));
+  if (!c.snapshots.empty()) {
+    VtkSeries series(c.snapshots, "cantilever", [&](const std::filesystem::path& p) { return run.output(p); });
+    series.add(0.0, study.runs.back().snapshot, {});
+    series.finish();
+  }
+  auto summary = study.summary;
+  summary["threads"] = threads;
+  run.emit_json(summary, c.out);
 }
 
 }  // namespace mesowave::efg

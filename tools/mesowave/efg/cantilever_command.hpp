@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "mesowave/app/tool.hpp"
 #include "mesowave/efg/cantilever.hpp"
 
 namespace mesowave::efg {
@@ -23,5 +26,8 @@ struct CantileverCommandLine {
   CantileverOptions resolve() const;
 };
 void add_cantilever_options(CLI::App& app, CantileverCommandLine& values);
+/// The subcommand (moved out of mw-efg's main): the study, its metrics, --table, --snapshots (the
+/// finest run), the summary with `threads` (the tool's thread choice).
+void run_cantilever_command(const CantileverCommandLine& command_line, app::Run& run, const nlohmann::ordered_json& threads);
 
 }  // namespace mesowave::efg

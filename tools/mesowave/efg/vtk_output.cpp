@@ -70,15 +70,38 @@ void write_crack_vtp(const std::filesystem::path& path, const CrackSnapshot& cra
   io::write_vtp(path, d);
 }
 
+void write_point_vtp(const std::filesystem::path& path, const PointCloudSnapshot& points, double step_time) {
+  const std::size_t n = points.positions_m.size();
+  io::VtkPolyData d;
+  d.has_time = true;
+  d.time_s = step_time;
+  for (std::size_t k = 0; k < n; ++k) {
+    d.points.push_back({points.positions_m[k].x(), points.positions_m[k].y(), 0.0});
+    d.verts.push_back(std::int64_t(k));
+  }
+  for (const auto& [name, values] : points.scalars) {
+    if (values.size() != n)
+      throw std::invalid_argument("point snapshot: " + std::to_string(n) + " points, " + std::to_string(values.size()) +
+                                  " values of " + name);
+    d.point_data.push_back({name, 1, values, false, {}});
+  }
+  if (!points.scalars.empty()) d.active_scalars = points.scalars.front().first;
+  io::write_vtp(path, d);
+}
+
 VtkSeries::VtkSeries(std::filesystem::path folder, std::string stem, OutputPath output)
     : folder_(std::move(folder)), stem_(std::move(stem)), output_(std::move(output)) {
   if (!output_) output_ = [](const std::filesystem::path& p) { return p; };
 }
 
-void VtkSeries::add(double step_time, const NodeSnapshot& nodes, const CrackSnapshot& cracks) {
+void VtkSeries::add(double step_time, const NodeSnapshot& nodes, const CrackSnapshot& cracks, const PointCloudSnapshot* points) {
   const std::string k = std::to_string(steps_.size());
+  if (!steps_.empty() && points_ != (points != nullptr))
+    throw std::invalid_argument("VTK series: point snapshots at some steps but not at others");
+  points_ = points != nullptr;
   write_node_vtp(output_(folder_ / (stem_ + "-nodes-" + k + ".vtp")), nodes, step_time);
   write_crack_vtp(output_(folder_ / (stem_ + "-cracks-" + k + ".vtp")), cracks, step_time);
+  if (points) write_point_vtp(output_(folder_ / (stem_ + "-points-" + k + ".vtp")), *points, step_time);
   steps_.push_back(step_time);
 }
 
@@ -87,6 +110,7 @@ std::filesystem::path VtkSeries::finish() const {
   for (std::size_t k = 0; k < steps_.size(); ++k) {
     entries.push_back({steps_[k], 0, stem_ + "-nodes-" + std::to_string(k) + ".vtp"});
     entries.push_back({steps_[k], 1, stem_ + "-cracks-" + std::to_string(k) + ".vtp"});
+    if (points_) entries.push_back({steps_[k], 2, stem_ + "-points-" + std::to_string(k) + ".vtp"});
   }
   const auto pvd = folder_ / (stem_ + ".pvd");
   io::write_pvd(output_(pvd), entries);

@@ -11,12 +11,15 @@
 //    [MPa], paper Eqs. (19)-(23)) and "damage" (the share of f_t lost, 0 to 1: cohesive_crack.hpp).
 //    These two are in the units the papers plot the softening curve in (w ~ 0.01-0.1 mm,
 //    sigma ~ 1 MPa), their names saying so; the nodes' arrays stay SI.
+//  - points (optional, a third part): any scattered points (e.g. the Gauss points) with named scalar
+//    arrays as point data (the blasted slab's volumetric strains, efg/blast_slab).
 // Stresses are sampled at the nodes: an MLS approximation is smooth there (no averaging needed); a
 // Q4 mesh's nodal stresses are the element average (fem/plane_static).
 #include <Eigen/Core>
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mesowave::efg {
@@ -35,9 +38,15 @@ struct CrackSnapshot {
   std::size_t segment_count() const;
 };
 
+struct PointCloudSnapshot {
+  std::vector<Eigen::Vector2d> positions_m;
+  std::vector<std::pair<std::string, std::vector<double>>> scalars;  ///< (name, one value per point)
+};
+
 /// std::invalid_argument when the per-node or per-segment arrays do not match the counts.
 void write_node_vtp(const std::filesystem::path& path, const NodeSnapshot& nodes, double step_time);
 void write_crack_vtp(const std::filesystem::path& path, const CrackSnapshot& cracks, double step_time);
+void write_point_vtp(const std::filesystem::path& path, const PointCloudSnapshot& points, double step_time);
 
 /// A series of load steps under one folder: step k writes <stem>-nodes-<k>.vtp and
 /// <stem>-cracks-<k>.vtp, finish() writes <stem>.pvd. `step_time` is what ParaView's time slider
@@ -48,7 +57,9 @@ class VtkSeries {
  public:
   using OutputPath = std::function<std::filesystem::path(const std::filesystem::path&)>;
   VtkSeries(std::filesystem::path folder, std::string stem, OutputPath output = {});
-  void add(double step_time, const NodeSnapshot& nodes, const CrackSnapshot& cracks);
+  /// With `points`, <stem>-points-<k>.vtp as part 2 (give it at every step or at none).
+  void add(double step_time, const NodeSnapshot& nodes, const CrackSnapshot& cracks,
+           const PointCloudSnapshot* points = nullptr);
   /// Writes the .pvd (final path returned).
   std::filesystem::path finish() const;
   std::size_t steps() const { return steps_.size(); }
@@ -58,6 +69,7 @@ class VtkSeries {
   std::string stem_;
   OutputPath output_;
   std::vector<double> steps_;
+  bool points_ = false;
 };
 
 }  // namespace mesowave::efg
