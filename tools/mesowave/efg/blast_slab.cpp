@@ -211,9 +211,9 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
   r.points = disc.points.size();
   r.penalty_Pa_per_m = dc.penalty_Pa_per_m();
   r.segment_length_m = dc.segment_length_m();
-  r.min_spacing_m = o.cracks.min_crack_spacing_m > 0 ? o.cracks.min_crack_spacing_m : 2 * r.segment_length_m;
-  r.min_radius_m = o.cracks.min_crack_radius_m > 0 ? o.cracks.min_crack_radius_m : r.segment_length_m;
-  r.max_turn_rad = 2 * std::asin(std::min(1.0, r.segment_length_m / (2 * r.min_radius_m)));
+  r.min_spacing_m = dc.min_crack_spacing_m();
+  r.min_radius_m = dc.min_crack_radius_m();
+  r.max_turn_rad = dc.max_turn_rad();
   r.setup_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   DynamicsOptions d;

@@ -74,8 +74,8 @@ DynamicCracks::DynamicCracks(ElasticModel& model, CrackSet& cracks, DynamicCrack
   a_ = o_.segment_length_m > 0 ? o_.segment_length_m : h;
   k_ = o_.penalty_factor * model.material().E_Pa / a_;
   spacing_min_ = o_.min_crack_spacing_m > 0 ? o_.min_crack_spacing_m : 2 * a_;
-  const double R = o_.min_crack_radius_m > 0 ? o_.min_crack_radius_m : a_;
-  max_turn_rad_ = 2 * std::asin(std::min(1.0, a_ / (2 * R)));
+  radius_min_ = o_.min_crack_radius_m > 0 ? o_.min_crack_radius_m : a_;
+  max_turn_rad_ = 2 * std::asin(std::min(1.0, a_ / (2 * radius_min_)));
   offset_ = o_.face_offset_fraction * h;
   overshoot_ = 0.5 * h;
   body_ = {INFINITY, INFINITY, -INFINITY, -INFINITY};

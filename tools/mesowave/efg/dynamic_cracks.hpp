@@ -38,7 +38,8 @@
 // the line on each side, as in the static CohesiveInterface; sliding is free (mode I, as the paper's).
 // Initial secant and contact share one penalty k = penalty_factor E / a [Pa/m] (a the segment length):
 // the new face starts tied by k (w_initial = f_t,dyn / k, cohesive_law.hpp), and closed faces (w < 0)
-// push back with k w. Why k = E / a (penalty_factor 1, the default): it adds the compliance 1 / k =
+// push back with k w. Why k = E / a (penalty_factor 1, what mw-efg blast passes; the options struct
+// defaults to 10, which the spall tests were measured with): it adds the compliance 1 / k =
 // a / E per crack, that of a layer one segment thick (closing faces interpenetrate by that layer's
 // elastic shortening), and a stiffer k buys little accuracy for a smaller step - the run recomputes the
 // stable step with the faces' K (stiffness_bound: every point at k) whenever a crack changed, and on the
@@ -181,6 +182,10 @@ class DynamicCracks final : public DynamicsCracks {
   const CrackSet& cracks() const { return *cracks_; }
   double penalty_Pa_per_m() const { return k_; }
   double segment_length_m() const { return a_; }
+  /// The limits in force (the options' values, or their defaults from a when 0).
+  double min_crack_spacing_m() const { return spacing_min_; }
+  double min_crack_radius_m() const { return radius_min_; }
+  double max_turn_rad() const { return max_turn_rad_; }
 
  private:
   struct Tip {
@@ -206,7 +211,7 @@ class DynamicCracks final : public DynamicsCracks {
   ElasticModel* model_;
   CrackSet* cracks_;
   DynamicCrackOptions o_;
-  double a_ = 0, k_ = 0, spacing_min_ = 0, max_turn_rad_ = 0, offset_ = 0, overshoot_ = 0;
+  double a_ = 0, k_ = 0, spacing_min_ = 0, radius_min_ = 0, max_turn_rad_ = 0, offset_ = 0, overshoot_ = 0;
   Rect body_{};
   std::vector<std::shared_ptr<const CohesiveLaw>> laws_;
   std::vector<CrackFacePoint> points_;
