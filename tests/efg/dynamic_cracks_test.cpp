@@ -131,8 +131,9 @@ TEST(DynamicCracks, SpallFormsWhereTheNetTensionFirstReachesTheStrength) {
   const double spacing = 2 * s.h - 0.8 * s.h;
   for (std::size_t i = 0; i < r.events.size(); ++i)
     for (std::size_t j = i + 1; j < r.events.size(); ++j)
-      if (r.events[i].initiation && r.events[j].initiation)
+      if (r.events[i].initiation && r.events[j].initiation) {
         EXPECT_GE((r.events[i].from - r.events[j].from).norm(), spacing * (1 - 1e-9)) << i << " " << j;
+      }
   EXPECT_GT(r.cracks, 1u);  // the tension keeps growing inward: more spall planes (cohesive faces carry f_t)
 }
 
