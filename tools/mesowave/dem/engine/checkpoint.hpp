@@ -52,6 +52,7 @@ struct CheckpointOptions {
   /// SIGTERM arrived, before the run's progress report stops it). One is written per request.
   std::function<bool()> requested;
   CheckpointIdentity identity;
+  std::function<void(std::int64_t steps_done)> on_written;  ///< after each checkpoint (optional)
 };
 
 /// Writes a checkpoint file: the identity, then `body` fills the root group.

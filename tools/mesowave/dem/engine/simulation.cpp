@@ -264,7 +264,10 @@ RunReport Simulation::run() {
     if (!checkpoint.file.empty()) {
       const bool due = checkpoint.every_steps > 0 && loop_.done % checkpoint.every_steps == 0;
       const bool asked = !request_served && checkpoint.requested && checkpoint.requested();
-      if (due || asked) save_checkpoint(checkpoint.file, checkpoint.identity);
+      if (due || asked) {
+        save_checkpoint(checkpoint.file, checkpoint.identity);
+        if (checkpoint.on_written) checkpoint.on_written(loop_.done);
+      }
       request_served = request_served || asked;
     }
     if (options_.on_progress) options_.on_progress(loop_.done, steps_);
