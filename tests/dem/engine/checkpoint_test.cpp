@@ -173,7 +173,11 @@ TEST(Checkpoint, FullLawCompressionToFailureRestartsToTheSameBits) {
   const RunReport whole = whole_sim.run();
   ASSERT_EQ(whole.choice.model, "full");
   const auto& law = dynamic_cast<const CohesiveFrictionalContact&>(dynamic_cast<const SphereSystem&>(whole_sim.model()).kernel());
-  const std::int64_t k = whole.steps / 2;
+  // Restart between the peak and the stop: the stop rule must remember the peak.
+  ASSERT_TRUE(whole.test);
+  const auto peak_step = std::int64_t(std::llround(whole.test->time_at_peak_s / scene.dt_s));
+  const std::int64_t k = (peak_step + whole.steps) / 2;
+  EXPECT_GT(k, peak_step + 5);
   std::printf("%lld steps (%s), %zu of %zu bonds broken, %zu contact detections, restart at %lld\n",
               (long long)whole.steps, whole.stop_reason.c_str(), whole.broken_bonds, whole.bonds,
               law.detection_passes(), (long long)k);
