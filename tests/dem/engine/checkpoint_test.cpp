@@ -22,72 +22,7 @@ using namespace mesowave::dem::testing;
 
 namespace {
 
-constexpr double kA = 2.0e-3;  // FCC cell
-
-// A compression to failure of an FCC block between walls on z (the shipped
-// cube-compression scene's sensors and [test], made fast): the upper wall at
-// 0.5 m/s crushes the block within a few thousand steps, so bonds break, contacts
-// are detected and the stop rule watches the peak.
-const char* kCompression = R"(
-[packing]
-file = "unused.h5"
-[material]
-E_dem_GPa = 23.31
-nu_dem = 0.32
-friction_angle_deg = 18.0
-T_MPa = 24.4
-C_MPa = 24.4
-damping = 0.08
-bond_factor = 1.1
-[time]
-dt_ns = 40
-duration_ms = 0.3
-[model]
-choice = "full"
-[[actuator]]
-name = "bottom"
-kind = "wall"
-face = "z-"
-[[actuator]]
-name = "top"
-kind = "wall"
-face = "z+"
-velocity_mm_s = 500.0
-ramp_us = 20
-[[sensor]]
-name = "P_top"
-quantity = "force"
-actuator = "top"
-sample_interval_ns = 200
-[[sensor]]
-name = "P_bottom"
-quantity = "force"
-actuator = "bottom"
-sample_interval_ns = 200
-[[sensor]]
-name = "V"
-quantity = "strain"
-component = "z"
-face = "x-"
-centre_rel = [0.0, 0.5, 0.5]
-gauge_rel = 0.5
-patch_mm = [3.0, 3.0]
-sample_interval_ns = 200
-[[sensor]]
-name = "broken"
-quantity = "broken_bonds"
-sample_interval_ns = 200
-[test]
-kind = "compression"
-load = ["P_top", "P_bottom"]
-axial = ["V"]
-broken_bonds = "broken"
-stop_drop_pct = 50.0
-stop_armed_above_MPa = 1.0
-inertial_number_bound = 0.0
-)";
-
-Packing block(int cells) { return fcc_packing(cells, kA, 0.66e-3, 0.74e-3, 0.02, 7, 2290); }
+constexpr double kA = 2.0e-3;  // FCC cell of crushing_block (test_packings.hpp)
 
 // A small-amplitude wave: a burst on x-, sensors on the opposite faces.
 Scene wave_scene(int cells, double duration_s) {
@@ -165,8 +100,8 @@ void expect_refusal(const std::function<void()>& call, const std::string& words)
 }  // namespace
 
 TEST(Checkpoint, FullLawCompressionToFailureRestartsToTheSameBits) {
-  const Scene scene = parse_scene(kCompression, "compression");
-  const Packing packing = block(3);  // 108 spheres
+  const Scene scene = parse_scene(crushing_scene_toml("unused.h5"), "compression");
+  const Packing packing = crushing_block(3);  // 108 spheres
   test::TempDir dir;
   SimulationOptions o;
   Simulation whole_sim(scene, packing, o);
@@ -200,9 +135,9 @@ TEST(Checkpoint, FullLawCompressionToFailureRestartsToTheSameBits) {
 }
 
 TEST(Checkpoint, MomentLawRestartsToTheSameBits) {
-  Scene scene = parse_scene(kCompression, "compression");
+  Scene scene = parse_scene(crushing_scene_toml("unused.h5"), "compression");
   scene.contact_law = "cohesive_moment";
-  const Packing packing = block(3);
+  const Packing packing = crushing_block(3);
   test::TempDir dir;
   const RunReport whole = Simulation(scene, packing).run();
   EXPECT_GT(whole.broken_bonds, 0u);
@@ -213,7 +148,7 @@ TEST(Checkpoint, MomentLawRestartsToTheSameBits) {
 
 TEST(Checkpoint, LinearNetworkWaveRestartsToTheSameBits) {
   const Scene scene = wave_scene(4, 20e-6);
-  const Packing packing = block(4);  // 256 spheres
+  const Packing packing = crushing_block(4);  // 256 spheres
   test::TempDir dir;
   SimulationOptions o;
   o.model = "linear";
@@ -256,7 +191,7 @@ TEST(Checkpoint, ARestartOnTwoThreadsGivesTheOneThreadBits) {
 
 TEST(Checkpoint, ACheckpointOfAnotherRunIsRefused) {
   const Scene scene = wave_scene(3, 5e-6);
-  const Packing packing = block(3);
+  const Packing packing = crushing_block(3);
   test::TempDir dir;
   run_to(scene, packing, "full", 10, dir / "c.h5");
   Simulation sim(scene, packing, [] {
@@ -274,7 +209,7 @@ TEST(Checkpoint, ACheckpointOfAnotherRunIsRefused) {
   other.options["--dt-ns"] = 20.0;
   expect_refusal([&] { sim.restore(dir / "c.h5", other); }, "is of a run with --dt-ns 0.0, this run has 20.0");
   // The same identity on another packing (hashes bypassed): its state does not fit.
-  Simulation bigger(scene, block(4), [] {
+  Simulation bigger(scene, crushing_block(4), [] {
     SimulationOptions o;
     o.model = "full";
     return o;
