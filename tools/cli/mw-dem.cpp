@@ -130,7 +130,8 @@ int main(int argc, char** argv) {
     if (!restart_path.empty()) {
       run.input(restart_path);
       sim.restore(restart_path, options.checkpoint.identity);
-      run.param("restarted_at_step", resumed_at = sim.steps_done());
+      resumed_at = sim.steps_done();
+      run.param("restarted_at_step", resumed_at);
     }
     const dem::RunReport report = sim.run();
     if (progress) progress->finish();

@@ -95,6 +95,7 @@ public:
   /// Writes the state after steps_done() steps to `file` (checkpoint.hpp).
   void save_checkpoint(const std::filesystem::path& file, const CheckpointIdentity& identity) const;
   /// Reads a checkpoint of this run (InputError if it is of another, checkpoint.hpp); call before run().
+  /// After an InputError the Simulation may hold part of the checkpoint: build a new one.
   void restore(const std::filesystem::path& file, const CheckpointIdentity& identity);
 
 private:
