@@ -5,6 +5,7 @@
 // loaded to break bonds, the moment law, the linearised network and the chain.
 // A checkpoint of another run is refused.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cstring>
 
@@ -132,6 +133,8 @@ TEST(Checkpoint, FullLawCompressionToFailureRestartsToTheSameBits) {
   ASSERT_LT(at_k, broken.size());
   EXPECT_GT(broken[at_k], 0.0);
   EXPECT_GT(broken.back(), broken[at_k]);
+  // Writing and reading closed every HDF5 object (no file left open).
+  EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
 }
 
 TEST(Checkpoint, MomentLawRestartsToTheSameBits) {
