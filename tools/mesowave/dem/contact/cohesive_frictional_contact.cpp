@@ -88,9 +88,22 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
   group.read_into("overlap0_m", overlap0_);
   group.read_into("cohesive", cohesive_);
   bond_ = group.read_uint32s("bond");
+  // Each bond once, in the slot of its own pair; cohesion only where a bond is (0 or 1).
+  const BondNetwork& bonds = system.bonds();
+  std::vector<std::uint8_t> placed(nb, 0);
   std::size_t bonded = 0;
-  for (std::uint32_t b : bond_) bonded += b != kNoBond;
-  if (bond_.size() != m || bonded != nb)
+  bool valid = bond_.size() == m;
+  for (std::size_t s = 0; valid && s < m; ++s) {
+    const std::uint32_t b = bond_[s];
+    if (b == kNoBond) {
+      valid = cohesive_[s] == 0.0;
+      continue;
+    }
+    valid = b < nb && !placed[b] && bonds.first[b] == first[s] && bonds.second[b] == second[s] &&
+            (cohesive_[s] == 0.0 || cohesive_[s] == 1.0);
+    if (valid) placed[b] = 1, ++bonded;
+  }
+  if (!valid || bonded != nb)
     throw InputError("checkpoint " + group.where() + ": its bonds are not this packing's " + std::to_string(nb));
   travelled_ = group.read_double("travelled_m");
   detection_passes_ = std::size_t(group.read_int64("detection_passes"));
