@@ -25,11 +25,11 @@ namespace {
 
 constexpr double kA = 2.0e-3;  // FCC cell of crushing_block (test_packings.hpp)
 
-// A small-amplitude wave: a burst on x-, sensors on the opposite faces.
-Scene wave_scene(int cells, double duration_s) {
+// A small-amplitude wave on an FCC block of `cells` cells of side `a`: a burst on x-, sensors on x+ and y-.
+Scene wave_scene(int cells, double duration_s, double a = kA) {
   Scene s = bare_scene(concrete_material(), 5e-8, duration_s);
   s.material.damping = 0.01;
-  const double side = cells * kA + 0.5 * kA, mid = 0.5 * side;
+  const double side = cells * a + 0.5 * a, mid = 0.5 * side;
   s.actuators.push_back(force_burst("A", patch_target("x-", {0, mid, mid}, 3e-3), "inward", 1e-3, 300e3));
   s.sensors.push_back(motion_sensor("B", patch_target("x+", {side, mid, mid}, 3e-3), MotionQuantity::acceleration, "normal"));
   s.sensors.push_back(motion_sensor("D", patch_target("y-", {mid, 0, mid}, 3e-3), MotionQuantity::velocity, "normal"));
@@ -178,7 +178,7 @@ TEST(Checkpoint, ARestartOnTwoThreadsGivesTheOneThreadBits) {
   // 8788 spheres: two partitions of the Morton order, the parallel path (models_test.cpp).
   const int cells = 13;
   const Packing packing = fcc_packing(cells, 2.5e-3, 0.8e-3, 1.0e-3, 0.03, 9, 2290);
-  Scene scene = wave_scene(cells, 2e-6);
+  Scene scene = wave_scene(cells, 2e-6, 2.5e-3);
   test::TempDir dir;
   use_threads(1);
   SimulationOptions o;
