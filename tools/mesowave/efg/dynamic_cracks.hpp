@@ -112,6 +112,9 @@ struct DynamicCrackOptions {
   int cohesive_gauss = 2;          ///< Gauss points per face segment
   int check_every = 1;             ///< steps between criterion checks (the history commits every step)
   double face_offset_fraction = 1e-6;  ///< of the spacing: where the faces' u^h is read off the line
+  /// At each accepted change, replace u and v on the nodes it reaches by their mass-weighted L2
+  /// projection onto the cut space (efg/field_projection; header: "Projection of the fields").
+  bool project_fields = false;
 
   /// InputError naming the value: f_t or G_f <= 0 (via the registry), speed limit <= 0, negative
   /// lengths, penalty <= 0, cohesive_gauss outside [1, 8], check_every < 1, bad strain-rate parameters.
@@ -157,8 +160,10 @@ class DynamicCracks final : public DynamicsCracks {
   /// inside the body are tips when `tips` (they may grow). Returns the crack's index.
   std::size_t add_crack(const std::vector<Vec2>& polyline, bool traction_free, bool tips);
 
+  void start(const Eigen::VectorXd& mass_per_node) override { mass_ = mass_per_node; }
   void add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& f) const override;
-  bool advance(double t_s, const Eigen::VectorXd& u, const std::vector<PointState>& states) override;
+  /// With project_fields, u and v are replaced by their projections at every accepted change.
+  bool advance(double t_s, Eigen::VectorXd& u, Eigen::VectorXd& v, const std::vector<PointState>& states) override;
   Eigen::SparseMatrix<double> stiffness_bound() const override;
 
   double dissipated_J() const;
@@ -166,7 +171,21 @@ class DynamicCracks final : public DynamicsCracks {
   /// the elastic energy the change of the approximation itself adds at a fixed u (exact for a linear
   /// continuum; for another law the linear measure of it). The run's work does not see it (no force
   /// does it), so kinetic + strain + faces = W_ext + energy_jump_J for the linear law.
-  double energy_jump_J() const { return energy_jump_J_; }
+  /// With project_fields, u is the projected u' after the change, and the sum holds the kinetic energy's
+  /// change too (kinetic_jump_J, 1/2 v'.M v' - 1/2 v.M v with the run's lumped mass): then kinetic + strain
+  /// + faces = W_ext + energy_jump_J still holds for the linear law.
+  double energy_jump_J() const { return energy_jump_J_ + kinetic_jump_J_; }
+  double kinetic_jump_J() const { return kinetic_jump_J_; }
+  /// One projection (project_fields): when, how many Gauss points changed, the nodes moved, the relative
+  /// mass-weighted misfits of u and v (ParameterProjection::relative_misfit), and whether the normal
+  /// matrix was factorised (false: u and v were kept).
+  struct Projection {
+    double t_s;
+    std::size_t changed_points, nodes;
+    double misfit_u, misfit_v;
+    bool ok;
+  };
+  const std::vector<Projection>& projections() const { return projections_; }
   double stored_J(const Eigen::VectorXd& u) const;
   double opening_m(std::size_t face_point, const Eigen::VectorXd& u) const;
 
@@ -220,7 +239,12 @@ class DynamicCracks final : public DynamicsCracks {
   NodeGrid gauss_grid_, node_grid_;
   std::vector<Vec2> gauss_x_;
   std::int64_t calls_ = 0;
-  double energy_jump_J_ = 0;
+  double energy_jump_J_ = 0, kinetic_jump_J_ = 0;
+  Eigen::VectorXd mass_;             ///< per node, the run's (start()); else lumped_mass at the first projection
+  std::vector<double> point_mass_;   ///< rho t w_g per Gauss point: the projection's weights
+  std::vector<Projection> projections_;
+  void project(const std::vector<ShapeFunctions>& before, double t_s, Eigen::VectorXd& u, Eigen::VectorXd& v);
+  double kinetic_J(const Eigen::VectorXd& v) const;
   std::vector<Refusal> refused_;
   std::set<std::int64_t> refused_points_;  ///< not tried again
 };
