@@ -120,7 +120,7 @@ TEST(ParameterProjection, DynamicCracksKeepAUniformFieldWhileCracksStart) {
   co.cohesive.f_t_Pa = 3e6;
   co.cohesive.G_f_J_m2 = 100;
   co.strain_rate_effect = false;
-  co.project_fields = true;
+  co.project_fields = FieldProjection::displacement_and_velocity;
   DynamicCracks dc(model, cracks, co);
   Eigen::Matrix2d G, Gv;  // sigma_xx = E eps_xx / (1 - nu^2) = 3.9 MPa > f_t (plane stress, eps_yy = 0)
   G << 1.25e-4, 0, 0, 0;

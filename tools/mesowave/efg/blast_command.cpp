@@ -32,9 +32,7 @@ BlastSlabOptions BlastCommandLine::resolve() const {
   c.cohesive.G_f_J_m2 = G_f_N_m;
   if (f_c_MPa != 0) c.cohesive.f_c_Pa = require_positive("--f-c-MPa", f_c_MPa, "MPa") * 1e6;
   c.strain_rate_effect = strain_rate == 1;
-  if (project_fields != 0 && project_fields != 1)
-    throw InputError("--project-fields (" + std::to_string(project_fields) + ") must be 1 or 0");
-  c.project_fields = project_fields == 1;
+  c.project_fields = parse_field_projection(project_fields);
   c.strain_rate.f_cm_Pa = f_cm_MPa * 1e6;
   c.strain_rate.max_strain_rate_1_s = max_strain_rate_1_s;
   c.strain_rate.tension = parse_tensile_dif_law(tensile_dif);
@@ -79,7 +77,7 @@ void add_blast_options(CLI::App& app, BlastCommandLine& v) {
   app.add_option("--min-crack-radius-mm", v.min_crack_radius_mm,
                  "Smallest radius of a crack's path R_min: a turn <= 2 asin(a / (2 R_min)) per segment (0: a, assumed)")->capture_default_str();
   app.add_option("--project-fields", v.project_fields,
-                 "1: at each crack change, project u and v onto the cut shape functions (mass-weighted L2, efg/field_projection); 0: keep them")
+                 "At each crack change, project onto the cut shape functions (mass-weighted L2, efg/field_projection): none | u | u-v")
       ->capture_default_str();
   app.add_option("--penalty-factor", v.penalty_factor, "Face penalty k = factor E / a: initial secant and contact of closing faces")->capture_default_str();
   HugoniotParameters& h = v.hugoniot;
@@ -146,7 +144,7 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
       {"min_crack_radius_mm", r.min_radius_m * 1e3},
       {"max_turn_deg", r.max_turn_rad * 180 / M_PI},
       {"penalty_Pa_per_m", r.penalty_Pa_per_m},
-      {"project_fields", o.cracks.project_fields},
+      {"project_fields", std::string(to_string(o.cracks.project_fields))},
       {"cracks", cracks},
       {"compacted", {{"threshold_pressure_MPa", r.threshold_pressure_Pa * 1e-6}, {"points", r.compacted_points},
                      {"depth_mm", r.compacted_depth_m * 1e3}, {"width_mm", r.compacted_width_m * 1e3},
@@ -155,8 +153,10 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
       {"energy", {{"external_work_J", last.external_work_J}, {"kinetic_J", last.kinetic_J},
                   {"internal_work_J", last.internal_work_J}, {"bulk_work_J", last.bulk_work_J()},
                   {"faces_work_J", last.faces_work_J}, {"dissipated_J", last.dissipated_J}, {"stored_J", last.stored_J},
-                  {"energy_jump_J", last.energy_jump_J}, {"kinetic_jump_J", last.kinetic_jump_J}, {"damping_J", last.damping_J},
+                  {"energy_jump_J", last.energy_jump_J}, {"kinetic_jump_J", last.kinetic_jump_J},
+                  {"faces_jump_J", last.faces_jump_J}, {"damping_J", last.damping_J},
                   {"balance_over_W_ext", last.balance_J() / scale},
+                  {"balance_less_faces_jump_over_W_ext", last.balance_less_faces_jump_J() / scale},
                   {"max_balance_over_W_ext", r.max_abs_balance_J / scale},
                   {"run_drift", d.energy_drift}, {"unit", "J per metre of charge length"}}},
       {"steps", d.steps},

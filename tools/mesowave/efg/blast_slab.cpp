@@ -80,7 +80,7 @@ class RecordedCracks final : public DynamicsCracks {
     const bool changed = c_.advance(t_s, u, v, states);
     v_prev_ = v;
     if (n_ % o_.sample_stride == 0 || last)
-      samples_.push_back({0.5 * (t_n_ + t_s), faces_work_J_, c_.dissipated_J(), c_.stored_J(u), c_.energy_jump_J()});
+      samples_.push_back({0.5 * (t_n_ + t_s), faces_work_J_, c_.dissipated_J(), c_.stored_J(u), c_.energy_jump_J(), c_.faces_jump_J()});
     if (last) final_points_ = points_now(states);
     dt_prev_ = dt_half;
     t_n_ = t_s;
@@ -91,7 +91,7 @@ class RecordedCracks final : public DynamicsCracks {
   Eigen::SparseMatrix<double> stiffness_bound() const override { return c_.stiffness_bound(); }
 
   struct Sample {
-    double t_s, faces_work_J, dissipated_J, stored_J, energy_jump_J;
+    double t_s, faces_work_J, dissipated_J, stored_J, energy_jump_J, faces_jump_J;
   };
   const std::vector<Sample>& samples() const { return samples_; }
   const std::vector<CrackSnapshot>& snapshot_cracks() const { return snapshot_cracks_; }
@@ -260,7 +260,8 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
   for (std::size_t k = 0; k < s.size(); ++k) {
     const EnergySample& e = r.run.energy[k];
     BlastEnergySample b{e.t_s, e.kinetic_J, e.internal_work_J, e.external_work_J, e.damping_J,
-                        s[k].faces_work_J, s[k].dissipated_J, s[k].stored_J, s[k].energy_jump_J, e.kinetic_jump_J};
+                        s[k].faces_work_J, s[k].dissipated_J, s[k].stored_J, s[k].energy_jump_J, e.kinetic_jump_J,
+                        s[k].faces_jump_J};
     r.max_abs_balance_J = std::max(r.max_abs_balance_J, std::abs(b.balance_J()));
     r.max_abs_run_balance_J = std::max(r.max_abs_run_balance_J, std::abs(b.run_balance_J()));
     r.energy.push_back(b);

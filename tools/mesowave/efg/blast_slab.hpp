@@ -112,11 +112,15 @@ struct BlastEnergySample {
   /// the kinetic energy the field projection changed at the cracks' changes (EnergySample; 0 without it);
   /// part of energy_jump_J too
   double kinetic_jump_J = 0;
+  /// the faces' share of energy_jump_J (DynamicCracks::faces_jump_J): their law energy moved at fixed times
+  double faces_jump_J = 0;
   double bulk_work_J() const { return internal_work_J - faces_work_J; }
   double run_balance_J() const { return kinetic_J + internal_work_J + damping_J - external_work_J - kinetic_jump_J; }
   double balance_J() const {
     return kinetic_J + bulk_work_J() + dissipated_J + stored_J + damping_J - external_work_J - kinetic_jump_J;
   }
+  /// balance_J less the faces' jump: what the faces' law energy misses of their force work over the steps
+  double balance_less_faces_jump_J() const { return balance_J() - faces_jump_J; }
 };
 
 struct GaussPointSnapshot {

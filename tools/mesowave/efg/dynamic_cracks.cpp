@@ -42,6 +42,22 @@ void for_jump(const CrackFacePoint& p, F f) {
 
 }  // namespace
 
+FieldProjection parse_field_projection(std::string_view name) {
+  if (name == "none") return FieldProjection::none;
+  if (name == "u") return FieldProjection::displacement;
+  if (name == "u-v") return FieldProjection::displacement_and_velocity;
+  throw InputError("field projection '" + std::string(name) + "' is not one of none, u, u-v");
+}
+
+std::string_view to_string(FieldProjection p) {
+  switch (p) {
+    case FieldProjection::none: return "none";
+    case FieldProjection::displacement: return "u";
+    case FieldProjection::displacement_and_velocity: return "u-v";
+  }
+  return "?";
+}
+
 void DynamicCrackOptions::validate() const {
   (void)make_cohesive_law(law, cohesive);  // f_t, G_f, keys, f_c: the registry's one-line errors
   if (strain_rate_effect) strain_rate.validate();
@@ -315,7 +331,8 @@ void DynamicCracks::project(const std::vector<ShapeFunctions>& before, double t_
   Projection rec{t_s, p.changed_points(), p.nodes().size(), 0, 0, p.ok()};
   if (p.changed_points() > 0 && p.ok()) {
     const double ke_before = kinetic_J(v);
-    Eigen::VectorXd u_new = p.project(u), v_new = p.project(v);
+    Eigen::VectorXd u_new = p.project(u);
+    Eigen::VectorXd v_new = o_.project_fields == FieldProjection::displacement_and_velocity ? p.project(v) : v;
     rec.misfit_u = p.relative_misfit(u, u_new);
     rec.misfit_v = p.relative_misfit(v, v_new);
     u = std::move(u_new);
@@ -337,18 +354,21 @@ bool DynamicCracks::advance(double t_s, Eigen::VectorXd& u, Eigen::VectorXd& v, 
     const auto points_before = points_;
     const auto tips_before = tips_;
     const std::size_t events_before = events_.size(), laws_before = laws_.size();
-    const double e_before = 0.5 * u.dot(model_->internal_force(u)) + stored_J(u) + dissipated_J();
+    const double bulk_before = 0.5 * u.dot(model_->internal_force(u)), stored_before = stored_J(u), dissipated_before = dissipated_J();
+    const double e_before = bulk_before + stored_before + dissipated_before;
     if (!change()) return;
     std::vector<ShapeFunctions> shape_before;  // the change moved the CrackSet only: these are still the old ones
-    if (o_.project_fields) shape_before = model_->shape_functions();
+    if (o_.project_fields != FieldProjection::none) shape_before = model_->shape_functions();
     try {
       refresh();
-      if (o_.project_fields) project(shape_before, t_s, u, v);
+      if (o_.project_fields != FieldProjection::none) project(shape_before, t_s, u, v);
       // the new faces start at the jump the cut approximation shows there (header: w_birth)
       for (std::size_t k = points_before.size(); k < points_.size(); ++k) points_[k].w_birth_m = opening_m(k, u);
       // older faces whose opening the cut moved past their history: committed now, into the jump
       for (std::size_t k = 0; k < points_before.size(); ++k) points_[k].w_hist_m = std::max(points_[k].w_hist_m, opening_m(k, u));
-      energy_jump_J_ += 0.5 * u.dot(model_->internal_force(u)) + stored_J(u) + dissipated_J() - e_before;
+      const double stored_after = stored_J(u), dissipated_after = dissipated_J();
+      energy_jump_J_ += 0.5 * u.dot(model_->internal_force(u)) + stored_after + dissipated_after - e_before;
+      faces_jump_J_ += stored_after + dissipated_after - (stored_before + dissipated_before);
       changed = true;
     } catch (const InputError&) {
       cracks_->restore(cracks_before);  // a new version: the model recomputes what it had

@@ -81,6 +81,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "mesowave/efg/cohesive_law.hpp"
@@ -91,6 +92,13 @@
 #include "mesowave/efg/strain_rate.hpp"
 
 namespace mesowave::efg {
+
+/// What DynamicCracks projects onto the cut space at each accepted change (header: "Projection of the
+/// fields"): nothing (the parameters are kept), u, or u and v.
+enum class FieldProjection { none, displacement, displacement_and_velocity };
+/// "none" | "u" | "u-v" (InputError naming the value otherwise)
+FieldProjection parse_field_projection(std::string_view name);
+std::string_view to_string(FieldProjection p);
 
 struct DynamicCrackOptions {
   std::string law = "exponential";   ///< a registered cohesive law (efg/cohesive_law)
@@ -112,9 +120,9 @@ struct DynamicCrackOptions {
   int cohesive_gauss = 2;          ///< Gauss points per face segment
   int check_every = 1;             ///< steps between criterion checks (the history commits every step)
   double face_offset_fraction = 1e-6;  ///< of the spacing: where the faces' u^h is read off the line
-  /// At each accepted change, replace u and v on the nodes it reaches by their mass-weighted L2
+  /// At each accepted change, replace u (and v) on the nodes it reaches by their mass-weighted L2
   /// projection onto the cut space (efg/field_projection; header: "Projection of the fields").
-  bool project_fields = false;
+  FieldProjection project_fields = FieldProjection::none;
 
   /// InputError naming the value: f_t or G_f <= 0 (via the registry), speed limit <= 0, negative
   /// lengths, penalty <= 0, cohesive_gauss outside [1, 8], check_every < 1, bad strain-rate parameters.
@@ -176,6 +184,9 @@ class DynamicCracks final : public DynamicsCracks {
   /// + faces = W_ext + energy_jump_J still holds for the linear law.
   double energy_jump_J() const { return energy_jump_J_ + kinetic_jump_J_; }
   double kinetic_jump_J() const { return kinetic_jump_J_; }
+  /// The faces' share of energy_jump_J: stored + dissipated after minus before each change (the cut and the
+  /// projection move the openings at a fixed time; the faces' force work does not see it).
+  double faces_jump_J() const { return faces_jump_J_; }
   /// One projection (project_fields): when, how many Gauss points changed, the nodes moved, the relative
   /// mass-weighted misfits of u and v (ParameterProjection::relative_misfit), and whether the normal
   /// matrix was factorised (false: u and v were kept).
@@ -239,7 +250,7 @@ class DynamicCracks final : public DynamicsCracks {
   NodeGrid gauss_grid_, node_grid_;
   std::vector<Vec2> gauss_x_;
   std::int64_t calls_ = 0;
-  double energy_jump_J_ = 0, kinetic_jump_J_ = 0;
+  double energy_jump_J_ = 0, kinetic_jump_J_ = 0, faces_jump_J_ = 0;
   Eigen::VectorXd mass_;             ///< per node, the run's (start()); else lumped_mass at the first projection
   std::vector<double> point_mass_;   ///< rho t w_g per Gauss point: the projection's weights
   std::vector<Projection> projections_;
