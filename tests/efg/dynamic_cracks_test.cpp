@@ -39,7 +39,7 @@ struct SpallSetup {
   double speed_limit = 500;
   double min_spacing = 0;
   int threads_min_points = 2000;
-  FieldProjection project_fields = FieldProjection::none;
+  FieldProjection project_fields = DynamicCrackOptions{}.project_fields;  // the library default
 };
 
 struct SpallRun {
@@ -246,21 +246,79 @@ TEST(DynamicCracks, ClosedFacesTransmitACompressivePulseThroughThePenalty) {
   EXPECT_LT(none, 0.05 * free);
 }
 
-// MEASURE (temporary): off and on, one crack and many
-TEST(DynamicCracks, MeasureProjection) {
-  for (double spacing : {1.0, 0.0})
-    for (FieldProjection project : {FieldProjection::none, FieldProjection::displacement, FieldProjection::displacement_and_velocity}) {
-      SpallSetup s;
-      s.min_spacing = spacing;
-      s.project_fields = project;
-      const SpallRun r = run_spall(s);
-      const double W = r.run.energy.back().external_work_J;
-      double mu = 0, mv = 0;
-      std::size_t fails = 0, nodes = 0;
-      for (const auto& p : r.projections) mu = std::max(mu, p.misfit_u), mv = std::max(mv, p.misfit_v), fails += !p.ok, nodes = std::max(nodes, p.nodes);
-      std::printf("spacing %g project %s: cracks %zu events %zu first x %.2f mm t %.3f us | W_ext %.5f KE %.5f strain %.5f diss %.5f stored %.5f jump %.5f (kin %.5f faces %.5f) jump/W %.4f balance/W %.2e | proj %zu fails %zu max nodes %zu misfit u %.2e v %.2e drift %.1e\n",
-                  spacing, std::string(to_string(project)).c_str(), r.cracks, r.events.size(), r.events.front().from.x() * 1e3, r.events.front().t_s * 1e6, W,
-                  r.kinetic, r.strain, r.dissipated, r.stored_faces, r.jump, r.kinetic_jump, r.faces_jump, r.jump / W, r.balance() / W,
-                  r.projections.size(), fails, nodes, mu, mv, r.run.energy_drift);
-    }
+// The projection of the parameters onto the cut space at each change (project_fields, efg/field_projection)
+// on the same spall strip: the energy the changes add (energy_jump_J, kinetic energy included) falls, the
+// balance with it still closes, and the first crack is the same (it starts before any projection).
+// Measured (this machine, docs/efg.md "Energy across crack growth"), energy_jump_J / W_ext:
+//   one crack (min spacing 1 m):  none 7.85e-3, u 3.05e-3, u-v 2.95e-3   (held: < 4e-3 and < 0.5 x none)
+//   24 cracks (default spacing):  none 0.152,  u 0.042 (24 cracks)          (held: < 0.06 and < 0.5 x none)
+// and the balance kinetic + strain + faces - jump - W_ext: one crack 3.5e-4 / 5.5e-4 / 5.6e-4 of W_ext
+// (held to the 2e-3 of the test above), 24 cracks 3.4e-2 / 7.3e-3 (held < 1e-2 with u: the balance the
+// projection closes; without it 0.10 J stayed unaccounted, dynamic_cracks.hpp).
+TEST(DynamicCracks, ProjectingTheFieldsCutsTheEnergyTheChangesAdd) {
+  SpallSetup s;
+  s.min_spacing = 1.0;
+  const auto run = [&](FieldProjection p) {
+    s.project_fields = p;
+    return run_spall(s);
+  };
+  const SpallRun none = run(FieldProjection::none), u = run(FieldProjection::displacement),
+                 uv = run(FieldProjection::displacement_and_velocity);
+  const double W = none.run.energy.back().external_work_J;
+  std::printf("one crack: jump / W_ext none %.3e u %.3e u-v %.3e (kinetic %.2e J); balance / W_ext %.2e %.2e %.2e\n", none.jump / W,
+              u.jump / u.run.energy.back().external_work_J, uv.jump / uv.run.energy.back().external_work_J, uv.kinetic_jump,
+              none.balance() / W, u.balance() / W, uv.balance() / W);
+  for (const SpallRun* r : {&u, &uv}) {
+    const double Wr = r->run.energy.back().external_work_J;
+    ASSERT_EQ(r->cracks, 1u);
+    ASSERT_FALSE(r->projections.empty());
+    EXPECT_EQ(r->events.front().t_s, none.events.front().t_s);  // the first crack: before any projection
+    EXPECT_EQ(r->events.front().from, none.events.front().from);
+    EXPECT_LT(r->jump, 4e-3 * Wr);
+    EXPECT_LT(r->jump, 0.5 * none.jump);
+    EXPECT_LT(std::abs(r->balance()), 2e-3 * Wr);
+    EXPECT_LT(r->run.energy_drift, 1e-12);  // the run's identity, the projection's kinetic change booked
+    for (const auto& p : r->projections) EXPECT_TRUE(p.ok);
+  }
+  EXPECT_EQ(u.kinetic_jump, 0.0);  // v is kept: the lumped kinetic energy cannot change
+  // many cracks: u only (u-v measured 0.033, but see docs/efg.md: on a coarse slab it changed KE by 49 % of W_ext)
+  s.min_spacing = 0;
+  const SpallRun many_none = run(FieldProjection::none), many_u = run(FieldProjection::displacement);
+  const double Wm = many_u.run.energy.back().external_work_J;
+  std::printf("%zu / %zu cracks: jump / W_ext none %.3f u %.3f; balance / W_ext %.2e %.2e\n", many_none.cracks, many_u.cracks,
+              many_none.jump / many_none.run.energy.back().external_work_J, many_u.jump / Wm,
+              many_none.balance() / many_none.run.energy.back().external_work_J, many_u.balance() / Wm);
+  EXPECT_GT(many_u.cracks, 10u);
+  EXPECT_LT(many_u.jump, 0.06 * Wm);
+  EXPECT_LT(many_u.jump, 0.5 * many_none.jump);
+  EXPECT_LT(std::abs(many_u.balance()), 1e-2 * Wm);
+}
+
+// The projection keeps the run's bits for any thread count: its points, nodes and sums are in a fixed
+// order and serial (one crack, u and v projected, 1 and 2 threads).
+TEST(DynamicCracks, ProjectionGivesTheSameBitsForOneAndTwoThreads) {
+  SpallSetup s;
+  s.min_spacing = 1.0;
+  s.threads_min_points = 1;
+  s.project_fields = FieldProjection::displacement_and_velocity;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const SpallRun r1 = run_spall(s);
+  omp_set_num_threads(2);
+  const SpallRun r2 = run_spall(s);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(r1.run.threads, 1);
+  EXPECT_EQ(r2.run.threads, 2);
+  ASSERT_GE(r1.projections.size(), 3u);
+  ASSERT_EQ(r1.events.size(), r2.events.size());
+  for (std::size_t i = 0; i < r1.events.size(); ++i) {
+    EXPECT_EQ(r1.events[i].t_s, r2.events[i].t_s);
+    EXPECT_EQ(r1.events[i].to, r2.events[i].to);
+  }
+  ASSERT_EQ(r1.run.u.size(), r2.run.u.size());
+  const auto bytes = sizeof(double) * std::size_t(r1.run.u.size());
+  EXPECT_EQ(0, std::memcmp(r1.run.u.data(), r2.run.u.data(), bytes));
+  EXPECT_EQ(0, std::memcmp(r1.run.v.data(), r2.run.v.data(), bytes));
+  EXPECT_EQ(r1.jump, r2.jump);
+  EXPECT_EQ(r1.kinetic_jump, r2.kinetic_jump);
 }
