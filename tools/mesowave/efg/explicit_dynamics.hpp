@@ -113,7 +113,8 @@ struct EnergySample {
 /// Cracks that open and grow during a run (efg/dynamic_cracks implements it; issue 16). At every step n
 /// the run calls add_forces(u^n, f) with f zero, adds f to the continuum's f_int (so W_int holds the
 /// faces' work and the energy balance stays exact), and after u^{n+1} calls advance(t^{n+1}, u^{n+1},
-/// states) with the points' states of step n (stress, strain rate). When advance returns true the
+/// v^{n+1/2}, states) with the points' states of step n (stress, strain rate); before the first step it
+/// calls start(lumped mass). When advance returns true the
 /// CrackSet changed and the model's shape functions were recomputed: the run rebuilds its node gather
 /// lists and its sensors' and snapshot nodes' shape functions, and recomputes the stable step with
 /// stiffness_bound() added to K (then dt = dt_fraction x that step, or the caller's dt where lower).
