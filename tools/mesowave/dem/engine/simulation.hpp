@@ -84,6 +84,13 @@ public:
   /// Runs every step. InputError on a blow-up or a violated validity check.
   RunReport run();
 
+  // What a solver other than the stepping loop reads (static_elastic.hpp):
+  // the scene as run, the placed actuators and sensors, the [test] specimen.
+  const Scene& scene() const { return scene_; }
+  const std::vector<std::unique_ptr<Actuator>>& actuators() const { return actuators_; }
+  std::vector<std::unique_ptr<Sensor>>& sensors() { return sensors_; }
+  const std::optional<UniaxialTestSpecimen>& test_specimen() const { return test_specimen_; }
+
 private:
   Scene scene_;
   SimulationOptions options_;
