@@ -180,6 +180,7 @@ StaticElasticResult static_compression_test(const Scene& scene_in, const Packing
   const auto dof_of = [&](const Wall& w, std::size_t i) { return 6 * w.wall->spheres()[i] + std::size_t(axis); };
 
   Vector u = Vector::Zero(Eigen::Index(result.dofs)), u0 = u, u1 = u;
+  // The true residual is checked too: BiCGSTAB's recurred one drifts from it.
   const auto solve = [&](const Matrix& A, const Vector& rhs, Vector& x) {
     Eigen::BiCGSTAB<Matrix, Eigen::DiagonalPreconditioner<double>> solver;
     solver.setTolerance(options.tolerance);
@@ -187,7 +188,7 @@ StaticElasticResult static_compression_test(const Scene& scene_in, const Packing
     solver.compute(A);
     x = solver.solveWithGuess(rhs, x);
     const double residual = rhs.norm() > 0 ? (rhs - A * x).norm() / rhs.norm() : 0;
-    if (solver.info() != Eigen::Success || !(residual <= 10 * options.tolerance))
+    if (solver.info() != Eigen::Success || !(residual <= 100 * options.tolerance))
       throw InputError("the static solve did not converge (" + std::to_string(solver.iterations()) +
                        " BiCGSTAB iterations, relative residual " + format_number(residual) +
                        "): the network with its wall contacts may be a mechanism (spheres or clusters held by no bond)");
