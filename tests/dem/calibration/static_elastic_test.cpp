@@ -199,6 +199,13 @@ TEST(StaticElastic, SimpleCubicLatticeHasHalfTheContactModulus) {
   EXPECT_NEAR(*r.nu_glob, 0.0, 1e-9);
   EXPECT_EQ(r.level_b.wall_contacts, 72u);  // the 36 spheres of each face
   EXPECT_LT(r.support_force_ratio, 1e-8);  // the supports carry no force, to the solver tolerance
+  // The incomplete-LU preconditioner gives the same solution.
+  StaticElasticOptions ilut;
+  ilut.preconditioner = "ilut";
+  const StaticElasticResult i = static_compression_test(scene, simple_cubic(6, 1e-3, 2500.0), ilut);
+  EXPECT_EQ(i.solver, "BiCGSTAB (ILUT)");
+  EXPECT_NEAR(i.E_glob_Pa / 10e9, 1.0, 1e-9);
+  EXPECT_NEAR(*i.nu_glob, 0.0, 1e-9);
 }
 
 TEST(StaticElastic, SmallCubeMatchesTheDynamicTest) {
