@@ -40,7 +40,9 @@ int main(int argc, char** argv) {
       "  mw-dem run pipeline/concrete-cube/scenes/cube-wave.toml --from calibration.json --signals cube.h5   "
       "(E_dem_GPa, nu_dem, T_MPa, C_MPa, friction_angle_deg from mw-calibrate)\n"
       "  mw-dem run pipeline/concrete-cube/scenes/cube-compression.toml --signals c.h5 --curves c.csv   "
-      "(a virtual compression test: E_glob, nu_glob, peak stress)");
+      "(a virtual compression test: E_glob, nu_glob, peak stress)\n"
+      "  mw-dem run pipeline/concrete-cube/scenes/cube-compression.toml --unbreakable-bonds --modulus-levels-MPa 5,16.67 "
+      "--static --signals e.h5   (its elastic part as one static solve of the linearised network)");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
 
