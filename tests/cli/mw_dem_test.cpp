@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mesowave/dem/packing/packing_file.hpp"
+#include "mesowave/dem/packing/packing_generator.hpp"
 #include "mesowave/signal/signal_file.hpp"
 #include "support/run_tool.hpp"
 
@@ -240,4 +241,47 @@ TEST(MwDem, ASigtermStopsTheRunWritesNothingAndRecordsItAsInterrupted) {
   const auto text = run_tool("mw-prov", {"--db", db, "runs"});
   EXPECT_NE(text.out.find("interrupted"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find(reached), std::string::npos) << text.out;
+}
+
+TEST(MwDem, StaticCompressionGivesTheSteppedElasticTrialsModulus) {
+  // mw-calibrate's elastic trial of the shipped compression scene on a 16 mm
+  // cube, stepped and solved (--static): the same E_glob and nu_glob (a 12 mm
+  // cube's nu_glob differs by 1.3e-4: the smaller the cube, the more of its
+  // extensometer pads are surface spheres; docs/calibration.md); the static
+  // summary keeps the keys mw-calibrate reads (model, wall_s, test).
+  test::TempDir dir;
+  dem::PackingOptions po;
+  po.porosity = 0.07;
+  po.sizes = dem::SizeDistribution::uniform(1.6e-3, 2.0e-3);
+  dem::Packing p = dem::generate_packing(dem::box_container({0, 0, 0}, {16e-3, 16e-3, 16e-3}), po);
+  p.particle_density_kg_m3 = 2129.56;
+  dem::write_packing_file(dir / "cube.h5", p);
+  const std::string scene = std::string(MESOWAVE_SOURCE_DIR) + "/pipeline/concrete-cube/scenes/cube-compression.toml";
+  const std::vector<std::string> trial = {"run", scene, "--packing", (dir / "cube.h5").string(), "--unbreakable-bonds",
+                                          "--model", "linear", "--modulus-levels-MPa", "5,16.666666666666668",
+                                          "--stop-at-MPa", "17", "--quiet"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = trial;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  const auto dynamic = run_tool("mw-dem", with({"--signals", (dir / "d.h5").string()}));
+  ASSERT_EQ(dynamic.exit_status, 0) << dynamic.err;
+  const auto statics = run_tool("mw-dem", with({"--static", "--signals", (dir / "s.h5").string(), "--curves",
+                                                (dir / "s.csv").string(), "--summary", (dir / "s.json").string()}));
+  ASSERT_EQ(statics.exit_status, 0) << statics.err;
+  const auto d = nlohmann::json::parse(dynamic.out), s = nlohmann::json::parse(statics.out);
+  EXPECT_EQ(s["method"], "static");
+  EXPECT_EQ(s["model"], "linear");
+  EXPECT_TRUE(s.contains("wall_s"));
+  EXPECT_NEAR(s["test"]["E_glob_GPa"].get<double>() / d["test"]["E_glob_GPa"].get<double>(), 1.0, 1e-4);
+  EXPECT_NEAR(s["test"]["nu_glob"].get<double>(), d["test"]["nu_glob"].get<double>(), 1e-4);
+  EXPECT_TRUE(std::filesystem::exists(dir / "s.h5"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "s.csv"));
+  // Levels as fractions of a peak mean nothing for a linear response: refused, nothing written.
+  const auto pct = run_tool("mw-dem", {"run", scene, "--packing", (dir / "cube.h5").string(), "--static",
+                                       "--unbreakable-bonds", "--signals", (dir / "x.h5").string(), "--quiet"});
+  EXPECT_EQ(pct.exit_status, 1);
+  EXPECT_NE(pct.err.find("modulus levels as stresses"), std::string::npos) << pct.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.h5"));
 }

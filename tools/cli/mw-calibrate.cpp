@@ -74,6 +74,13 @@ int main(int argc, char** argv) {
   cube->add_option("--trials", trials_csv, "The trial log (CSV)");
   cube->add_option("--targets-csv", targets_csv, "CSV: each target, its tolerance, the calibrated value, where it was read from");
   cube->add_option("--plot-trajectory", plot_trajectory, "PNG: the trials against the targets");
+  std::string elastic_trials = "dynamic";
+  cube->add_option("--elastic-trials", elastic_trials,
+                   "dynamic: step the elastic trials (the linearised network to sigma_max / 3); static: solve each as one "
+                   "linear static problem (mw-dem run --static: the same E_glob, nu_glob, docs/calibration.md); failure "
+                   "trials stay dynamic")
+      ->check(CLI::IsMember({"dynamic", "static"}))
+      ->capture_default_str();
   cube->add_option("--plot-curves", plot_curves, "PNG: stress-strain curves of the calibrated test, with the moduli");
 
   auto* rod = cli.add_subcommand("rod", "Tension test of a chain: the contact modulus for the rod's E");
@@ -122,7 +129,7 @@ int main(int argc, char** argv) {
     const dem::DemParameters start{start_E ? *start_E * units::GPa : m.E_dem_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
     const double mu_deg = friction_deg.value_or(m.friction_angle_rad * 180 / 3.141592653589793);
     dem::CompressionCalibration calibration(targets, tolerances, start, max_trials);
-    dem::run_trials(calibration, run_trial, mu_deg, std::cerr);
+    dem::run_trials(calibration, run_trial, mu_deg, std::cerr, elastic_trials == "static");
     const dem::CalibrationTrial& best = calibration.result();
     run.metric("E_glob", best.E_glob_Pa / 1e9, "GPa");
     run.metric("nu_glob", best.nu_glob, "");
@@ -138,7 +145,8 @@ int main(int argc, char** argv) {
                                                 run.output(plot_curves), "Virtual compression test, calibrated parameters"));
     }
     auto summary = dem::calibration_summary(
-        calibration, mu_deg, {run.origin("--E-st-measured-GPa"), run.origin("--nu-st"), run.origin("--sigma-max-MPa")});
+        calibration, mu_deg, {run.origin("--E-st-measured-GPa"), run.origin("--nu-st"), run.origin("--sigma-max-MPa")},
+        elastic_trials);
     if (!targets_csv.empty()) run.write_text(targets_csv, dem::calibration_targets_csv(summary));
     // The five values the wave runs take (mw-dem --from calibration.json); the rest is the record.
     app::declare_products(summary, {"E_dem_GPa", "nu_dem", "T_MPa", "C_MPa", "friction_angle_deg"});

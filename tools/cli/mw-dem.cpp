@@ -16,6 +16,7 @@
 #include "mesowave/app/progress.hpp"
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/threads.hpp"
+#include "mesowave/dem/calibration/static_elastic.hpp"
 #include "mesowave/dem/packing/packing_file.hpp"
 #include "mesowave/dem/engine/run_report.hpp"
 #include "mesowave/dem/scene/scene.hpp"
@@ -43,7 +44,9 @@ int main(int argc, char** argv) {
       "  mw-dem run pipeline/concrete-cube/scenes/cube-wave.toml --from calibration.json --signals cube.h5   "
       "(E_dem_GPa, nu_dem, T_MPa, C_MPa, friction_angle_deg from mw-calibrate)\n"
       "  mw-dem run pipeline/concrete-cube/scenes/cube-compression.toml --signals c.h5 --curves c.csv   "
-      "(a virtual compression test: E_glob, nu_glob, peak stress)");
+      "(a virtual compression test: E_glob, nu_glob, peak stress)\n"
+      "  mw-dem run pipeline/concrete-cube/scenes/cube-compression.toml --unbreakable-bonds --modulus-levels-MPa 5,16.67 "
+      "--static --signals e.h5   (its elastic part as one static solve of the linearised network)");
   auto& cli = tool.cli();
   cli.require_subcommand(1);
 
@@ -51,7 +54,7 @@ int main(int argc, char** argv) {
   std::int64_t checkpoint_every = 0, resumed_at = 0;
   std::string model = "auto";
   int threads = 0;
-  bool quiet = false;
+  bool quiet = false, static_solve = false;
   dem::SceneOverrides overrides;
 
   auto common = [&](CLI::App* sub) {
@@ -73,6 +76,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--snapshots", snapshot_dir, "Folder for ParaView snapshots (.vtp per instant + snapshots.pvd)");
   run_cmd->add_option("--snapshot-interval-us", overrides.snapshot_us, "Time between snapshots [us] (default: the scene's)");
   run_cmd->add_flag("--quiet", quiet, "No progress bar");
+  run_cmd->add_flag("--static", static_solve,
+                    "A compression [test]'s elastic part as one static solve of the linearised network instead of "
+                    "stepping (dem/calibration/static_elastic.hpp): E_glob and nu_glob between --modulus-levels-MPa, "
+                    "walls as one-sided springs, the same extensometers; --signals and --curves get the two levels");
   run_cmd->add_option("--curves", curves_path,
                       "A [test]'s stress-strain curves as CSV (t_s, stress_MPa, axial_strain, lateral_strain, "
                       "broken_bonds); the signal file holds them too (test.stress, test.axial_strain, ...)");
@@ -94,6 +101,26 @@ int main(int argc, char** argv) {
     dem::apply_overrides(scene, overrides);
     const dem::Packing packing = dem::read_packing_file(scene.packing_file);
     run.input(scene.packing_file);
+    if (static_solve) {
+      if (!info->parsed() && (!snapshot_dir.empty() || !csv_path.empty()))
+        throw InputError("--static solves for equilibrium: it has no --snapshots or --signals-csv");
+      if (model != "auto" && model != "linear") throw InputError("--static solves the linearised network, not --model " + model);
+      const dem::StaticElasticResult r = dem::static_compression_test(scene, packing);
+      if (!curves_path.empty()) run.write_text(curves_path, dem::uniaxial_curves_csv(r.test));
+      signal::write_signal_file(run.output(signals_path), dem::uniaxial_curve_signals(r.test),
+                                {{"scene", scene.name}, {"model", "linear"}, {"method", "static"},
+                                 {"packing", scene.packing_file.string()}});
+      run.param("model_chosen", "linear");
+      run.param("method", "static");
+      run.metric("E_glob", r.E_glob_Pa / 1e9, "GPa");
+      if (r.nu_glob) run.metric("nu_glob", *r.nu_glob, "");
+      run.metric("wall", r.wall_s, "s");
+      auto summary = dem::to_json(r);
+      summary["scene"] = scene.name;
+      summary["threads_reason"] = threads_reason;
+      run.emit_json(summary, summary_path);
+      return;
+    }
 
     dem::SimulationOptions options;
     options.model = model;

@@ -51,6 +51,7 @@ struct CalibrationTrial {
   bool peak_reached = false;
   double wall_s = 0;
   std::string model;         ///< the model that ran (linear | full)
+  std::string method;        ///< dynamic (stepped) | static (mw-dem run --static)
   std::string summary_file;  ///< the run's summary (mw-dem --summary)
   std::string kind_name() const { return kind == Kind::elastic ? "elastic" : "failure"; }
 };

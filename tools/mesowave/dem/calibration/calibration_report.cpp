@@ -28,7 +28,7 @@ std::vector<std::string> TrialCommand::argv(int k, const std::vector<std::string
 }
 
 std::vector<std::string> compression_trial_options(const CalibrationTrial& t, const CalibrationTargets& targets,
-                                                   double friction_deg) {
+                                                   double friction_deg, bool static_elastic) {
   const auto& p = t.parameters;
   const auto option = [](const char* key) { return material_parameter(key).option; };
   std::vector<std::string> options = {option("E_dem_GPa"), format_exact(p.E_dem_Pa / 1e9), option("nu_dem"),
@@ -38,6 +38,7 @@ std::vector<std::string> compression_trial_options(const CalibrationTrial& t, co
     const double b = 0.1 * targets.sigma_Pa / 1e6, a = targets.sigma_Pa / 3 / 1e6;
     options.insert(options.end(), {"--unbreakable-bonds", "--model", "linear", "--modulus-levels-MPa",
                                    format_exact(b) + "," + format_exact(a), "--stop-at-MPa", format_exact(1.02 * a)});
+    if (static_elastic) options.push_back("--static");
   } else {
     options.insert(options.end(), {"--T-MPa", format_exact(p.T_Pa / 1e6), "--C-MPa", format_exact(p.c_over_t * p.T_Pa / 1e6)});
   }
@@ -61,6 +62,7 @@ CalibrationTrial with_results(CalibrationTrial t, const std::filesystem::path& s
   t.peak_reached = test.at("peak_reached").get<bool>();
   t.wall_s = s.at("wall_s").get<double>();
   t.model = s.at("model").get<std::string>();
+  t.method = s.contains("method") ? s.at("method").get<std::string>() : "dynamic";
   t.summary_file = summary_file.string();
   return t;
 }
@@ -83,12 +85,14 @@ std::string describe(const CalibrationTrial& t) {
   line += " -> E_glob " + format_number(std::round(t.E_glob_Pa / 1e7) / 100) + " GPa, nu_glob " +
           format_number(std::round(t.nu_glob * 1e4) / 1e4);
   if (failure) line += ", peak " + format_number(std::round(t.peak_Pa / 1e4) / 100) + " MPa";
-  return line + " (" + t.model + " model, " + format_number(std::round(t.wall_s * 10) / 10) + " s)";
+  return line + " (" + t.model + " model" + (t.method == "static" ? ", static solve" : "") + ", " + format_number(std::round(t.wall_s * 10) / 10) + " s)";
 }
 
-void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_deg, std::ostream& log) {
+void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_deg, std::ostream& log,
+                bool static_elastic) {
   while (auto trial = c.next()) {
-    const auto done = with_results(*trial, run(trial->number, compression_trial_options(*trial, c.targets(), friction_deg)));
+    const auto done =
+        with_results(*trial, run(trial->number, compression_trial_options(*trial, c.targets(), friction_deg, static_elastic)));
     log << "mw-calibrate: " << describe(done) << "\n";
     c.record(done);
   }
@@ -104,7 +108,7 @@ void run_trials(RodCalibration& c, const TrialRunner& run, std::ostream& log) {
 }
 
 nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_deg,
-                                           const TargetOrigins& origins) {
+                                           const TargetOrigins& origins, const std::string& elastic_trials) {
   const CalibrationTrial& best = c.result();
   const auto& p = best.parameters;
   const auto& targets = c.targets();
@@ -128,6 +132,7 @@ nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, doub
   j["trial_count"] = c.trials().size();
   j["calibrated_by_trial"] = best.summary_file;
   j["trials_wall_s"] = total_wall;
+  j["elastic_trials"] = elastic_trials;  // dynamic (stepped) or static (one solve of the linearised network)
   const auto& tol = c.tolerances();
   const auto target = [](double value, const char* unit, const std::string& tolerance, double calibrated,
                          const nlohmann::ordered_json& origin) {

@@ -36,8 +36,10 @@ struct TrialCommand {
 /// response where the lab reads it, between 10 % and 1/3 of the target
 /// strength (EN 12390-13), on unbreakable linearised bonds, the run ending
 /// just above; a failure trial runs the full law with T and C = (C/T) T.
+/// `static_elastic`: the elastic trials as one static solve of the same network
+/// (mw-dem run --static, static_elastic.hpp) instead of stepped; failure trials stay dynamic.
 std::vector<std::string> compression_trial_options(const CalibrationTrial& trial, const CalibrationTargets& targets,
-                                                   double friction_angle_deg);
+                                                   double friction_angle_deg, bool static_elastic = false);
 /// The trial with the results of its mw-dem summary (the JSON file `summary_file`).
 CalibrationTrial with_results(CalibrationTrial trial, const std::filesystem::path& summary_file);
 /// The rod trial with the results of its mw-dem summary (E_fit_GPa, wall_s).
@@ -49,7 +51,8 @@ std::string describe(const CalibrationTrial& trial);
 using TrialRunner = std::function<std::filesystem::path(int trial, const std::vector<std::string>& options)>;
 /// Runs the calibration's trials until it has its result, a line per trial on `log`
 /// ("mw-calibrate: trial 3 (elastic): ...", describe()).
-void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_angle_deg, std::ostream& log);
+void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_angle_deg, std::ostream& log,
+                bool static_elastic = false);
 /// The rod's trials ("mw-calibrate rod: trial 1: E_dem 660 GPa -> E_DEM 220.6 GPa").
 void run_trials(RodCalibration& c, const TrialRunner& run, std::ostream& log);
 
@@ -68,8 +71,9 @@ struct TargetOrigins {
 /// then "targets": per target (E_st, nu_st, sigma_max) its value, unit, tolerance, the
 /// calibrated model's value and `origins`' record of where it was read from (nested: data for
 /// the reader, never an option value of `mw-dem --from`).
+/// `elastic_trials`: how the elastic trials ran ("dynamic" or "static"), recorded as elastic_trials.
 nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_angle_deg,
-                                           const TargetOrigins& origins = {});
+                                           const TargetOrigins& origins = {}, const std::string& elastic_trials = "dynamic");
 /// The "targets" of a calibration_summary as a table, one row per target: target, value,
 /// unit, tolerance, calibrated (the model's E_glob, nu_glob, sigma_dem), read_from (the file or
 /// "command line"), entry, source, cite and the first 12 hex digits of the file's SHA-256 (the

@@ -40,21 +40,15 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
 
   system.for_each_contact([&](std::size_t b, SphereSystem::ContactResult& r) __attribute__((always_inline)) {
     const std::uint32_t i = first[b], j = second[b];
-    const double ri = radius[i], rj = radius[j], sum = ri + rj;
-    const double u0 = overlap0[b], dist0 = sum - u0;
-    const double inv = 1.0 / (sum * dist0);  // one division for K_n and a0
-    const double kn = two_E_dem * ri * rj * dist0 * inv, ks = ratio * kn;
-    const double a0 = sum * sum * inv;
-    const Vec3 n{nx[b], ny[b], nz[b]};
-    const Vec3 dd = d[j] - d[i];
-    const double dn = dot(n, dd);
-    const Vec3 st = a0 * (dd - dn * n) - cross(ri * theta[i] + rj * theta[j], n);
-    const double fn = -kn * dn;
-    const Vec3 fs = -ks * st;
-    r.f = fn * n + fs;
-    r.c = cross(n, fs);
-    r.arm[0] = ri - 0.5 * u0;
-    r.arm[1] = rj - 0.5 * u0;
+    const double ri = radius[i], rj = radius[j];
+    const LinearBondResponse q =
+        linear_bond_response(two_E_dem, ratio, ri, rj, overlap0[b], Vec3{nx[b], ny[b], nz[b]}, d[j] - d[i], theta[i], theta[j]);
+    const double fn = q.fn, kn = q.kn, ks = q.ks, a0 = q.a0;
+    const Vec3 fs = q.fs;
+    r.f = q.f;
+    r.c = q.c;
+    r.arm[0] = q.arm_i;
+    r.arm[1] = q.arm_j;
     const double fs2 = norm2(fs);
     // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
     const double r_min = std::min(ri, rj);

@@ -15,6 +15,40 @@
 
 namespace mesowave::dem {
 
+/// One bond's response under the law above: the force f on the second sphere
+/// (the first gets -f), c = n0 x F_s (the torque on sphere i is -arm_i c, on j
+/// -arm_j c), and the parts the kernel also reports. The one definition of the
+/// law: the dynamic kernel runs it per bond and step, the static solve
+/// (dem/calibration/static_elastic.hpp) assembles the stiffness matrix from it.
+struct LinearBondResponse {
+  Vec3 f, c, fs;
+  double fn, kn, ks, a0;
+  double arm_i, arm_j;
+};
+
+/// `two_E_dem` = 2 E_dem, `ratio` = K_s / K_n, u0 the step-0 overlap, n the
+/// step-0 normal (first -> second), dd = d_j - d_i.
+__attribute__((always_inline)) inline LinearBondResponse linear_bond_response(double two_E_dem, double ratio, double ri,
+                                                                               double rj, double u0, const Vec3& n,
+                                                                               const Vec3& dd, const Vec3& theta_i,
+                                                                               const Vec3& theta_j) {
+  LinearBondResponse r;
+  const double sum = ri + rj, dist0 = sum - u0;
+  const double inv = 1.0 / (sum * dist0);  // one division for K_n and a0
+  r.kn = two_E_dem * ri * rj * dist0 * inv;
+  r.ks = ratio * r.kn;
+  r.a0 = sum * sum * inv;
+  const double dn = dot(n, dd);
+  const Vec3 st = r.a0 * (dd - dn * n) - cross(ri * theta_i + rj * theta_j, n);
+  r.fn = -r.kn * dn;
+  r.fs = -r.ks * st;
+  r.f = r.fn * n + r.fs;
+  r.c = cross(n, r.fs);
+  r.arm_i = ri - 0.5 * u0;
+  r.arm_j = rj - 0.5 * u0;
+  return r;
+}
+
 /// The kernel (sphere_system.hpp composes it).
 class LinearBondedNetwork : public ContactKernel {
 public:

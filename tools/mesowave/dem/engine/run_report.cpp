@@ -121,6 +121,34 @@ nlohmann::ordered_json to_json(const UniaxialTestResult& t) {
   return j;
 }
 
+nlohmann::ordered_json to_json(const StaticElasticResult& r) {
+  nlohmann::ordered_json j;
+  j["model"] = "linear";
+  j["method"] = "static";
+  j["solver"] = r.solver;
+  j["spheres"] = r.spheres;
+  j["bonds"] = r.bonds;
+  j["degrees_of_freedom"] = r.dofs;
+  j["stiffness_nonzeros"] = r.nonzeros;
+  const auto level = [](const StaticLevel& l) {
+    return nlohmann::ordered_json{{"stress_MPa", l.sigma_Pa / 1e6},       {"wall_travel_um", l.travel_m * 1e6},
+                                  {"axial_strain", l.axial_strain},       {"lateral_strain", l.lateral_strain},
+                                  {"wall_contacts", l.wall_contacts},     {"active_set_rounds", l.active_set_rounds}};
+  };
+  j["levels"] = nlohmann::ordered_json::array({level(r.level_b), level(r.level_a)});
+  j["solves"] = r.solves;
+  j["iterations_max"] = r.iterations_max;
+  j["iterations_total"] = r.iterations_total;
+  j["relative_residual_max"] = r.residual_max;
+  j["support_force_ratio"] = r.support_force_ratio;
+  j["setup_s"] = r.setup_s;
+  j["assemble_s"] = r.assemble_s;
+  j["solve_s"] = r.solve_s;
+  j["wall_s"] = r.wall_s;
+  j["test"] = to_json(r.test);
+  return j;
+}
+
 std::string signals_csv(const std::vector<signal::Signal>& signals) {
   bool shared = !signals.empty();
   for (const auto& s : signals)

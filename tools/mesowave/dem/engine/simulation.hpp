@@ -98,6 +98,13 @@ public:
   /// After an InputError the Simulation may hold part of the checkpoint: build a new one.
   void restore(const std::filesystem::path& file, const CheckpointIdentity& identity);
 
+  // What a solver other than the stepping loop reads (static_elastic.hpp):
+  // the scene as run, the placed actuators and sensors, the [test] specimen.
+  const Scene& scene() const { return scene_; }
+  const std::vector<std::unique_ptr<Actuator>>& actuators() const { return actuators_; }
+  std::vector<std::unique_ptr<Sensor>>& sensors() { return sensors_; }
+  const std::optional<UniaxialTestSpecimen>& test_specimen() const { return test_specimen_; }
+
 private:
   Scene scene_;
   SimulationOptions options_;

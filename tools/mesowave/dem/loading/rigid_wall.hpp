@@ -43,6 +43,15 @@ public:
   /// Position of the plane along its axis at time t [m].
   double plane_at(double t_s) const;
 
+  // The contact geometry, for the static solve (static_elastic.hpp).
+  const Face& face() const { return face_; }
+  double inward() const { return inward_; }  ///< +1 pushes toward +axis, -1 toward -axis
+  const VelocityRamp& motion() const { return motion_; }
+  /// k_w of each candidate sphere (spheres() order).
+  const std::vector<double>& contact_stiffness() const { return stiffness_; }
+  /// Surface-to-plane gap of each candidate at step 0 (>= 0; spheres() order).
+  double initial_gap_m(std::size_t i) const { return inward_ * (centre0_[i] - plane0_) - radius_[i]; }
+
 private:
   std::string name_;
   Face face_;
