@@ -49,6 +49,8 @@ public:
   double scaled_stiffness_row_sum_bound() const override { return base_.scaled_stiffness_row_sum_bound(); }
   std::size_t memory_bytes() const override { return 0; }
   int threads() const override { return 1; }
+  void save_state(StateGroup&) const override { unused(); }
+  void load_state(const StateGroup&) override { unused(); }
 
 private:
   [[noreturn]] static void unused() { throw std::logic_error("StaticField is read-only: sensors only sample it"); }
