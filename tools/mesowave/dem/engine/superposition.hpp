@@ -1,0 +1,106 @@
+#pragma once
+// One DEM run for every burst frequency (issue 17 item 1). The leapfrog step
+// (model.hpp) on the linearised network (or the axial chain) WITHOUT damping is
+// a discrete-time linear time-invariant system in the external forces: with
+// f_n the force of step n and h_n a sensor's sample after step n for a unit
+// force on step 0 alone (the impulse response),
+//
+//   y_n = sum_{k=0..n} f_k h_{n-k}                                       (discrete convolution)
+//
+// is exactly what a direct run with the force f records, up to round-off
+// (tests/dem/engine/superposition_test.cpp: ~1e-13 of the peak). So one run per
+// actuator with a unit impulse on step 0 gives the signals of every burst.
+// Why an impulse and not a broadband burst divided out in the frequency domain:
+// the impulse IS the discrete system's response, so the convolution is exact and
+// needs no division by a spectrum that is small somewhere (a Hann burst's
+// spectrum has zeros), no window and no wrap-around.
+//
+// The paper's local damping F (1 - alpha_d sgn(F v)) (Eq. 7) is positively
+// homogeneous but not additive, so with alpha_d > 0 the superposed signals are
+// an approximation whose error is measured, not assumed (docs/benchmarks.md,
+// "One run, every frequency"; the record states it and --check-kHz measures it
+// in the run itself against one direct run).
+//
+// Cost: one run per actuator (the step loop, as a direct run), then per
+// frequency a direct convolution, (samples) x (burst steps) multiply-adds per
+// sensor and actuator: for the cube's 30,000 steps, 6 sensors and the 1,000-step
+// 100 kHz burst 1.8e8, about 0.1-0.2 s; direct summation in a fixed order keeps
+// it exact to round-off and the same bits for any thread count (an FFT would be
+// cheaper only for much longer bursts).
+//
+// Refused (InputError, one line): a scene superposition does not hold for - an
+// actuator that is not a force (prescribed motion, walls: constraints and
+// one-sided contact), a sensor that is not a linear functional of the motion
+// (the magnitude of a vector, forces, strains, broken bonds), a [test], and a
+// model that is not linear (the full law: contact detection, breakage, friction).
+// The linear model's validity (peak bond force / strength below the scene's
+// bound) is checked by the triangle inequality: every bond force of the burst
+// run is sum_k f_k g_{n-k}, so its peak is at most sum_k |f_k| times the unit
+// impulse's peak ratio (exact bound without damping).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "mesowave/dem/engine/simulation.hpp"
+#include "mesowave/dem/packing/packing.hpp"
+#include "mesowave/dem/scene/scene.hpp"
+#include "mesowave/signal/signal.hpp"
+
+namespace mesowave::dem {
+
+/// Why superposition cannot run `scene` (what is not a linear force input or a
+/// linear sensor), or "" if it can (the model is checked by impulse_responses).
+std::string superposition_obstacle(const Scene& scene);
+
+/// Every sensor's response to a unit force impulse (1 N on step 0) of each actuator.
+struct ImpulseResponses {
+  RunReport report;  ///< the last impulse run's (wall_s and steps summed over the runs)
+  /// response[a][s][n]: sensor s after step n, actuator a pushing 1 N on step 0, the others nothing.
+  std::vector<std::vector<std::vector<double>>> response;
+  /// Each sensor's signal as a direct run writes it (name, quantity, unit, t0, dt), without samples.
+  std::vector<signal::Signal> layout;
+  std::vector<std::int64_t> interval_steps;  ///< each sensor's sampling interval in steps
+  std::vector<double> impulse_peak_force_ratio;  ///< per actuator: largest bond force / strength of its unit impulse
+  double wall_s = 0;                         ///< the impulse runs' step loops, in all
+};
+
+/// Runs the scene once per actuator with a unit impulse. InputError when
+/// superposition_obstacle says why not, or when the model chosen is not linear.
+ImpulseResponses impulse_responses(const Scene& scene, const Packing& packing, SimulationOptions options = {});
+
+/// The sensors' signals for the scene's bursts (every actuator's amplitude,
+/// cycles and delay as the scene has them) at centre frequency `frequency_hz`.
+struct SuperposedRun {
+  double frequency_hz = 0;
+  std::vector<signal::Signal> signals;  ///< the same samples and times as the direct run's
+  double force_l1_N = 0;                ///< sum over actuators and steps of |f_n|
+  double peak_force_ratio_bound = 0;    ///< sum over actuators of sum_n |f_n| x its impulse's peak ratio >= the direct run's (no damping)
+  double validity_bound = 0;            ///< what it was checked against (0: unbreakable bonds, none)
+  double convolution_s = 0;             ///< wall time of the convolutions
+};
+
+/// y_n = sum_k f_k h_{n-k} at each sensor's sampled steps. InputError if the
+/// peak bond force bound reaches the model's validity bound.
+SuperposedRun superpose(const ImpulseResponses& responses, const Scene& scene, double frequency_hz);
+
+/// Superposed against direct signals, per sensor (matched by position in the lists).
+struct SuperpositionError {
+  std::vector<std::string> sensors;
+  std::vector<double> pcc;                 ///< Pearson r of the two records
+  std::vector<double> max_diff_over_peak;  ///< max |superposed - direct| / max |direct|
+  double min_pcc = 1, max_diff_over_peak_all = 0;
+};
+/// InputError if the signals do not share names and time bases.
+SuperpositionError superposition_error(const std::vector<signal::Signal>& direct,
+                                       const std::vector<signal::Signal>& superposed);
+
+/// The record of one frequency: the impulse run's summary (run_report.hpp) with
+/// the burst's frequency, and "method": "superposition" with its validity:
+/// exact (no damping) or the local damping's measured error (`check`, if one
+/// was run; null otherwise).
+nlohmann::ordered_json superposition_summary(const ImpulseResponses& responses, const SuperposedRun& run,
+                                             const SuperpositionError* check = nullptr, double check_frequency_hz = 0);
+
+}  // namespace mesowave::dem
