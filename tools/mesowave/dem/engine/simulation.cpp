@@ -157,6 +157,11 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
         where));
     sensor_placements_.push_back(std::move(where));
   }
+  if (options_.impulse_actuator >= 0)
+    for (std::size_t i = 0; i < loads.size(); ++i)
+      sensors_.push_back(std::make_unique<MotionSensor>("actuator " + loads[i].spec->name, loads[i].spheres,
+                                                        MotionQuantity::velocity, (1.0 / norm(loads[i].direction)) * loads[i].direction,
+                                                        "actuator direction", 1, Vec3{}));
   double r_min = model_->radius(0);
   for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
   dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.E_dem_Pa, m.damping);

@@ -44,7 +44,9 @@ struct SimulationOptions {
   /// pushes a unit impulse (1 N on step 0, shared by its spheres, along its
   /// direction), the other actuators push nothing, every sensor samples every
   /// step, and the peak bond force / strength is left to the caller to check
-  /// (it scales with the burst the response is convolved with). -1: the scene's loads.
+  /// (it scales with the burst the response is convolved with). After the
+  /// scene's sensors the run adds one per actuator: the mean velocity of its
+  /// spheres along its direction, v_{n+1/2} (the power it puts in). -1: the scene's loads.
   int impulse_actuator = -1;
 };
 

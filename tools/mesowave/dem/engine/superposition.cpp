@@ -2,11 +2,16 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 
+#include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/core/units.hpp"
+#include "mesowave/dem/contact/bond_network.hpp"
 #include "mesowave/dem/engine/run_report.hpp"
+#include "mesowave/dem/engine/sphere_set.hpp"
 #include "mesowave/dem/loading/force_actuator.hpp"
 #include "mesowave/signal/correlation.hpp"
 #include "mesowave/signal/hann_burst.hpp"
@@ -19,6 +24,23 @@ double model_validity_bound(const RunReport& r, const Scene& scene) {
   if (r.choice.model == "linear") return scene.linear_validity_bound;
   if (r.choice.model == "chain" && scene.material.breakable()) return 1.0;
   return 0.0;
+}
+
+// max over bonds of max(K_n / s_n^2, a0 K_s / s_s^2), the strengths as the kernels take them.
+double bond_compliance_max(const Packing& packing, const CohesiveFrictionalMaterial& m) {
+  const SphereSet s = make_sphere_set(packing, m.density_kg_m3);
+  const BondNetwork b = make_bond_network(s, m.bond_factor);
+  const bool finite_T = std::isfinite(m.tensile_strength_Pa), finite_C = std::isfinite(m.cohesion_Pa);
+  double worst = 0;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    const double ri = s.radius_m[b.first[k]], rj = s.radius_m[b.second[k]], r = std::min(ri, rj);
+    const double kn = normal_stiffness(m, ri, rj), ks = shear_stiffness(m, ri, rj);
+    const double a0 = (ri + rj) / (ri + rj - b.overlap0_m[k]);
+    const double sn = finite_T ? m.tensile_strength_Pa * r * r : kn * r;
+    const double ss = finite_C ? m.cohesion_Pa * r * r : kn * r;
+    worst = std::max({worst, kn / (sn * sn), a0 * ks / (ss * ss)});
+  }
+  return worst;
 }
 
 }  // namespace
@@ -61,6 +83,12 @@ ImpulseResponses impulse_responses(const Scene& scene, const Packing& packing, S
     RunReport r = sim.run();
     out.wall_s += r.wall_s;
     out.impulse_peak_force_ratio.push_back(r.peak_force_ratio);
+    const std::size_t sensors = scene.sensors.size();  // then one velocity per actuator (simulation.hpp)
+    std::vector<std::vector<double>> velocity;
+    for (std::size_t s = sensors; s < r.signals.size(); ++s) velocity.push_back(std::move(r.signals[s].samples));
+    out.actuator_velocity.push_back(std::move(velocity));
+    r.signals.resize(sensors);
+    r.sensors.resize(sensors);
     std::vector<std::vector<double>> per_sensor;
     for (std::size_t s = 0; s < r.signals.size(); ++s) {
       if (a == 0) {
@@ -77,6 +105,7 @@ ImpulseResponses impulse_responses(const Scene& scene, const Packing& packing, S
     out.report = std::move(r);
   }
   out.report.wall_s = out.wall_s;
+  out.bond_compliance_max = bond_compliance_max(packing, out.report.material);
   return out;
 }
 
@@ -104,13 +133,41 @@ SuperposedRun superpose(const ImpulseResponses& h, const Scene& scene, double fr
       l1 += std::abs(f);
     }
     out.force_l1_N += l1;
-    out.peak_force_ratio_bound += l1 * h.impulse_peak_force_ratio[a];
+    out.triangle_bound += l1 * h.impulse_peak_force_ratio[a];
   }
+  // The work of the bursts: each actuator's velocity v_{k+1/2} = sum_c sum_j f_c,j hv_{c->a, k-j}, needed only
+  // where some force is not zero (W changes only there).
+  double work = 0;
+  {
+    std::vector<std::vector<double>> v(force.size(), std::vector<double>(std::size_t(steps), 0.0));
+    std::int64_t span_begin = steps, span_end = -1;
+    for (std::size_t a = 0; a < force.size(); ++a)
+      if (last[a] >= 0) span_begin = std::min(span_begin, first[a]), span_end = std::max(span_end, last[a]);
+    for (std::size_t a = 0; a < force.size(); ++a)
+      for (std::int64_t k = std::max<std::int64_t>(span_begin - 1, 0); k <= span_end; ++k) {
+        double sum = 0;
+        for (std::size_t c = 0; c < force.size(); ++c)
+          for (std::int64_t j = first[c]; j <= std::min(last[c], k); ++j)
+            sum += force[c][std::size_t(j)] * h.actuator_velocity[c][a][std::size_t(k - j)];
+        v[a][std::size_t(k)] = sum;
+      }
+    for (std::int64_t k = span_begin; k <= span_end; ++k) {
+      for (std::size_t a = 0; a < force.size(); ++a) {
+        const double before = k > 0 ? v[a][std::size_t(k - 1)] : 0.0;
+        work += force[a][std::size_t(k)] * (before + v[a][std::size_t(k)]) * 0.5 * dt;
+      }
+      out.work_max_J = std::max(out.work_max_J, work);
+    }
+  }
+  const double ratio = dt / h.report.dt_cr.eigenvalue_s;
+  out.energy_bound = ratio < 1 ? std::sqrt(2.0 * 1.01 * out.work_max_J * h.bond_compliance_max / (1.0 - ratio * ratio))
+                               : std::numeric_limits<double>::infinity();
+  out.peak_force_ratio_bound = std::min(out.triangle_bound, out.energy_bound);
   out.validity_bound = model_validity_bound(h.report, scene);
   if (out.validity_bound > 0 && !(out.peak_force_ratio_bound < out.validity_bound))
     throw InputError("superposition at " + format_number(frequency_hz / 1e3) +
                      " kHz: the peak bond force / strength may reach " + format_number(out.peak_force_ratio_bound) +
-                     " (sum |f_n| x the unit impulse's peak ratio), above the validity bound " +
+                     " (the lower of its bounds by the impulse's peak and by the work done), above the validity bound " +
                      format_number(out.validity_bound) + " (linear_validity_bound); rerun directly with --model full");
 
   for (std::size_t s = 0; s < h.layout.size(); ++s) {
@@ -162,8 +219,23 @@ SuperpositionError superposition_error(const std::vector<signal::Signal>& direct
   return e;
 }
 
+nlohmann::ordered_json to_json(const SuperpositionCheck& check) {
+  nlohmann::ordered_json c;
+  c["frequency_kHz"] = check.frequency_hz / units::kHz;
+  c["against"] = "a direct run of the same scene at this frequency";
+  c["min_pcc"] = check.error.min_pcc;
+  c["max_diff_over_peak"] = check.error.max_diff_over_peak_all;
+  c["direct_wall_s"] = check.direct_wall_s;
+  nlohmann::ordered_json per = nlohmann::ordered_json::array();
+  for (std::size_t s = 0; s < check.error.sensors.size(); ++s)
+    per.push_back({{"sensor", check.error.sensors[s]}, {"pcc", check.error.pcc[s]},
+                   {"max_diff_over_peak", check.error.max_diff_over_peak[s]}});
+  c["sensors"] = per;
+  return c;
+}
+
 nlohmann::ordered_json superposition_summary(const ImpulseResponses& h, const SuperposedRun& run,
-                                             const SuperpositionError* check, double check_frequency_hz) {
+                                             const std::vector<SuperpositionCheck>& checks) {
   RunReport r = h.report;
   for (auto& a : r.actuator_placements) a.frequency_hz = run.frequency_hz;
   for (auto& a : r.actuators)
@@ -194,26 +266,82 @@ nlohmann::ordered_json superposition_summary(const ImpulseResponses& h, const Su
   v["impulse_wall_s"] = h.wall_s;
   v["convolution_s"] = run.convolution_s;
   v["force_l1_N"] = run.force_l1_N;
-  v["peak_force_ratio"] = "a bound: sum_n |f_n| x the unit impulse's peak bond force / strength (triangle inequality)";
-  if (check) {
-    nlohmann::ordered_json c;
-    c["frequency_kHz"] = check_frequency_hz / 1e3;
-    c["against"] = "a direct run of the same scene at this frequency";
-    c["min_pcc"] = check->min_pcc;
-    c["max_diff_over_peak"] = check->max_diff_over_peak_all;
-    nlohmann::ordered_json per = nlohmann::ordered_json::array();
-    for (std::size_t s = 0; s < check->sensors.size(); ++s)
-      per.push_back({{"sensor", check->sensors[s]}, {"pcc", check->pcc[s]},
-                     {"max_diff_over_peak", check->max_diff_over_peak[s]}});
-    c["sensors"] = per;
-    v["check"] = c;
-  } else {
-    v["check"] = nullptr;
+  v["peak_force_ratio"] = "a bound, the lower of: sum_n |f_n| x the unit impulse's peak ratio (triangle inequality) and "
+                         "sqrt(2 W_max max_b compliance / (1 - (dt/dt_eig)^2)) (energy: W_max the work done)";
+  v["triangle_bound"] = run.triangle_bound;
+  v["energy_bound"] = std::isfinite(run.energy_bound) ? nlohmann::ordered_json(run.energy_bound) : nullptr;
+  v["work_max_J"] = run.work_max_J;
+  v["check"] = nullptr;
+  v["checks"] = nlohmann::ordered_json::array();
+  for (const auto& c : checks) {
+    if (c.frequency_hz == run.frequency_hz) v["check"] = to_json(c);
+    v["checks"].push_back({{"frequency_kHz", c.frequency_hz / units::kHz}, {"min_pcc", c.error.min_pcc},
+                           {"max_diff_over_peak", c.error.max_diff_over_peak_all}});
   }
   j["superposition"] = v;
   for (const auto& [key, value] : base.items())
     if (key != "scene" && key != "energy") j[key] = value;
   return j;
+}
+
+SuperposedSet run_superposed(const Scene& scene, const Packing& packing, const SimulationOptions& options,
+                             const std::vector<double>& frequencies_kHz, const std::vector<double>& check_kHz) {
+  if (frequencies_kHz.empty()) throw InputError("--frequencies-kHz names no frequency");
+  for (std::size_t i = 0; i < frequencies_kHz.size(); ++i) {
+    require_positive("--frequencies-kHz", frequencies_kHz[i], "kHz");
+    for (std::size_t j = 0; j < i; ++j)
+      if (frequencies_kHz[j] == frequencies_kHz[i])
+        throw InputError("--frequencies-kHz names " + format_number(frequencies_kHz[i]) + " kHz twice");
+  }
+  for (double c : check_kHz)
+    if (std::find(frequencies_kHz.begin(), frequencies_kHz.end(), c) == frequencies_kHz.end())
+      throw InputError("--check-kHz (" + format_number(c) + " kHz) must be one of --frequencies-kHz");
+  SuperposedSet set;
+  set.responses = impulse_responses(scene, packing, options);
+  std::vector<SuperposedRun> runs;
+  for (double f : frequencies_kHz) runs.push_back(superpose(set.responses, scene, f * units::kHz));
+  for (double c : check_kHz) {
+    Scene direct = scene;
+    for (auto& a : direct.actuators) a.frequency_hz = c * units::kHz;
+    SimulationOptions o = options;
+    o.on_progress = nullptr;
+    o.on_snapshot = nullptr;
+    const RunReport r = Simulation(direct, packing, o).run();
+    for (const auto& run : runs)
+      if (run.frequency_hz == c * units::kHz)
+        set.checks.push_back({run.frequency_hz, superposition_error(r.signals, run.signals), r.wall_s});
+  }
+  nlohmann::ordered_json per = nlohmann::ordered_json::array();
+  for (auto& run : runs) {
+    nlohmann::ordered_json summary = superposition_summary(set.responses, run, set.checks);
+    per.push_back({{"frequency_kHz", run.frequency_hz / units::kHz},
+                   {"peak_force_ratio_bound", run.peak_force_ratio_bound},
+                   {"convolution_s", run.convolution_s}});
+    set.frequencies.push_back({std::move(run), std::move(summary)});
+  }
+  set.summary = superposition_summary(set.responses, set.frequencies.front().run, {});
+  auto& v = set.summary["superposition"];
+  v["convolution_s"] = nullptr;
+  v.erase("check");
+  v["checks"] = nlohmann::ordered_json::array();
+  for (const auto& c : set.checks) v["checks"].push_back(to_json(c));
+  set.summary["frequencies"] = per;
+  set.summary["peak_force_ratio"] = nullptr;  // one per frequency: "frequencies"
+  for (auto& a : set.summary["actuator_loads"]) a["frequency_hz"] = nullptr;
+  return set;
+}
+
+std::string frequency_text(double frequency_hz) { return format_number(frequency_hz / units::kHz); }
+
+std::filesystem::path frequency_path(const std::string& pattern, const std::string& option, double frequency_hz) {
+  const std::string key = "{f}";
+  if (pattern.find(key) == std::string::npos)
+    throw InputError(option + " (" + pattern + ") needs {f}, the frequency in kHz, or every frequency writes one file");
+  std::string path = pattern;
+  const std::string text = frequency_text(frequency_hz);
+  for (std::size_t at = path.find(key); at != std::string::npos; at = path.find(key, at + text.size()))
+    path.replace(at, key.size(), text);
+  return path;
 }
 
 }  // namespace mesowave::dem

@@ -34,10 +34,23 @@
 // (the magnitude of a vector, forces, strains, broken bonds), a [test], and a
 // model that is not linear (the full law: contact detection, breakage, friction).
 // The linear model's validity (peak bond force / strength below the scene's
-// bound) is checked by the triangle inequality: every bond force of the burst
-// run is sum_k f_k g_{n-k}, so its peak is at most sum_k |f_k| times the unit
-// impulse's peak ratio (exact bound without damping).
+// bound) cannot be measured without the burst run's bond forces, so it is
+// bounded, by the lower of two bounds that hold without damping (and with it,
+// as dissipation only lowers the stored energy):
+//  - the triangle inequality: a bond force of the burst run is sum_k f_k g_{n-k},
+//    so its peak is at most sum_k |f_k| times the unit impulse's peak ratio
+//    (loose, 40-100x: g is broadband, the burst is not);
+//  - energy: leapfrog conserves H = x.K x / 2 + v_{n-1/2}.M v_{n+1/2} / 2, which
+//    equals the work W_n = sum_k f_k . (v_{k-1/2} + v_{k+1/2}) dt / 2 the
+//    actuators did (their velocities come from the impulse run too). Per mode
+//    H = w^2 x^2 (1 - (w dt/2)^2) / 2 + vbar^2 / 2, so the elastic energy, and
+//    with it any one bond's F_n^2 / (2 K_n) + |F_s|^2 / (2 a0 K_s), is at most
+//    max W / (1 - (dt / dt_eig)^2), dt_eig = 2 / sqrt(lambda_max) (Lanczos).
+//    Yade's law with unequal radii is slightly non-symmetric and its energy
+//    wanders by ~1e-3 (energy_test.cpp): the bound takes 1 % more energy.
 #include <cstdint>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +76,11 @@ struct ImpulseResponses {
   std::vector<signal::Signal> layout;
   std::vector<std::int64_t> interval_steps;  ///< each sensor's sampling interval in steps
   std::vector<double> impulse_peak_force_ratio;  ///< per actuator: largest bond force / strength of its unit impulse
+  /// actuator_velocity[c][a]: actuator a's mean velocity along its direction, v_{n+1/2}, for the impulse of c.
+  std::vector<std::vector<std::vector<double>>> actuator_velocity;
+  /// max over bonds of max(K_n / s_n^2, a0 K_s / s_s^2) [1/(N m)], s the strengths T R^2, C R^2
+  /// (K_n R for bonds that never break, as the kernels): one bond's (force / strength)^2 <= 2 x this x its energy.
+  double bond_compliance_max = 0;
   double wall_s = 0;                         ///< the impulse runs' step loops, in all
 };
 
@@ -76,7 +94,11 @@ struct SuperposedRun {
   double frequency_hz = 0;
   std::vector<signal::Signal> signals;  ///< the same samples and times as the direct run's
   double force_l1_N = 0;                ///< sum over actuators and steps of |f_n|
-  double peak_force_ratio_bound = 0;    ///< sum over actuators of sum_n |f_n| x its impulse's peak ratio >= the direct run's (no damping)
+  /// >= the direct run's peak bond force / strength (without damping; the lower of the two bounds):
+  double peak_force_ratio_bound = 0;
+  double triangle_bound = 0;  ///< sum over actuators of sum_n |f_n| x its impulse's peak ratio
+  double energy_bound = 0;    ///< sqrt(2 W_max bond_compliance_max / (1 - (dt / dt_eig)^2)) x 1.005
+  double work_max_J = 0;      ///< largest work the bursts have done, W_n = sum_k f_k (v_{k-1/2} + v_{k+1/2}) dt / 2
   double validity_bound = 0;            ///< what it was checked against (0: unbreakable bonds, none)
   double convolution_s = 0;             ///< wall time of the convolutions
 };
@@ -96,11 +118,43 @@ struct SuperpositionError {
 SuperpositionError superposition_error(const std::vector<signal::Signal>& direct,
                                        const std::vector<signal::Signal>& superposed);
 
+/// A direct run's comparison with the superposed signals at its frequency.
+struct SuperpositionCheck {
+  double frequency_hz = 0;
+  SuperpositionError error;
+  double direct_wall_s = 0;  ///< the direct run's step loop
+};
+nlohmann::ordered_json to_json(const SuperpositionCheck& check);
+
 /// The record of one frequency: the impulse run's summary (run_report.hpp) with
 /// the burst's frequency, and "method": "superposition" with its validity:
-/// exact (no damping) or the local damping's measured error (`check`, if one
-/// was run; null otherwise).
+/// exact (no damping) or the local damping's measured error ("check" at this
+/// frequency if a direct run was made there, "checks" all that were made).
 nlohmann::ordered_json superposition_summary(const ImpulseResponses& responses, const SuperposedRun& run,
-                                             const SuperpositionError* check = nullptr, double check_frequency_hz = 0);
+                                             const std::vector<SuperpositionCheck>& checks = {});
+
+/// What mw-dem run --frequencies-kHz does: the impulse runs, the signals of
+/// every frequency with its record, and optionally direct runs at some of the
+/// frequencies (`check_kHz`) whose measured errors every record states.
+struct SuperposedFrequency {
+  SuperposedRun run;
+  nlohmann::ordered_json summary;  ///< superposition_summary
+};
+struct SuperposedSet {
+  ImpulseResponses responses;
+  std::vector<SuperposedFrequency> frequencies;
+  std::vector<SuperpositionCheck> checks;
+  nlohmann::ordered_json summary;   ///< the whole run: the validity, each frequency's bound and cost
+};
+/// InputError for a frequency that is not positive or given twice, a
+/// check frequency not among them, and whatever impulse_responses / superpose refuse.
+SuperposedSet run_superposed(const Scene& scene, const Packing& packing, const SimulationOptions& options,
+                             const std::vector<double>& frequencies_kHz, const std::vector<double>& check_kHz = {});
+
+/// The frequency as file names and metric names write it: 100, 150, 212.5 (kHz).
+std::string frequency_text(double frequency_hz);
+/// `pattern` with every {f} replaced by frequency_text; InputError naming
+/// `option` if it has no {f} (every frequency would write the same file).
+std::filesystem::path frequency_path(const std::string& pattern, const std::string& option, double frequency_hz);
 
 }  // namespace mesowave::dem
