@@ -46,7 +46,9 @@ struct SimulationOptions {
   /// step, and the peak bond force / strength is left to the caller to check
   /// (it scales with the burst the response is convolved with). After the
   /// scene's sensors the run adds one per actuator: the mean velocity of its
-  /// spheres along its direction, v_{n+1/2} (the power it puts in). -1: the scene's loads.
+  /// spheres along its direction, v_{n+1/2} (the power it puts in), then each
+  /// motion sensor's displacement twin (the same spheres and component; what a
+  /// viscous damping windows, superposition.hpp). -1: the scene's loads.
   int impulse_actuator = -1;
 };
 

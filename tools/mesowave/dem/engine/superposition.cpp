@@ -65,6 +65,13 @@ ImpulseResponses impulse_responses(const Scene& scene, const Packing& packing, S
   if (const std::string why = superposition_obstacle(scene); !why.empty())
     throw InputError("superposition is not valid for scene " + scene.name + ": " + why);
   ImpulseResponses out;
+  // Viscous damping: the impulse runs undamped, each frequency windows it with its own c (superposition.hpp).
+  Scene run_scene = scene;
+  if (scene.damping_law == "viscous") {
+    out.viscous_alpha = scene.material.damping;
+    run_scene.material.damping = 0;
+    run_scene.damping_law = "local";
+  }
   const auto progress = options.on_progress;
   const std::size_t actuators = scene.actuators.size();
   options.on_snapshot = nullptr;
@@ -75,7 +82,7 @@ ImpulseResponses impulse_responses(const Scene& scene, const Packing& packing, S
       o.on_progress = [&progress, a, actuators](std::int64_t done, std::int64_t total) {
         progress(std::int64_t(a) * total + done, std::int64_t(actuators) * total);
       };
-    Simulation sim(scene, packing, o);
+    Simulation sim(run_scene, packing, o);
     const ModelChoice& choice = sim.choice();
     if (choice.model != "linear" && choice.model != "chain")
       throw InputError("superposition needs a linear model, but scene " + scene.name + " runs on the " + choice.model +
@@ -84,9 +91,12 @@ ImpulseResponses impulse_responses(const Scene& scene, const Packing& packing, S
     out.wall_s += r.wall_s;
     out.impulse_peak_force_ratio.push_back(r.peak_force_ratio);
     const std::size_t sensors = scene.sensors.size();  // then one velocity per actuator (simulation.hpp)
-    std::vector<std::vector<double>> velocity;
-    for (std::size_t s = sensors; s < r.signals.size(); ++s) velocity.push_back(std::move(r.signals[s].samples));
+    std::vector<std::vector<double>> velocity, displacement;
+    for (std::size_t s = sensors; s < sensors + actuators; ++s) velocity.push_back(std::move(r.signals[s].samples));
+    for (std::size_t s = sensors + actuators; s < r.signals.size(); ++s)
+      displacement.push_back(std::move(r.signals[s].samples));
     out.actuator_velocity.push_back(std::move(velocity));
+    out.displacement.push_back(std::move(displacement));
     r.signals.resize(sensors);
     r.sensors.resize(sensors);
     std::vector<std::vector<double>> per_sensor;
@@ -105,6 +115,11 @@ ImpulseResponses impulse_responses(const Scene& scene, const Packing& packing, S
     out.report = std::move(r);
   }
   out.report.wall_s = out.wall_s;
+  if (out.viscous_alpha > 0) {
+    out.report.material.damping = out.viscous_alpha;  // the record states the scene's alpha_d and its law
+    out.report.notes.push_back("damping_law viscous: the impulse ran undamped; each frequency's signals are its "
+                               "response windowed by r^n, r = sqrt((1 - c dt/2)/(1 + c dt/2)), c = 4 alpha_d f");
+  }
   out.bond_compliance_max = bond_compliance_max(packing, out.report.material);
   return out;
 }
@@ -115,6 +130,10 @@ SuperposedRun superpose(const ImpulseResponses& h, const Scene& scene, double fr
   const std::int64_t steps = h.report.steps;
   SuperposedRun out;
   out.frequency_hz = frequency_hz;
+  // Viscous damping: the window r^m / (1 + c dt/2) and the force that drives the undamped y (superposition.hpp).
+  const double c = 4.0 * h.viscous_alpha * frequency_hz, half = 0.5 * c * dt;
+  const double r_step = std::sqrt((1.0 - half) / (1.0 + half)), s_factor = std::sqrt(1.0 - half * half);
+  out.viscous_damping_1_s = c;
   // The force of every step, as ForceActuator applies it (burst_force_N at t_n = n dt).
   std::vector<std::vector<double>> force(scene.actuators.size());
   std::vector<std::int64_t> first(force.size(), 0), last(force.size(), -1);  // the nonzero span
@@ -138,6 +157,13 @@ SuperposedRun superpose(const ImpulseResponses& h, const Scene& scene, double fr
   // The work of the bursts: each actuator's velocity v_{k+1/2} = sum_c sum_j f_c,j hv_{c->a, k-j}, needed only
   // where some force is not zero (W changes only there).
   double work = 0;
+  // With viscous damping the stored energy is r^2n that of y, which the modulated force r^-k f_k / s drives.
+  std::vector<std::vector<double>> drive = force;
+  if (c > 0)
+    for (auto& g : drive) {
+      double scale = 1.0 / s_factor;
+      for (double& x : g) x *= scale, scale /= r_step;
+    }
   {
     std::vector<std::vector<double>> v(force.size(), std::vector<double>(std::size_t(steps), 0.0));
     std::int64_t span_begin = steps, span_end = -1;
@@ -148,13 +174,13 @@ SuperposedRun superpose(const ImpulseResponses& h, const Scene& scene, double fr
         double sum = 0;
         for (std::size_t c = 0; c < force.size(); ++c)
           for (std::int64_t j = first[c]; j <= std::min(last[c], k); ++j)
-            sum += force[c][std::size_t(j)] * h.actuator_velocity[c][a][std::size_t(k - j)];
+            sum += drive[c][std::size_t(j)] * h.actuator_velocity[c][a][std::size_t(k - j)];
         v[a][std::size_t(k)] = sum;
       }
     for (std::int64_t k = span_begin; k <= span_end; ++k) {
       for (std::size_t a = 0; a < force.size(); ++a) {
         const double before = k > 0 ? v[a][std::size_t(k - 1)] : 0.0;
-        work += force[a][std::size_t(k)] * (before + v[a][std::size_t(k)]) * 0.5 * dt;
+        work += drive[a][std::size_t(k)] * (before + v[a][std::size_t(k)]) * 0.5 * dt;
       }
       out.work_max_J = std::max(out.work_max_J, work);
     }
@@ -170,24 +196,53 @@ SuperposedRun superpose(const ImpulseResponses& h, const Scene& scene, double fr
                      " (the lower of its bounds by the impulse's peak and by the work done), above the validity bound " +
                      format_number(out.validity_bound) + " (linear_validity_bound); rerun directly with --model full");
 
+  std::vector<double> window;  // r^m / (1 + c dt/2)
+  if (c > 0) {
+    window.resize(std::size_t(steps));
+    double w = 1.0 / (1.0 + half);
+    for (auto& x : window) x = w, w *= r_step;
+  }
   for (std::size_t s = 0; s < h.layout.size(); ++s) {
     signal::Signal sig = h.layout[s];
     const std::int64_t every = h.interval_steps[s];
     const std::int64_t samples = (steps - 1) / every + 1;
     sig.samples.assign(std::size_t(samples), 0.0);
     double* y = sig.samples.data();
-    // Each output is its own sum in a fixed order: the same bits for any thread count.
+    if (c == 0) {
+      // Each output is its own sum in a fixed order: the same bits for any thread count.
 #pragma omp parallel for schedule(static)
-    for (std::int64_t m = 0; m < samples; ++m) {
-      const std::int64_t n = m * every;
-      double sum = 0;
-      for (std::size_t a = 0; a < force.size(); ++a) {
-        const double* f = force[a].data();
-        const double* r = h.response[a][s].data();
-        const std::int64_t end = std::min(last[a], n);
-        for (std::int64_t k = first[a]; k <= end; ++k) sum += f[k] * r[n - k];
+      for (std::int64_t m = 0; m < samples; ++m) {
+        const std::int64_t n = m * every;
+        double sum = 0;
+        for (std::size_t a = 0; a < force.size(); ++a) {
+          const double* f = force[a].data();
+          const double* resp = h.response[a][s].data();
+          const std::int64_t end = std::min(last[a], n);
+          for (std::int64_t k = first[a]; k <= end; ++k) sum += f[k] * resp[n - k];
+        }
+        y[m] = sum;
       }
-      y[m] = sum;
+    } else {
+      // The damped displacement after every step, then the sensor's quantity by the leapfrog's differences.
+      std::vector<double> x(std::size_t(steps), 0.0);
+#pragma omp parallel for schedule(static)
+      for (std::int64_t n = 0; n < steps; ++n) {
+        double sum = 0;
+        for (std::size_t a = 0; a < force.size(); ++a) {
+          const double* f = force[a].data();
+          const double* resp = h.displacement[a][s].data();
+          const std::int64_t end = std::min(last[a], n);
+          for (std::int64_t k = first[a]; k <= end; ++k) sum += f[k] * (window[std::size_t(n - k)] * resp[n - k]);
+        }
+        x[std::size_t(n)] = sum;
+      }
+      auto at = [&](std::int64_t n) { return n >= 0 ? x[std::size_t(n)] : 0.0; };  // x_{n+1}; x_0 = x_{-1} = 0
+      for (std::int64_t m = 0; m < samples; ++m) {
+        const std::int64_t n = m * every;
+        if (sig.quantity == "displacement") y[m] = at(n);
+        else if (sig.quantity == "velocity") y[m] = (at(n) - at(n - 1)) / dt;
+        else y[m] = ((at(n) - at(n - 1)) - (at(n - 1) - at(n - 2))) / (dt * dt);
+      }
     }
     out.signals.push_back(std::move(sig));
   }
@@ -254,11 +309,17 @@ nlohmann::ordered_json superposition_summary(const ImpulseResponses& h, const Su
       "y_n = sum_k f_k h_{n-k}, the burst f convolved with the sensor's response h to a unit impulse of the "
       "actuator on step 0 (one run per actuator for every frequency)";
   nlohmann::ordered_json v;
+  const bool viscous = h.viscous_alpha > 0;
   v["exact"] = alpha == 0;
   v["damping"] = alpha;
-  v["why"] = alpha == 0
-                 ? "without damping the step is a linear time-invariant system in the forces: the convolution equals "
-                   "a direct run to round-off"
+  v["damping_law"] = viscous ? "viscous" : "local";
+  if (viscous) v["viscous_damping_1_s"] = run.viscous_damping_1_s;
+  v["why"] = alpha == 0 ? "without damping the step is a linear time-invariant system in the forces: the convolution "
+                          "equals a direct run to round-off"
+             : viscous
+                 ? "viscous mass-proportional damping c = 4 alpha_d f is linear: the undamped impulse response "
+                   "windowed by r^n, r = sqrt((1 - c dt/2)/(1 + c dt/2)), is the damped one but for a stiffness "
+                   "shift of c^2 M / 4 (relative frequency alpha_d^2 / (2 pi^2)); the error is measured (check)"
                  : "the local damping F (1 - alpha_d sgn(F v)) (Eq. 7) is not additive: the superposed signals "
                    "approximate a direct run's; the error is measured, not assumed (check; docs/benchmarks.md, "
                    "\"One run, every frequency\")";

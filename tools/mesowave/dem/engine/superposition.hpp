@@ -15,6 +15,19 @@
 // needs no division by a spectrum that is small somewhere (a Hann burst's
 // spectrum has zeros), no window and no wrap-around.
 //
+// Viscous mass-proportional damping (scene.hpp: [model] damping_law = "viscous",
+// c = 4 alpha_d f, the same amplitude loss per cycle as Eq. 7 at the burst's
+// centre frequency f) is linear, and the damped step is the undamped one
+// windowed: the implicit-midpoint update (sphere_system.cpp)
+//   (1 + c dt/2) x_{n+1} = 2 x_n - (1 - c dt/2) x_{n-1} + dt^2 M^-1 (f_n - K x_n)
+// with x_n = r^n y_n, r = sqrt((1 - c dt/2)/(1 + c dt/2)), is the undamped step for
+// y driven by r^-n f_n / s, s = sqrt(1 - (c dt/2)^2), with K shifted by -c^2 M / 4
+// (relative frequency alpha_d^2 / (2 pi^2) ~ 5e-6, neglected). So ONE undamped
+// run serves every frequency, each with its own c:
+//   x_{n+1} = sum_k f_k r^{n-k} X_{n-k} / (1 + c dt/2),   X the undamped displacement response,
+// and the velocity and acceleration are its first and second differences over dt,
+// as the leapfrog defines them.
+//
 // The paper's local damping F (1 - alpha_d sgn(F v)) (Eq. 7) is positively
 // homogeneous but not additive, so with alpha_d > 0 the superposed signals are
 // an approximation whose error is measured, not assumed (docs/benchmarks.md,
@@ -78,6 +91,10 @@ struct ImpulseResponses {
   std::vector<double> impulse_peak_force_ratio;  ///< per actuator: largest bond force / strength of its unit impulse
   /// actuator_velocity[c][a]: actuator a's mean velocity along its direction, v_{n+1/2}, for the impulse of c.
   std::vector<std::vector<std::vector<double>>> actuator_velocity;
+  /// displacement[a][s][n]: sensor s's displacement twin (same spheres and component), x_{n+1} - x_0.
+  std::vector<std::vector<std::vector<double>>> displacement;
+  /// [model] damping_law viscous: the scene's alpha_d, each frequency's c = 4 alpha_d f (the impulse ran undamped); 0 otherwise.
+  double viscous_alpha = 0;
   /// max over bonds of max(K_n / s_n^2, a0 K_s / s_s^2) [1/(N m)], s the strengths T R^2, C R^2
   /// (K_n R for bonds that never break, as the kernels): one bond's (force / strength)^2 <= 2 x this x its energy.
   double bond_compliance_max = 0;
@@ -101,6 +118,7 @@ struct SuperposedRun {
   double work_max_J = 0;      ///< largest work the bursts have done, W_n = sum_k f_k (v_{k-1/2} + v_{k+1/2}) dt / 2
   double validity_bound = 0;            ///< what it was checked against (0: unbreakable bonds, none)
   double convolution_s = 0;             ///< wall time of the convolutions
+  double viscous_damping_1_s = 0;       ///< c = 4 alpha_d f of damping_law viscous (0: none)
 };
 
 /// y_n = sum_k f_k h_{n-k} at each sensor's sampled steps. InputError if the
