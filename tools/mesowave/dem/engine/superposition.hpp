@@ -117,12 +117,14 @@ struct SuperposedRun {
   double energy_bound = 0;    ///< sqrt(2 W_max bond_compliance_max / (1 - (dt / dt_eig)^2)) x 1.005
   double work_max_J = 0;      ///< largest work the bursts have done, W_n = sum_k f_k (v_{k-1/2} + v_{k+1/2}) dt / 2
   double validity_bound = 0;            ///< what it was checked against (0: unbreakable bonds, none)
+  bool bound_proves_validity = true;    ///< peak_force_ratio_bound < validity_bound (or no bound)
   double convolution_s = 0;             ///< wall time of the convolutions
   double viscous_damping_1_s = 0;       ///< c = 4 alpha_d f of damping_law viscous (0: none)
 };
 
-/// y_n = sum_k f_k h_{n-k} at each sensor's sampled steps. InputError if the
-/// peak bond force bound reaches the model's validity bound.
+/// y_n = sum_k f_k h_{n-k} at each sensor's sampled steps, and the bound on the
+/// peak bond force / strength (run_superposed refuses a frequency whose bound does
+/// not prove the linear model valid unless a direct run there measures it).
 SuperposedRun superpose(const ImpulseResponses& responses, const Scene& scene, double frequency_hz);
 
 /// Superposed against direct signals, per sensor (matched by position in the lists).
@@ -141,6 +143,7 @@ struct SuperpositionCheck {
   double frequency_hz = 0;
   SuperpositionError error;
   double direct_wall_s = 0;  ///< the direct run's step loop
+  double direct_peak_force_ratio = 0;  ///< what the direct run measured (its own validity check passed)
 };
 nlohmann::ordered_json to_json(const SuperpositionCheck& check);
 
@@ -165,7 +168,8 @@ struct SuperposedSet {
   nlohmann::ordered_json summary;   ///< the whole run: the validity, each frequency's bound and cost
 };
 /// InputError for a frequency that is not positive or given twice, a
-/// check frequency not among them, and whatever impulse_responses / superpose refuse.
+/// check frequency not among them, whatever impulse_responses refuses, and a
+/// frequency whose bound does not prove the linear model valid and is not checked.
 SuperposedSet run_superposed(const Scene& scene, const Packing& packing, const SimulationOptions& options,
                              const std::vector<double>& frequencies_kHz, const std::vector<double>& check_kHz = {});
 
