@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "mesowave/dem/packing/packing.hpp"
@@ -131,6 +132,77 @@ inline SensorSpec motion_sensor(const char* name, SphereTarget target, MotionQua
   s.target = target;
   s.component = component;
   return s;
+}
+
+/// FCC blocks for crushing_scene_toml: 4 cells^3 spheres, radii 0.66-0.74 mm on a 2 mm cell.
+inline Packing crushing_block(int cells) { return fcc_packing(cells, 2.0e-3, 0.66e-3, 0.74e-3, 0.02, 7, 2290); }
+
+/// A compression to failure of a crushing_block between walls on z (the shipped
+/// cube-compression scene's sensors and [test], made fast): the upper wall at
+/// 0.5 m/s crushes the block within a few thousand steps, so bonds break, contacts
+/// are detected and the stop rule watches the peak (3 cells: 3206 steps, 52 of
+/// 448 bonds broken, the stop 50 % below the peak).
+inline std::string crushing_scene_toml(const std::string& packing_file) {
+  std::string text = R"(
+[packing]
+file = "PACKING"
+[material]
+E_dem_GPa = 23.31
+nu_dem = 0.32
+friction_angle_deg = 18.0
+T_MPa = 24.4
+C_MPa = 24.4
+damping = 0.08
+bond_factor = 1.1
+[time]
+dt_ns = 40
+duration_ms = 0.3
+[model]
+choice = "full"
+[[actuator]]
+name = "bottom"
+kind = "wall"
+face = "z-"
+[[actuator]]
+name = "top"
+kind = "wall"
+face = "z+"
+velocity_mm_s = 500.0
+ramp_us = 20
+[[sensor]]
+name = "P_top"
+quantity = "force"
+actuator = "top"
+sample_interval_ns = 200
+[[sensor]]
+name = "P_bottom"
+quantity = "force"
+actuator = "bottom"
+sample_interval_ns = 200
+[[sensor]]
+name = "V"
+quantity = "strain"
+component = "z"
+face = "x-"
+centre_rel = [0.0, 0.5, 0.5]
+gauge_rel = 0.5
+patch_mm = [3.0, 3.0]
+sample_interval_ns = 200
+[[sensor]]
+name = "broken"
+quantity = "broken_bonds"
+sample_interval_ns = 200
+[test]
+kind = "compression"
+load = ["P_top", "P_bottom"]
+axial = ["V"]
+broken_bonds = "broken"
+stop_drop_pct = 50.0
+stop_armed_above_MPa = 1.0
+inertial_number_bound = 0.0
+)";
+  text.replace(text.find("PACKING"), 7, packing_file);
+  return text;
 }
 
 }  // namespace mesowave::dem::testing

@@ -68,8 +68,9 @@ TEST(BlastSlab, CracksObeyTheSpeedSpacingAndRadiusLimitsAndTheSpeedLimitActs) {
   // normal to clear the nodes (dynamic_cracks.cpp): initiation centres at least 2 a - 0.8 a apart
   for (std::size_t i = 0; i < r.events.size(); ++i)
     for (std::size_t j = i + 1; j < r.events.size(); ++j)
-      if (r.events[i].initiation && r.events[j].initiation)
+      if (r.events[i].initiation && r.events[j].initiation) {
         EXPECT_GE((r.events[i].from - r.events[j].from).norm(), (r.min_spacing_m - 0.8 * r.segment_length_m) * (1 - 1e-9));
+      }
   // direction: no segment turns more than 2 asin(a / (2 R_min)) (60 degrees for R_min = a) from the last
   const double limit = 2 * std::asin(r.segment_length_m / (2 * r.min_radius_m));
   EXPECT_LE(largest_turn(r), limit + 1e-9);

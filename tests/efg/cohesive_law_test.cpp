@@ -15,7 +15,7 @@ namespace {
 
 constexpr double f_t = 2.4e6, G_f = 113;  // the Koermeling-Reinhardt beam, Section 4.1
 
-CohesiveParameters beam(std::map<std::string, double> keys = {}) { return {f_t, G_f, std::move(keys)}; }
+CohesiveParameters beam(std::map<std::string, double> keys = {}) { return {f_t, G_f, std::move(keys), std::nullopt}; }
 
 /// Composite 5-point Gauss-Legendre quadrature of f over [a, b] in n pieces (exact on each
 /// polynomial piece of degree <= 9 when a piece boundary sits at each kink).
@@ -37,9 +37,9 @@ TEST(CohesiveLaw, RegistryNamesAndKeys) {
   EXPECT_EQ(make_cohesive_law("bilinear", beam())->name(), "bilinear");
   EXPECT_EQ(test::input_error_of([] { make_cohesive_law("hordijk", beam()); }),
             "cohesive law (\"hordijk\") must be exponential or bilinear");
-  EXPECT_EQ(test::input_error_of([] { make_cohesive_law("exponential", {f_t, 0, {}}); }),
+  EXPECT_EQ(test::input_error_of([] { make_cohesive_law("exponential", {f_t, 0, {}, std::nullopt}); }),
             "cohesive law exponential: G_f_J_m2 (0) must be positive and finite");
-  EXPECT_EQ(test::input_error_of([] { make_cohesive_law("bilinear", {-1, G_f, {}}); }),
+  EXPECT_EQ(test::input_error_of([] { make_cohesive_law("bilinear", {-1, G_f, {}, std::nullopt}); }),
             "cohesive law bilinear: f_t_Pa (-1) must be positive and finite");
   EXPECT_NE(test::input_error_of([] { make_cohesive_law("bilinear", beam({{"alpha", 2}})); }).find("unknown key alpha"),
             std::string::npos);

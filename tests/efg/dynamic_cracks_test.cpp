@@ -39,12 +39,15 @@ struct SpallSetup {
   double speed_limit = 500;
   double min_spacing = 0;
   int threads_min_points = 2000;
+  FieldProjection project_fields = DynamicCrackOptions{}.project_fields;  // the library default
 };
 
 struct SpallRun {
   DynamicsResult run;
   std::vector<CrackEvent> events;
-  double dissipated = 0, stored_faces = 0, strain = 0, kinetic = 0, jump = 0;
+  double dissipated = 0, stored_faces = 0, strain = 0, kinetic = 0, jump = 0, kinetic_jump = 0, faces_jump = 0;
+  std::vector<DynamicCracks::Projection> projections;
+  double balance() const { return kinetic + strain + dissipated + stored_faces - jump - run.energy.back().external_work_J; }
   std::size_t cracks = 0;
   std::vector<Vec2> first_crack;
 };
@@ -64,6 +67,7 @@ SpallRun run_spall(const SpallSetup& s) {
   co.strain_rate_effect = false;  // the closed form is for a fixed strength
   co.crack_speed_limit_m_s = s.speed_limit;
   co.min_crack_spacing_m = s.min_spacing;
+  co.project_fields = s.project_fields;
   DynamicCracks dc(model, cracks, co);
   DynamicsOptions o;
   o.duration_s = s.duration;
@@ -77,6 +81,9 @@ SpallRun run_spall(const SpallSetup& s) {
   out.stored_faces = dc.stored_J(out.run.u);
   out.cracks = dc.cracks().cracks().size();
   out.jump = dc.energy_jump_J();
+  out.kinetic_jump = dc.kinetic_jump_J();
+  out.faces_jump = dc.faces_jump_J();
+  out.projections = dc.projections();
   if (!dc.cracks().cracks().empty()) out.first_crack = dc.cracks().cracks().front().points;
   // strain energy of the linear law at the last step: W_int^{n+1/2} = 1/2 u^n . K u^{n+1} (the central
   // difference's shadow energy, docs/efg.md), with K of the cracked shape functions
@@ -131,8 +138,9 @@ TEST(DynamicCracks, SpallFormsWhereTheNetTensionFirstReachesTheStrength) {
   const double spacing = 2 * s.h - 0.8 * s.h;
   for (std::size_t i = 0; i < r.events.size(); ++i)
     for (std::size_t j = i + 1; j < r.events.size(); ++j)
-      if (r.events[i].initiation && r.events[j].initiation)
+      if (r.events[i].initiation && r.events[j].initiation) {
         EXPECT_GE((r.events[i].from - r.events[j].from).norm(), spacing * (1 - 1e-9)) << i << " " << j;
+      }
   EXPECT_GT(r.cracks, 1u);  // the tension keeps growing inward: more spall planes (cohesive faces carry f_t)
 }
 
@@ -236,4 +244,81 @@ TEST(DynamicCracks, ClosedFacesTransmitACompressivePulseThroughThePenalty) {
   // approximation near the line (the energy jump of dynamic_cracks.hpp), not bounded in closed form
   EXPECT_NEAR(contact / free, 1.0, 0.02);
   EXPECT_LT(none, 0.05 * free);
+}
+
+// The projection of the parameters onto the cut space at each change (project_fields, efg/field_projection)
+// on the same spall strip: the energy the changes add (energy_jump_J, kinetic energy included) falls, the
+// balance with it still closes, and the first crack is the same (it starts before any projection).
+// Measured (this machine, docs/efg.md "Energy across crack growth"), energy_jump_J / W_ext:
+//   one crack (min spacing 1 m):  none 7.85e-3, u 3.05e-3, u-v 2.95e-3   (held: < 4e-3 and < 0.5 x none)
+//   24 cracks (default spacing):  none 0.152,  u 0.042 (24 cracks)          (held: < 0.06 and < 0.5 x none)
+// and the balance kinetic + strain + faces - jump - W_ext: one crack 3.5e-4 / 5.5e-4 / 5.6e-4 of W_ext
+// (held to the 2e-3 of the test above), 24 cracks 3.4e-2 / 7.3e-3 (held < 1e-2 with u: the balance the
+// projection closes; without it 0.10 J stayed unaccounted, dynamic_cracks.hpp).
+TEST(DynamicCracks, ProjectingTheFieldsCutsTheEnergyTheChangesAdd) {
+  SpallSetup s;
+  s.min_spacing = 1.0;
+  const auto run = [&](FieldProjection p) {
+    s.project_fields = p;
+    return run_spall(s);
+  };
+  const SpallRun none = run(FieldProjection::none), u = run(FieldProjection::displacement),
+                 uv = run(FieldProjection::displacement_and_velocity);
+  const double W = none.run.energy.back().external_work_J;
+  std::printf("one crack: jump / W_ext none %.3e u %.3e u-v %.3e (kinetic %.2e J); balance / W_ext %.2e %.2e %.2e\n", none.jump / W,
+              u.jump / u.run.energy.back().external_work_J, uv.jump / uv.run.energy.back().external_work_J, uv.kinetic_jump,
+              none.balance() / W, u.balance() / W, uv.balance() / W);
+  for (const SpallRun* r : {&u, &uv}) {
+    const double Wr = r->run.energy.back().external_work_J;
+    ASSERT_EQ(r->cracks, 1u);
+    ASSERT_FALSE(r->projections.empty());
+    EXPECT_EQ(r->events.front().t_s, none.events.front().t_s);  // the first crack: before any projection
+    EXPECT_EQ(r->events.front().from, none.events.front().from);
+    EXPECT_LT(r->jump, 4e-3 * Wr);
+    EXPECT_LT(r->jump, 0.5 * none.jump);
+    EXPECT_LT(std::abs(r->balance()), 2e-3 * Wr);
+    EXPECT_LT(r->run.energy_drift, 1e-12);  // the run's identity, the projection's kinetic change booked
+    for (const auto& p : r->projections) EXPECT_TRUE(p.ok);
+  }
+  EXPECT_EQ(u.kinetic_jump, 0.0);  // v is kept: the lumped kinetic energy cannot change
+  // many cracks: u only (u-v measured 0.033, but see docs/efg.md: on a coarse slab it changed KE by 49 % of W_ext)
+  s.min_spacing = 0;
+  const SpallRun many_none = run(FieldProjection::none), many_u = run(FieldProjection::displacement);
+  const double Wm = many_u.run.energy.back().external_work_J;
+  std::printf("%zu / %zu cracks: jump / W_ext none %.3f u %.3f; balance / W_ext %.2e %.2e\n", many_none.cracks, many_u.cracks,
+              many_none.jump / many_none.run.energy.back().external_work_J, many_u.jump / Wm,
+              many_none.balance() / many_none.run.energy.back().external_work_J, many_u.balance() / Wm);
+  EXPECT_GT(many_u.cracks, 10u);
+  EXPECT_LT(many_u.jump, 0.06 * Wm);
+  EXPECT_LT(many_u.jump, 0.5 * many_none.jump);
+  EXPECT_LT(std::abs(many_u.balance()), 1e-2 * Wm);
+}
+
+// The projection keeps the run's bits for any thread count: its points, nodes and sums are in a fixed
+// order and serial (one crack, u and v projected, 1 and 2 threads).
+TEST(DynamicCracks, ProjectionGivesTheSameBitsForOneAndTwoThreads) {
+  SpallSetup s;
+  s.min_spacing = 1.0;
+  s.threads_min_points = 1;
+  s.project_fields = FieldProjection::displacement_and_velocity;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const SpallRun r1 = run_spall(s);
+  omp_set_num_threads(2);
+  const SpallRun r2 = run_spall(s);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(r1.run.threads, 1);
+  EXPECT_EQ(r2.run.threads, 2);
+  ASSERT_GE(r1.projections.size(), 3u);
+  ASSERT_EQ(r1.events.size(), r2.events.size());
+  for (std::size_t i = 0; i < r1.events.size(); ++i) {
+    EXPECT_EQ(r1.events[i].t_s, r2.events[i].t_s);
+    EXPECT_EQ(r1.events[i].to, r2.events[i].to);
+  }
+  ASSERT_EQ(r1.run.u.size(), r2.run.u.size());
+  const auto bytes = sizeof(double) * std::size_t(r1.run.u.size());
+  EXPECT_EQ(0, std::memcmp(r1.run.u.data(), r2.run.u.data(), bytes));
+  EXPECT_EQ(0, std::memcmp(r1.run.v.data(), r2.run.v.data(), bytes));
+  EXPECT_EQ(r1.jump, r2.jump);
+  EXPECT_EQ(r1.kinetic_jump, r2.kinetic_jump);
 }

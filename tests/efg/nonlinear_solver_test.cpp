@@ -21,7 +21,7 @@ constexpr double E = 20e9, A = 0.01, f_t = 2.4e6, G_f = 113;
 class BarWithCohesiveSpring : public NonlinearProblem {
 public:
   BarWithCohesiveSpring(double L, bool displacement_control, double delta_ref = 0)
-      : law(make_cohesive_law("exponential", {f_t, G_f, {}})), L(L), disp(displacement_control), delta_ref(delta_ref),
+      : law(make_cohesive_law("exponential", {f_t, G_f, {}, std::nullopt})), L(L), disp(displacement_control), delta_ref(delta_ref),
         w0(initial_opening_fraction * law->w_max_m()), w_hist(w0) {}
   std::size_t size() const override { return disp ? 1 : 2; }
   void evaluate(const Eigen::VectorXd& v, double lambda, Eigen::VectorXd& r, Eigen::SparseMatrix<double>* K,

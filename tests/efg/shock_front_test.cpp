@@ -114,7 +114,9 @@ TEST(ShockFront, TheQuadraticStripsLevelsMeetWhereTheCharacteristicsSay) {
   for (const FrontWidth& f : c.fronts) {
     std::printf("x = %5.1f mm: width %.3g us, simple wave %.3g us\n", f.x_m * 1e3, f.width_s * 1e6, f.simple_wave_width_s * 1e6);
     // each level's arrival is interpolated between samples: two sample intervals per width
-    if (f.before_breaking) EXPECT_NEAR(f.width_s, f.simple_wave_width_s, 2 * sample) << f.x_m;
+    if (f.before_breaking) {
+      EXPECT_NEAR(f.width_s, f.simple_wave_width_s, 2 * sample) << f.x_m;
+    }
   }
   // the fitted line's zero moves by (width error) / (its slope), the slope 1/c_lo - 1/c_hi
   const double slope = 1 / c.c_lo_m_s - 1 / c.c_hi_m_s;

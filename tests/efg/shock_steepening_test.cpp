@@ -74,10 +74,11 @@ TEST(ShockSteepening, YFunctionStripAgainstCharacteristics) {
     const double simple = (p_hi - p_lo) / peak * rise + x * (1 / c_hi - 1 / c_lo);
     std::printf("x = %5.3f m: EFG width %.3g us, simple wave %.3g us, largest -sigma_xx %.3g GPa\n", x, width * 1e6,
                 simple * 1e6, r.peak_stress_Pa[k] / 1e9);
-    if (x < f.distance_m)
+    if (x < f.distance_m) {
       EXPECT_NEAR(width, simple, 1.0e-6) << x;  // a sample interval is 0.37-0.51 us
-    else if (x >= 0.1)
+    } else if (x >= 0.1) {
       EXPECT_LT(width, 1.5e-6) << x;  // the linear law would keep (p_hi - p_lo) / p_max t_r = 11.5 us
+    }
   }
   // the front between the last two sensors against the jump condition
   const double speed = (o.sensor_x_m[5] - o.sensor_x_m[4]) / (arrival(r, 5, 1.3e9) - arrival(r, 4, 1.3e9));
@@ -112,7 +113,9 @@ TEST(ShockSteepening, QuadraticStripAgainstTheClosedForm) {
     const double simple = (p_hi - p_lo) / peak * rise + x * (1 / c_hi - 1 / c_lo);
     std::printf("x = %5.3f m: EFG 10-90 %% width %.3g us, simple wave %.3g us, largest -sigma_xx %.3g GPa\n", x,
                 width * 1e6, simple * 1e6, r.peak_stress_Pa[k] / 1e9);
-    if (x < x_b) EXPECT_NEAR(width, simple, 1.0e-6) << x;
+    if (x < x_b) {
+      EXPECT_NEAR(width, simple, 1.0e-6) << x;
+    }
   }
   EXPECT_LT(r.run.energy_drift, 1e-9);
 }

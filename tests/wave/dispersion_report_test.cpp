@@ -92,7 +92,7 @@ TEST(DispersionReport, LatticeSummaryIsTheChainsClosedForm) {
 
 TEST(DispersionReport, TheorySummaryAndPlot) {
   TheoryRequest q;
-  q.rod = {208.72, 0.3, 7850.66, 5.1};
+  q.rod = {208.72, 0.3, 7850.66, 5.1, {}};
   q.f_max_kHz = 50;
   q.df_kHz = 5;
   const auto r = theory_report(q);

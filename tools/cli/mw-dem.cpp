@@ -7,10 +7,14 @@
 //       --signals results/concrete-cube/dem-100kHz.h5 --summary results/concrete-cube/dem-100kHz.json
 //   mw-dem run pipeline/concrete-cube/scenes/cube-wave.toml --frequencies-kHz 100,300,500
 //       --signals-pattern 'dem-{f}kHz.h5' --summary-pattern 'dem-{f}kHz.json'   (one run, every frequency)
+//   mw-dem run ... --checkpoint run.ckpt.h5 --checkpoint-every-steps 10000   (and on SIGTERM/SIGINT)
+//   mw-dem run ... --restart run.ckpt.h5      (the same options: continues to the same bits)
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <optional>
 
+#include "mesowave/app/interrupt.hpp"
 #include "mesowave/app/progress.hpp"
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/threads.hpp"
@@ -51,10 +55,11 @@ int main(int argc, char** argv) {
   auto& cli = tool.cli();
   cli.require_subcommand(1);
 
-  fs::path scene_path, signals_path, summary_path, snapshot_dir, csv_path, curves_path;
   std::vector<double> frequencies_kHz;
   std::string signals_pattern, summary_pattern;
   std::vector<double> check_kHz;
+  fs::path scene_path, signals_path, summary_path, snapshot_dir, csv_path, curves_path, checkpoint_path, restart_path;
+  std::int64_t checkpoint_every = 0, resumed_at = 0;
   std::string model = "auto";
   int threads = 0;
   bool quiet = false;
@@ -97,6 +102,14 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--curves", curves_path,
                       "A [test]'s stress-strain curves as CSV (t_s, stress_MPa, axial_strain, lateral_strain, "
                       "broken_bonds); the signal file holds them too (test.stress, test.axial_strain, ...)");
+  auto* checkpoint_opt = run_cmd->add_option("--checkpoint", checkpoint_path,
+                                             "Checkpoint (HDF5, written whole) on SIGTERM/SIGINT before the run stops, "
+                                             "and every --checkpoint-every-steps steps");
+  run_cmd->add_option("--checkpoint-every-steps", checkpoint_every, "Steps between checkpoints")
+      ->check(CLI::PositiveNumber)->needs(checkpoint_opt);
+  run_cmd->add_option("--restart", restart_path,
+                      "Continue from this checkpoint, to the same bits as a run never stopped; the scene, packing "
+                      "and options must be the checkpoint's")->check(CLI::ExistingFile);
 
   return tool.run(argc, argv, [&](app::Run& run) {
     const std::string threads_reason = use_threads(threads).reason;
@@ -121,13 +134,14 @@ int main(int argc, char** argv) {
     }
     std::optional<app::Progress> progress;
     options.on_progress = [&](std::int64_t done, std::int64_t total) {
-      if (!progress) progress.emplace("mw-dem " + scene.name, total, "steps", !quiet);
+      if (!progress) progress.emplace("mw-dem " + scene.name, total, "steps", !quiet, resumed_at);
       progress->update(done);
     };
     if (!frequencies_kHz.empty()) {
-      if (!signals_path.empty() || !csv_path.empty() || !snapshot_dir.empty() || !curves_path.empty())
-        throw InputError("--frequencies-kHz writes --signals-pattern files: --signals, --signals-csv, --snapshots and "
-                         "--curves are for one direct run");
+      if (!signals_path.empty() || !csv_path.empty() || !snapshot_dir.empty() || !curves_path.empty() ||
+          !checkpoint_path.empty() || !restart_path.empty())
+        throw InputError("--frequencies-kHz writes --signals-pattern files: --signals, --signals-csv, --snapshots, "
+                         "--curves, --checkpoint and --restart are for one direct run");
       if (signals_pattern.empty()) throw InputError("--frequencies-kHz needs --signals-pattern (e.g. 'dem-{f}kHz.h5')");
       const dem::SuperposedSet set = dem::run_superposed(scene, packing, options, frequencies_kHz, check_kHz);
       if (progress) progress->finish();
@@ -153,6 +167,15 @@ int main(int argc, char** argv) {
       run.emit_json(summary, summary_path);
       return;
     }
+    if (!checkpoint_path.empty() || !restart_path.empty()) {
+      const auto written = [&](std::int64_t step) {
+        run.param("checkpoint_step", step);  // recorded also when the run is interrupted
+        if (app::interrupt_signal())
+          std::cerr << "mw-dem: " << checkpoint_path.string() << " holds step " << step << "; continue with --restart\n";
+      };
+      options.checkpoint = {checkpoint_path, checkpoint_every, [] { return app::interrupt_signal() != 0; },
+                            dem::run_identity(scene_path, scene, overrides, model), written};
+    }
     dem::Simulation sim(scene, packing, options);
     if (info->parsed()) {
       auto j = dem::to_json(sim.describe());
@@ -161,6 +184,12 @@ int main(int argc, char** argv) {
       return;
     }
     if (signals_path.empty()) throw InputError("run needs --signals (or --frequencies-kHz with --signals-pattern)");
+    if (!restart_path.empty()) {
+      run.input(restart_path);
+      sim.restore(restart_path, options.checkpoint.identity);
+      resumed_at = sim.steps_done();
+      run.param("restarted_at_step", resumed_at);
+    }
     const dem::RunReport report = sim.run();
     if (progress) progress->finish();
 

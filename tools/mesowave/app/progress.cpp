@@ -18,9 +18,9 @@ std::string clock_text(double seconds) {
 
 }  // namespace
 
-Progress::Progress(std::string label, std::int64_t total, std::string unit, bool enabled)
-    : label_(std::move(label)), unit_(std::move(unit)), total_(std::max<std::int64_t>(total, 1)),
-      enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()),
+Progress::Progress(std::string label, std::int64_t total, std::string unit, bool enabled, std::int64_t resumed_at)
+    : label_(std::move(label)), unit_(std::move(unit)), total_(std::max<std::int64_t>(total, 1)), done_(resumed_at),
+      resumed_at_(resumed_at), enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
 Progress::~Progress() {
@@ -58,7 +58,7 @@ void Progress::finish() {
 
 void Progress::draw(std::int64_t done, bool final) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const double rate = elapsed > 0 ? double(done) / elapsed : 0.0;
+  const double rate = elapsed > 0 ? double(done - resumed_at_) / elapsed : 0.0;
   const double eta = rate > 0 ? double(total_ - done) / rate : 0.0;
   const double fraction = double(done) / double(total_);
   char numbers[160];

@@ -17,8 +17,10 @@ namespace mesowave::app {
 
 class Progress {
 public:
-  /// `label` names the work ("mw-dem cube-100kHz"), `unit` the steps ("steps").
-  Progress(std::string label, std::int64_t total, std::string unit = "steps", bool enabled = true);
+  /// `label` names the work ("mw-dem cube-100kHz"), `unit` the steps ("steps");
+  /// `resumed_at`: the steps an earlier run did (a restart), which the rate and ETA leave out.
+  Progress(std::string label, std::int64_t total, std::string unit = "steps", bool enabled = true,
+           std::int64_t resumed_at = 0);
   ~Progress();
   /// Shows `done` of `total`; throws app::Interrupted if a signal arrived.
   void update(std::int64_t done);
@@ -30,7 +32,7 @@ private:
   void draw(std::int64_t done, bool final);
   PollingScope polling_;  // a signal while this loop runs waits for its update()
   std::string label_, unit_;
-  std::int64_t total_, done_ = 0;
+  std::int64_t total_, done_ = 0, resumed_at_ = 0;
   bool enabled_, tty_, finished_ = false;
   int last_decile_ = -1;
   std::chrono::steady_clock::time_point start_, last_draw_;

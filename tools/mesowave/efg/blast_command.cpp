@@ -32,6 +32,7 @@ BlastSlabOptions BlastCommandLine::resolve() const {
   c.cohesive.G_f_J_m2 = G_f_N_m;
   if (f_c_MPa != 0) c.cohesive.f_c_Pa = require_positive("--f-c-MPa", f_c_MPa, "MPa") * 1e6;
   c.strain_rate_effect = strain_rate == 1;
+  c.project_fields = parse_field_projection(project_fields);
   c.strain_rate.f_cm_Pa = f_cm_MPa * 1e6;
   c.strain_rate.max_strain_rate_1_s = max_strain_rate_1_s;
   c.strain_rate.tension = parse_tensile_dif_law(tensile_dif);
@@ -75,6 +76,9 @@ void add_blast_options(CLI::App& app, BlastCommandLine& v) {
   app.add_option("--min-crack-spacing-mm", v.min_crack_spacing_mm, "No crack starts closer to another (0: 2 a, assumed)")->capture_default_str();
   app.add_option("--min-crack-radius-mm", v.min_crack_radius_mm,
                  "Smallest radius of a crack's path R_min: a turn <= 2 asin(a / (2 R_min)) per segment (0: a, assumed)")->capture_default_str();
+  app.add_option("--project-fields", v.project_fields,
+                 "At each crack change, project onto the cut shape functions (mass-weighted L2, efg/field_projection): none | u | u-v")
+      ->capture_default_str();
   app.add_option("--penalty-factor", v.penalty_factor, "Face penalty k = factor E / a: initial secant and contact of closing faces")->capture_default_str();
   HugoniotParameters& h = v.hugoniot;
   app.add_option("--e-v-th", h.e_v_th, "Y-function: threshold volumetric strain, Eq. (26)")->capture_default_str();
@@ -140,6 +144,7 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
       {"min_crack_radius_mm", r.min_radius_m * 1e3},
       {"max_turn_deg", r.max_turn_rad * 180 / M_PI},
       {"penalty_Pa_per_m", r.penalty_Pa_per_m},
+      {"project_fields", std::string(to_string(o.cracks.project_fields))},
       {"cracks", cracks},
       {"compacted", {{"threshold_pressure_MPa", r.threshold_pressure_Pa * 1e-6}, {"points", r.compacted_points},
                      {"depth_mm", r.compacted_depth_m * 1e3}, {"width_mm", r.compacted_width_m * 1e3},
@@ -148,8 +153,10 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
       {"energy", {{"external_work_J", last.external_work_J}, {"kinetic_J", last.kinetic_J},
                   {"internal_work_J", last.internal_work_J}, {"bulk_work_J", last.bulk_work_J()},
                   {"faces_work_J", last.faces_work_J}, {"dissipated_J", last.dissipated_J}, {"stored_J", last.stored_J},
-                  {"energy_jump_J", last.energy_jump_J}, {"damping_J", last.damping_J},
+                  {"energy_jump_J", last.energy_jump_J}, {"kinetic_jump_J", last.kinetic_jump_J},
+                  {"faces_jump_J", last.faces_jump_J}, {"damping_J", last.damping_J},
                   {"balance_over_W_ext", last.balance_J() / scale},
+                  {"balance_less_faces_jump_over_W_ext", last.balance_less_faces_jump_J() / scale},
                   {"max_balance_over_W_ext", r.max_abs_balance_J / scale},
                   {"run_drift", d.energy_drift}, {"unit", "J per metre of charge length"}}},
       {"steps", d.steps},
@@ -167,11 +174,12 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
                             num(e.from.x() * 1e3), num(e.from.y() * 1e3), num(e.to.x() * 1e3), num(e.to.y() * 1e3),
                             num(e.length_m * 1e3), num(e.speed_m_s), num(e.stress_ratio, 4), num(e.f_t_dyn_Pa * 1e-6, 4)});
   w.energy_header = {"t_us", "kinetic_J", "internal_work_J", "external_work_J", "damping_J", "faces_work_J",
-                     "dissipated_J", "stored_J", "energy_jump_J", "bulk_work_J", "run_balance_J", "balance_J"};
+                     "dissipated_J", "stored_J", "energy_jump_J", "bulk_work_J", "run_balance_J", "balance_J", "kinetic_jump_J"};
   for (const BlastEnergySample& e : r.energy)
     w.energy_rows.push_back({num(e.t_s * 1e6, 8), num(e.kinetic_J, 8), num(e.internal_work_J, 8), num(e.external_work_J, 8),
                              num(e.damping_J, 8), num(e.faces_work_J, 8), num(e.dissipated_J, 8), num(e.stored_J, 8),
-                             num(e.energy_jump_J, 8), num(e.bulk_work_J(), 8), num(e.run_balance_J(), 4), num(e.balance_J(), 4)});
+                             num(e.energy_jump_J, 8), num(e.bulk_work_J(), 8), num(e.run_balance_J(), 4), num(e.balance_J(), 4),
+                             num(e.kinetic_jump_J, 8)});
 
   // The figure: the slab's outline, the charge, the compacted Gauss points, the cracks (in mm).
   io::PlotSpec& f = w.figure;

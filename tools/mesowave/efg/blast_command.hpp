@@ -27,6 +27,7 @@ struct BlastCommandLine {
   double f_cm_MPa = 30.4, max_strain_rate_1_s = 100;
   std::string tensile_dif = "ceb-fip-1990";
   int strain_rate = 1;
+  std::string project_fields = "none";  ///< none | u | u-v: projected onto the cut space at each crack change
   double crack_speed_limit_m_s = 500;  ///< 0: no limit (a contrast run)
   double segment_mm = 0, min_crack_spacing_mm = 0, min_crack_radius_mm = 0, penalty_factor = 1;
   HugoniotParameters hugoniot;

@@ -61,26 +61,27 @@ class RecordedCracks final : public DynamicsCracks {
     f_faces_ = Eigen::VectorXd::Zero(f.size());
     c_.add_forces(u, f_faces_);
     f += f_faces_;
-    u_n_ = u;
   }
 
-  bool advance(double t_s, const Eigen::VectorXd& u, const std::vector<PointState>& states) override {
-    // W_faces += f^n . (dt_n / 2)(v^{n-1/2} + v^{n+1/2}), the run's rule (explicit_dynamics.hpp)
+  void start(const Eigen::VectorXd& mass_per_node) override { c_.start(mass_per_node); }
+
+  bool advance(double t_s, Eigen::VectorXd& u, Eigen::VectorXd& v, const std::vector<PointState>& states) override {
+    // W_faces += f^n . (dt_n / 2)(v^{n-1/2} + v^{n+1/2}), the run's rule (explicit_dynamics.hpp), with the
+    // run's own half-step velocities (v^{-1/2} = 0; v^{n-1/2} as the last advance left it, projected or not)
     const double dt_half = t_s - t_n_;
     const double dt_avg = n_ == 0 ? 0.5 * dt_half : 0.5 * (dt_prev_ + dt_half);
-    Eigen::VectorXd sum = (0.5 * dt_avg / dt_half) * (u - u_n_);
-    if (n_ > 0) sum += (0.5 * dt_avg / dt_prev_) * (u_n_ - u_prev_);
-    faces_work_J_ += f_faces_.dot(sum);
+    if (n_ == 0) v_prev_ = Eigen::VectorXd::Zero(v.size());
+    faces_work_J_ += f_faces_.dot(Eigen::VectorXd((0.5 * dt_avg) * (v_prev_ + v)));
     const bool last = t_s >= o_.duration_s;
     if (o_.snapshot_stride > 0 && (n_ % o_.snapshot_stride == 0 || last)) {  // the run's snapshot of step n
       snapshot_cracks_.push_back(cracks_now());
       snapshot_points_.push_back(points_now(states));
     }
-    const bool changed = c_.advance(t_s, u, states);
+    const bool changed = c_.advance(t_s, u, v, states);
+    v_prev_ = v;
     if (n_ % o_.sample_stride == 0 || last)
-      samples_.push_back({0.5 * (t_n_ + t_s), faces_work_J_, c_.dissipated_J(), c_.stored_J(u), c_.energy_jump_J()});
+      samples_.push_back({0.5 * (t_n_ + t_s), faces_work_J_, c_.dissipated_J(), c_.stored_J(u), c_.energy_jump_J(), c_.faces_jump_J()});
     if (last) final_points_ = points_now(states);
-    u_prev_ = u_n_;
     dt_prev_ = dt_half;
     t_n_ = t_s;
     ++n_;
@@ -90,7 +91,7 @@ class RecordedCracks final : public DynamicsCracks {
   Eigen::SparseMatrix<double> stiffness_bound() const override { return c_.stiffness_bound(); }
 
   struct Sample {
-    double t_s, faces_work_J, dissipated_J, stored_J, energy_jump_J;
+    double t_s, faces_work_J, dissipated_J, stored_J, energy_jump_J, faces_jump_J;
   };
   const std::vector<Sample>& samples() const { return samples_; }
   const std::vector<CrackSnapshot>& snapshot_cracks() const { return snapshot_cracks_; }
@@ -123,8 +124,8 @@ class RecordedCracks final : public DynamicsCracks {
   const ElasticModel& model_;
   const BlastSlabOptions& o_;
   Rect body_;
-  mutable Eigen::VectorXd f_faces_, u_n_;
-  Eigen::VectorXd u_prev_;
+  mutable Eigen::VectorXd f_faces_;
+  Eigen::VectorXd v_prev_;
   double t_n_ = 0, dt_prev_ = 0, faces_work_J_ = 0;
   std::int64_t n_ = 0;
   std::vector<Sample> samples_;
@@ -259,7 +260,8 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
   for (std::size_t k = 0; k < s.size(); ++k) {
     const EnergySample& e = r.run.energy[k];
     BlastEnergySample b{e.t_s, e.kinetic_J, e.internal_work_J, e.external_work_J, e.damping_J,
-                        s[k].faces_work_J, s[k].dissipated_J, s[k].stored_J, s[k].energy_jump_J};
+                        s[k].faces_work_J, s[k].dissipated_J, s[k].stored_J, s[k].energy_jump_J, e.kinetic_jump_J,
+                        s[k].faces_jump_J};
     r.max_abs_balance_J = std::max(r.max_abs_balance_J, std::abs(b.balance_J()));
     r.max_abs_run_balance_J = std::max(r.max_abs_run_balance_J, std::abs(b.run_balance_J()));
     r.energy.push_back(b);

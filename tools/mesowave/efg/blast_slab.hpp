@@ -52,7 +52,10 @@
 // leaves behind). The cracks' own terms: dissipated_J + stored_J (the face law's state, dynamic_cracks)
 // against W_faces, and energy_jump_J (the energy the cuts add at a fixed u, which no force does; reported,
 // not part of the force balance). `balance_J` = KE + W_bulk + dissipated + stored + W_damp - W_ext, the
-// run's identity with the faces' work replaced by their law's energy.
+// run's identity with the faces' work replaced by their law's energy. With the field projection
+// (DynamicCrackOptions::project_fields) both balances subtract the kinetic energy the projection changed at
+// fixed times (kinetic_jump_J, known exactly; the bulk's share of the change is not: W_bulk is the work of
+// the bulk's forces and does not see a change of u at a fixed time, which energy_jump_J measures linearly).
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -106,9 +109,18 @@ struct BlastEnergySample {
   double t_s = 0;
   double kinetic_J = 0, internal_work_J = 0, external_work_J = 0, damping_J = 0;
   double faces_work_J = 0, dissipated_J = 0, stored_J = 0, energy_jump_J = 0;
+  /// the kinetic energy the field projection changed at the cracks' changes (EnergySample; 0 without it);
+  /// part of energy_jump_J too
+  double kinetic_jump_J = 0;
+  /// the faces' share of energy_jump_J (DynamicCracks::faces_jump_J): their law energy moved at fixed times
+  double faces_jump_J = 0;
   double bulk_work_J() const { return internal_work_J - faces_work_J; }
-  double run_balance_J() const { return kinetic_J + internal_work_J + damping_J - external_work_J; }
-  double balance_J() const { return kinetic_J + bulk_work_J() + dissipated_J + stored_J + damping_J - external_work_J; }
+  double run_balance_J() const { return kinetic_J + internal_work_J + damping_J - external_work_J - kinetic_jump_J; }
+  double balance_J() const {
+    return kinetic_J + bulk_work_J() + dissipated_J + stored_J + damping_J - external_work_J - kinetic_jump_J;
+  }
+  /// balance_J less the faces' jump: what the faces' law energy misses of their force work over the steps
+  double balance_less_faces_jump_J() const { return balance_J() - faces_jump_J; }
 };
 
 struct GaussPointSnapshot {

@@ -7,6 +7,7 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/efg/discretisation.hpp"
+#include "mesowave/efg/field_projection.hpp"
 
 namespace mesowave::efg {
 
@@ -40,6 +41,22 @@ void for_jump(const CrackFacePoint& p, F f) {
 }
 
 }  // namespace
+
+FieldProjection parse_field_projection(std::string_view name) {
+  if (name == "none") return FieldProjection::none;
+  if (name == "u") return FieldProjection::displacement;
+  if (name == "u-v") return FieldProjection::displacement_and_velocity;
+  throw InputError("field projection '" + std::string(name) + "' is not one of none, u, u-v");
+}
+
+std::string_view to_string(FieldProjection p) {
+  switch (p) {
+    case FieldProjection::none: return "none";
+    case FieldProjection::displacement: return "u";
+    case FieldProjection::displacement_and_velocity: return "u-v";
+  }
+  return "?";
+}
 
 void DynamicCrackOptions::validate() const {
   (void)make_cohesive_law(law, cohesive);  // f_t, G_f, keys, f_c: the registry's one-line errors
@@ -81,7 +98,11 @@ DynamicCracks::DynamicCracks(ElasticModel& model, CrackSet& cracks, DynamicCrack
   body_ = {INFINITY, INFINITY, -INFINITY, -INFINITY};
   for (const Rect& c : model.discretisation().cells)
     body_ = {std::min(body_.x0, c.x0), std::min(body_.y0, c.y0), std::max(body_.x1, c.x1), std::max(body_.y1, c.y1)};
-  for (const GaussPoint& g : model.discretisation().points) gauss_x_.push_back(g.x);
+  const double rho_t = model.material().density_kg_m3 * model.material().thickness_m;
+  for (const GaussPoint& g : model.discretisation().points) {
+    gauss_x_.push_back(g.x);
+    point_mass_.push_back(rho_t * g.weight_m2);
+  }
   gauss_grid_ = NodeGrid(gauss_x_, h);
   node_grid_ = NodeGrid(model.mls().nodes(), h);
   tips_.resize(cracks.cracks().size());
@@ -298,7 +319,30 @@ bool DynamicCracks::initiate(const Critical& q, double t_s) {
   return true;
 }
 
-bool DynamicCracks::advance(double t_s, const Eigen::VectorXd& u, const std::vector<PointState>& states) {
+double DynamicCracks::kinetic_J(const Eigen::VectorXd& v) const {
+  double ke = 0;
+  for (Eigen::Index d = 0; d < v.size(); ++d) ke += 0.5 * mass_[d / 2] * v[d] * v[d];
+  return ke;
+}
+
+void DynamicCracks::project(const std::vector<ShapeFunctions>& before, double t_s, Eigen::VectorXd& u, Eigen::VectorXd& v) {
+  if (mass_.size() == 0) mass_ = lumped_mass(*model_);  // a caller driving advance() itself
+  const ParameterProjection p(before, model_->shape_functions(), point_mass_, model_->mls().node_count());
+  Projection rec{t_s, p.changed_points(), p.nodes().size(), 0, 0, p.ok()};
+  if (p.changed_points() > 0 && p.ok()) {
+    const double ke_before = kinetic_J(v);
+    Eigen::VectorXd u_new = p.project(u);
+    Eigen::VectorXd v_new = o_.project_fields == FieldProjection::displacement_and_velocity ? p.project(v) : v;
+    rec.misfit_u = p.relative_misfit(u, u_new);
+    rec.misfit_v = p.relative_misfit(v, v_new);
+    u = std::move(u_new);
+    v = std::move(v_new);
+    kinetic_jump_J_ += kinetic_J(v) - ke_before;
+  }
+  projections_.push_back(rec);
+}
+
+bool DynamicCracks::advance(double t_s, Eigen::VectorXd& u, Eigen::VectorXd& v, const std::vector<PointState>& states) {
   for (std::size_t k = 0; k < points_.size(); ++k) points_[k].w_hist_m = std::max(points_[k].w_hist_m, opening_m(k, u));
   if (calls_++ % o_.check_every != 0) return false;
   const std::vector<Critical> critical = critical_points(states);
@@ -310,15 +354,21 @@ bool DynamicCracks::advance(double t_s, const Eigen::VectorXd& u, const std::vec
     const auto points_before = points_;
     const auto tips_before = tips_;
     const std::size_t events_before = events_.size(), laws_before = laws_.size();
-    const double e_before = 0.5 * u.dot(model_->internal_force(u)) + stored_J(u) + dissipated_J();
+    const double bulk_before = 0.5 * u.dot(model_->internal_force(u)), stored_before = stored_J(u), dissipated_before = dissipated_J();
+    const double e_before = bulk_before + stored_before + dissipated_before;
     if (!change()) return;
+    std::vector<ShapeFunctions> shape_before;  // the change moved the CrackSet only: these are still the old ones
+    if (o_.project_fields != FieldProjection::none) shape_before = model_->shape_functions();
     try {
       refresh();
+      if (o_.project_fields != FieldProjection::none) project(shape_before, t_s, u, v);
       // the new faces start at the jump the cut approximation shows there (header: w_birth)
       for (std::size_t k = points_before.size(); k < points_.size(); ++k) points_[k].w_birth_m = opening_m(k, u);
       // older faces whose opening the cut moved past their history: committed now, into the jump
       for (std::size_t k = 0; k < points_before.size(); ++k) points_[k].w_hist_m = std::max(points_[k].w_hist_m, opening_m(k, u));
-      energy_jump_J_ += 0.5 * u.dot(model_->internal_force(u)) + stored_J(u) + dissipated_J() - e_before;
+      const double stored_after = stored_J(u), dissipated_after = dissipated_J();
+      energy_jump_J_ += 0.5 * u.dot(model_->internal_force(u)) + stored_after + dissipated_after - e_before;
+      faces_jump_J_ += stored_after + dissipated_after - (stored_before + dissipated_before);
       changed = true;
     } catch (const InputError&) {
       cracks_->restore(cracks_before);  // a new version: the model recomputes what it had

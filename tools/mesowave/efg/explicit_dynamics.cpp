@@ -267,6 +267,8 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
   Eigen::VectorXd f_cracks;
   if (cracks) f_cracks = Eigen::VectorXd::Zero(ndof);
   bool recheck_step = false;
+  double kinetic_jump = 0;  // the hook's changes of KE at fixed times (DynamicsCracks)
+  if (cracks) cracks->start(mass_);
   r.threads = nt;
   r.dt_first_s = dt_base;
   r.dt_min_s = dt_base;
@@ -349,7 +351,7 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
       ke += ke_b[std::size_t(b)];
       W_int += wi_b[std::size_t(b)], W_ext += we_b[std::size_t(b)], W_damp += wd_b[std::size_t(b)];
     }
-    const EnergySample e{t + 0.5 * dt_half, ke, W_int, W_ext, W_damp};
+    const EnergySample e{t + 0.5 * dt_half, ke, W_int, W_ext, W_damp, kinetic_jump};
     worst = std::max(worst, std::abs(e.balance_J()));
     scale_ref = std::max({scale_ref, std::abs(W_ext), ke, std::abs(W_int)});
 
@@ -382,7 +384,16 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
       }
       r.snapshots.emplace_back(t, std::move(snap));
     }
-    if (cracks && cracks->advance(t + dt_half, u, states)) {  // a crack changed: new shape functions
+    if (cracks && cracks->advance(t + dt_half, u, vs, states)) {  // a crack changed: new shape functions
+      // the hook may have replaced v^{n+1/2}: its KE by the same fixed blocks as the step's sum above
+      double ke_after = 0;
+      for (std::int64_t b = 0; b < nblocks; ++b) {
+        double kb = 0;
+        const Eigen::Index d1 = 2 * std::min(nn, (b + 1) * block_nodes);
+        for (Eigen::Index d = 2 * b * block_nodes; d < d1; ++d) kb += 0.5 * mass_[d / 2] * vs[d] * vs[d];
+        ke_after += kb;
+      }
+      kinetic_jump += ke_after - ke;
       gather_cracked = build_gather(shape, std::size_t(nn));
       gather = &gather_cracked;
       for (std::size_t k = 0; k < sensors.size(); ++k)

@@ -105,25 +105,35 @@ struct SensorSample {
 struct EnergySample {
   double t_s = 0;  ///< t^{n+1/2}
   double kinetic_J = 0, internal_work_J = 0, external_work_J = 0, damping_J = 0;
-  double balance_J() const { return kinetic_J + internal_work_J + damping_J - external_work_J; }
+  /// the kinetic energy the cracks' hook changed at fixed times by replacing v (DynamicsCracks), so far
+  double kinetic_jump_J = 0;
+  double balance_J() const { return kinetic_J + internal_work_J + damping_J - external_work_J - kinetic_jump_J; }
 };
 
 /// Cracks that open and grow during a run (efg/dynamic_cracks implements it; issue 16). At every step n
 /// the run calls add_forces(u^n, f) with f zero, adds f to the continuum's f_int (so W_int holds the
 /// faces' work and the energy balance stays exact), and after u^{n+1} calls advance(t^{n+1}, u^{n+1},
-/// states) with the points' states of step n (stress, strain rate). When advance returns true the
+/// v^{n+1/2}, states) with the points' states of step n (stress, strain rate); before the first step it
+/// calls start(lumped mass). When advance returns true the
 /// CrackSet changed and the model's shape functions were recomputed: the run rebuilds its node gather
 /// lists and its sensors' and snapshot nodes' shape functions, and recomputes the stable step with
 /// stiffness_bound() added to K (then dt = dt_fraction x that step, or the caller's dt where lower).
 /// The lumped mass stays the one of the start: the row sums move between nodes when the shape
 /// functions are cut, the body's mass does not change, and a mass changed at a crack would change the
 /// kinetic energy without a force doing work. Runs with constraint rows are refused (their rows hold
-/// the shape functions of the start, which a crack would make stale).
+/// the shape functions of the start, which a crack would make stale). When advance() replaces v, the
+/// kinetic energy changes at a fixed time with no force doing it: the run adds that change,
+/// 1/2 v'.M v' - 1/2 v.M v (in the fixed block order of the step's own sum), to kinetic_jump_J, and the
+/// identity reads KE + W_int + W_damp - W_ext = kinetic_jump_J (zero when no hook replaces v).
 class DynamicsCracks {
  public:
   virtual ~DynamicsCracks() = default;
+  /// Once, before the first step: the run's lumped mass per node (the kinetic energy's).
+  virtual void start(const Eigen::VectorXd& /*mass_per_node*/) {}
   virtual void add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& f) const = 0;
-  virtual bool advance(double t_s, const Eigen::VectorXd& u, const std::vector<PointState>& states) = 0;
+  /// u = u^{n+1}, v = v^{n+1/2}. A hook may replace both when it changes the shape functions (a projection
+  /// of the parameters onto the new space, efg/field_projection); the run goes on from what it leaves.
+  virtual bool advance(double t_s, Eigen::VectorXd& u, Eigen::VectorXd& v, const std::vector<PointState>& states) = 0;
   /// An upper bound of the faces' stiffness (full dof numbering) for the stable step.
   virtual Eigen::SparseMatrix<double> stiffness_bound() const = 0;
 };

@@ -9,9 +9,7 @@
 namespace mesowave::efg {
 
 double continuum_velocity_m_s(const WaveStripOptions& o, double c, double x, double t) {
-  const PressureHistory p = o.custom ? o.custom
-                            : o.pulse == "triangular" ? PressureHistory(o.triangular)
-                                                      : PressureHistory(o.friedlander);
+  const PressureHistory p = o.pressure();
   const auto at = [&](double tau) { return tau < 0 ? 0.0 : p(tau); };
   return (at(t - x / c) + at(t - (2 * o.length_m - x) / c)) / (o.density_kg_m3 * c);
 }

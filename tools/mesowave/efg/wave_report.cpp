@@ -120,9 +120,7 @@ namespace {
 // The sensor's -sigma_xx in the linear continuum: the pulse and its reflection from the free end
 // x = L (sign reversed), exact until that reflection comes back from the loaded end.
 double continuum_sigma_xx(const WaveStripOptions& o, const WaveStripResult& r, double x, double t) {
-  const PressureHistory p = o.custom ? o.custom
-                            : o.pulse == "triangular" ? PressureHistory(o.triangular)
-                                                      : PressureHistory(o.friedlander);
+  const PressureHistory p = o.pressure();
   const double c = r.c_p_m_s;
   const auto at = [&](double tau) { return tau < 0 ? 0.0 : p(tau); };
   return -at(t - x / c) + at(t - (2 * o.length_m - x) / c);

@@ -64,6 +64,24 @@ double peak_time(const std::vector<double>& t, const std::vector<double>& values
   return t[best] + shift * dt;
 }
 
+PressureHistory WaveStripOptions::pressure() const {
+  if (custom) return custom;
+  if (pulse == "triangular") {
+    triangular.validate();
+    return triangular;
+  }
+  if (pulse == "friedlander") {
+    friedlander.validate();
+    return friedlander;
+  }
+  throw InputError("pulse '" + pulse + "' must be triangular or friedlander");
+}
+
+double WaveStripOptions::pulse_peak_time_s() const {
+  if (custom) return 0;
+  return pulse == "friedlander" ? friedlander.start_s : triangular.start_s + triangular.rise_s;
+}
+
 WaveStripResult run_wave_strip(const WaveStripOptions& o) {
   require_positive("strip length", o.length_m, "m");
   require_positive("strip width", o.width_m, "m");
@@ -74,21 +92,8 @@ WaveStripResult run_wave_strip(const WaveStripOptions& o) {
   if (ny < 2)
     throw InputError("strip width (" + format_quantity(o.width_m, "m") + ") must hold at least 2 node spacings (" +
                      format_quantity(o.spacing_m, "m") + ")");
-  PressureHistory pressure = o.custom;
-  double pulse_peak = 0;
-  if (!pressure) {
-    if (o.pulse == "triangular") {
-      o.triangular.validate();
-      pressure = o.triangular;
-      pulse_peak = o.triangular.start_s + o.triangular.rise_s;
-    } else if (o.pulse == "friedlander") {
-      o.friedlander.validate();
-      pressure = o.friedlander;
-      pulse_peak = o.friedlander.start_s;
-    } else {
-      throw InputError("pulse '" + o.pulse + "' must be triangular or friedlander");
-    }
-  }
+  const PressureHistory pressure = o.pressure();
+  const double pulse_peak = o.pulse_peak_time_s();
   WaveStripResult r;
   r.P_modulus_Pa = p_wave_modulus(o);
   r.c_p_m_s = std::sqrt(r.P_modulus_Pa / o.density_kg_m3);

@@ -35,6 +35,11 @@ struct WaveStripOptions {
   std::vector<double> sensor_x_m;  ///< on y = W / 2; default: L/4, L/2, 3L/4
   DynamicsOptions dynamics{};      ///< duration 0: the time the wave takes to the end and 10 % more
   const PointMaterial* material = nullptr;  ///< null: LinearElasticPoint of (E, nu)
+
+  /// p(t) on x = 0: `custom` when set, else the `pulse` chosen (validated). InputError for another name.
+  PressureHistory pressure() const;
+  /// When that p(t) peaks: start + rise (triangular), the arrival (friedlander); 0 for `custom`.
+  double pulse_peak_time_s() const;
 };
 
 struct DispersionPoint {

@@ -60,6 +60,8 @@ public:
   bool stop_after(const std::vector<double>& loads);
   std::string reason() const { return reason_; }
   double peak_Pa() const { return peak_; }
+  /// Continues a test whose stress has reached `peak_Pa` so far (a restarted run).
+  void resume(double peak_Pa) { peak_ = peak_Pa; }
 
 private:
   UniaxialTestSpec spec_;

@@ -126,6 +126,33 @@ double AxialChain::scaled_stiffness_row_sum_bound() const {
   return row.empty() ? 0.0 : *std::max_element(row.begin(), row.end());
 }
 
+// Between steps the external forces are spent (f_ext_ zero, forced_ empty) and
+// f_ is rewritten before it is read: the motion, the peak ratio and the
+// energies carry over.
+void AxialChain::save_state(StateGroup& group) const {
+  group.write("s", s_);
+  group.write("v", v_);
+  group.write("a", a_);
+  group.write("a_undamped", a_undamped_);
+  group.write("peak_ratio", peak_ratio_);
+  group.write("kinetic_J", energy_.kinetic_J);
+  group.write("elastic_J", energy_.elastic_J);
+  group.write("external_work_J", energy_.external_work_J);
+  group.write("damping_J", energy_.damping_J);
+}
+
+void AxialChain::load_state(const StateGroup& group) {
+  group.read_into("s", s_);
+  group.read_into("v", v_);
+  group.read_into("a", a_);
+  group.read_into("a_undamped", a_undamped_);
+  peak_ratio_ = group.read_double("peak_ratio");
+  energy_.kinetic_J = group.read_double("kinetic_J");
+  energy_.elastic_J = group.read_double("elastic_J");
+  energy_.external_work_J = group.read_double("external_work_J");
+  energy_.damping_J = group.read_double("damping_J");
+}
+
 std::size_t AxialChain::memory_bytes() const {
   return s_.size() * (6 * sizeof(double) + sizeof(Vec3) + 3 * sizeof(double)) +
          first_.size() * (2 * sizeof(std::uint32_t) + 2 * sizeof(double));

@@ -42,6 +42,8 @@ public:
   void scaled_stiffness_action(const double* x, double* y) const override;
   double scaled_stiffness_row_sum_bound() const override;
   std::size_t memory_bytes() const override;
+  void save_state(StateGroup& group) const override;
+  void load_state(const StateGroup& group) override;
   int threads() const override { return 1; }
   const Vec3& axis() const { return axis_; }
 

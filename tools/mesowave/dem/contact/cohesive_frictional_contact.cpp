@@ -57,6 +57,58 @@ std::size_t CohesiveFrictionalContact::broken_bond_count() const {
   return broken;
 }
 
+void CohesiveFrictionalContact::save_state(const SphereSystem& system, StateGroup& group) const {
+  const std::size_t m = bond_.size();
+  group.write("first", std::vector<std::uint32_t>(system.first(), system.first() + m));
+  group.write("second", std::vector<std::uint32_t>(system.second(), system.second() + m));
+  group.write("normal_x", nx_), group.write("normal_y", ny_), group.write("normal_z", nz_);
+  group.write("shear_x_N", sx_), group.write("shear_y_N", sy_), group.write("shear_z_N", sz_);
+  group.write("overlap0_m", overlap0_);
+  group.write("bond", bond_);
+  group.write("cohesive", cohesive_);
+  group.write("travelled_m", travelled_);
+  group.write("detection_passes", std::int64_t(detection_passes_));
+}
+
+void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGroup& group) {
+  const std::vector<std::uint32_t> first = group.read_uint32s("first"), second = group.read_uint32s("second");
+  const std::size_t n = system.sphere_count(), nb = system.bond_count();
+  bool fits = first.size() == second.size() && first.size() >= nb;
+  for (std::size_t s = 0; fits && s < first.size(); ++s) fits = first[s] < second[s] && second[s] < n;
+  if (!fits) throw InputError("checkpoint " + group.where() + ": its contacts do not fit this packing's " +
+                              std::to_string(n) + " spheres: the checkpoint is not from this run");
+  const auto order = system.set_contacts(first, second, moments());
+  for (std::size_t s = 0; s < order.size(); ++s)
+    if (order[s] != s) throw InputError("checkpoint " + group.where() + ": its contact layout is not this packing's");
+  const std::size_t m = first.size();
+  nx_.assign(m, 0), ny_.assign(m, 0), nz_.assign(m, 0), sx_.assign(m, 0), sy_.assign(m, 0), sz_.assign(m, 0);
+  overlap0_.assign(m, 0), cohesive_.assign(m, 0);
+  group.read_into("normal_x", nx_), group.read_into("normal_y", ny_), group.read_into("normal_z", nz_);
+  group.read_into("shear_x_N", sx_), group.read_into("shear_y_N", sy_), group.read_into("shear_z_N", sz_);
+  group.read_into("overlap0_m", overlap0_);
+  group.read_into("cohesive", cohesive_);
+  bond_ = group.read_uint32s("bond");
+  // Each bond once, in the slot of its own pair; cohesion only where a bond is (0 or 1).
+  const BondNetwork& bonds = system.bonds();
+  std::vector<std::uint8_t> placed(nb, 0);
+  std::size_t bonded = 0;
+  bool valid = bond_.size() == m;
+  for (std::size_t s = 0; valid && s < m; ++s) {
+    const std::uint32_t b = bond_[s];
+    if (b == kNoBond) {
+      valid = cohesive_[s] == 0.0;
+      continue;
+    }
+    valid = b < nb && !placed[b] && bonds.first[b] == first[s] && bonds.second[b] == second[s] &&
+            (cohesive_[s] == 0.0 || cohesive_[s] == 1.0);
+    if (valid) placed[b] = 1, ++bonded;
+  }
+  if (!valid || bonded != nb)
+    throw InputError("checkpoint " + group.where() + ": its bonds are not this packing's " + std::to_string(nb));
+  travelled_ = group.read_double("travelled_m");
+  detection_passes_ = std::size_t(group.read_int64("detection_passes"));
+}
+
 void CohesiveFrictionalContact::contact_forces(SphereSystem& system, double dt, bool evaluate_energy) {
   kernel(system, dt, evaluate_energy);
 }

@@ -80,6 +80,26 @@ void CohesiveMomentContact::moment_stiffness(const SphereSystem& system, std::si
   k_tw = twisting_stiffness(system.material(), p_, ri, rj);
 }
 
+void CohesiveMomentContact::save_state(const SphereSystem& system, StateGroup& group) const {
+  CohesiveFrictionalContact::save_state(system, group);
+  const char* axes[3] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d) {
+    group.write(std::string("bending_") + axes[d] + "_N_m", mb_[d]);
+    group.write(std::string("twisting_") + axes[d] + "_N_m", mt_[d]);
+  }
+}
+
+void CohesiveMomentContact::load_state(SphereSystem& system, const StateGroup& group) {
+  CohesiveFrictionalContact::load_state(system, group);
+  const char* axes[3] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d) {
+    mb_[d].assign(system.slot_count(), 0.0);
+    mt_[d].assign(system.slot_count(), 0.0);
+    group.read_into(std::string("bending_") + axes[d] + "_N_m", mb_[d]);
+    group.read_into(std::string("twisting_") + axes[d] + "_N_m", mt_[d]);
+  }
+}
+
 void CohesiveMomentContact::before_relayout(const SphereSystem& system) {
   saved_b_.assign(system.bonds().size(), Vec3{});
   saved_t_.assign(system.bonds().size(), Vec3{});

@@ -54,6 +54,9 @@ public:
   void contact_forces(SphereSystem& system, double dt, bool evaluate_energy) override;
   std::size_t memory_bytes() const override;
   void moment_stiffness(const SphereSystem& system, std::size_t bond, double& k_r, double& k_tw) const override;
+  /// The full law's state and the bending and twisting moments per slot.
+  void save_state(const SphereSystem& system, StateGroup& group) const override;
+  void load_state(SphereSystem& system, const StateGroup& group) override;
   /// The moments M_b, M_t of contact slot s (on its second sphere).
   Vec3 bending_moment(std::size_t s) const { return {mb_[0][s], mb_[1][s], mb_[2][s]}; }
   Vec3 twisting_moment(std::size_t s) const { return {mt_[0][s], mt_[1][s], mt_[2][s]}; }

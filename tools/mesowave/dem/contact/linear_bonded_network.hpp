@@ -24,6 +24,10 @@ public:
   void attach(SphereSystem& system) override;
   void contact_forces(SphereSystem& system, double dt, bool evaluate_energy) override;
   std::size_t memory_bytes() const override { return nx_.size() * 4 * sizeof(double); }
+  /// Nothing of its own changes from step to step (n0, u_0 and the layout are
+  /// fixed at attach); the system saves the motion.
+  void save_state(const SphereSystem&, StateGroup&) const override {}
+  void load_state(SphereSystem&, const StateGroup&) override {}
 
 private:
   void kernel(SphereSystem& system, bool evaluate_energy);

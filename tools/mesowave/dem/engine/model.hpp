@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <string>
 
+#include "mesowave/dem/engine/state_group.hpp"
 #include "mesowave/dem/engine/vec3.hpp"
 
 namespace mesowave::dem {
@@ -82,6 +83,14 @@ public:
   virtual void scaled_stiffness_action(const double* x, double* y) const = 0;
   /// Upper bound of lambda_max (Gershgorin: largest absolute row sum).
   virtual double scaled_stiffness_row_sum_bound() const = 0;
+
+  /// Everything that changes from step to step (positions, velocities,
+  /// energies, the contact law's state), exactly (state_group.hpp), so that a
+  /// run restarted from it continues to the same bits. Called between steps.
+  virtual void save_state(StateGroup& group) const = 0;
+  /// Reads what save_state wrote, into a model built from the same scene and
+  /// packing; InputError if the state does not fit it.
+  virtual void load_state(const StateGroup& group) = 0;
 
   /// Bytes held by the model's arrays.
   virtual std::size_t memory_bytes() const = 0;

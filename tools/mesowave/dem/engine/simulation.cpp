@@ -252,26 +252,29 @@ RunReport Simulation::run() {
       scene_.snapshot_interval_s > 0 && options_.on_snapshot
           ? whole_steps(scene_.snapshot_interval_s, dt, "snapshot interval")
           : 0;
-  std::int64_t snapshot_index = 0;
-  if (snapshot_every > 0) options_.on_snapshot(model, 0.0, snapshot_index++);
+  const std::int64_t first = loop_.done;  // 0, or the step a checkpoint restored
+  // Snapshot k is at step k * snapshot_every; a restarted run takes up the numbering after its step.
+  std::int64_t snapshot_index = first > 0 && snapshot_every > 0 ? first / snapshot_every + 1 : 0;
+  if (snapshot_every > 0 && first == 0) options_.on_snapshot(model, 0.0, snapshot_index++);
 
   // A test's stop rule reads the load sensors whenever they have a new sample.
   std::optional<UniaxialTestMonitor> monitor;
   std::vector<const Sensor*> loads;
   if (test_specimen_) {
     monitor.emplace(scene_.test, test_specimen_->area_m2);
+    monitor->resume(loop_.test_peak_Pa);
     for (const auto& name : scene_.test.load)
       for (const auto& s : sensors_)
         if (s->name() == name) loads.push_back(s.get());
   }
   std::vector<double> latest(loads.size());
-  std::size_t seen = 0;
+  std::size_t seen = loads.empty() ? 0 : loads.front()->samples().size();
   std::string stop_reason;
 
-  double initial_stored = 0, max_work = 0, peak_stored = 0;
-  std::int64_t done = 0;
+  const CheckpointOptions& checkpoint = options_.checkpoint;
+  bool request_served = false;
   const auto start = std::chrono::steady_clock::now();
-  for (std::int64_t n = 0; n < steps_; ++n) {
+  for (std::int64_t n = first; n < steps_; ++n) {
     const double t = double(n) * dt;
     for (auto& a : actuators_) a->before_step(model, t, dt);
     const bool energy_step = n % energy_every == 0 || n + 1 == steps_;
@@ -284,30 +287,44 @@ RunReport Simulation::run() {
       if (!std::isfinite(stored) || model.has_non_finite_state())
         throw InputError("the state became non-finite at step " + std::to_string(n) + " (t = " +
                          format_number(t * 1e6) + " us): the run is unstable; nothing was written");
-      if (n == 0) initial_stored = std::max(stored, 0.0);
-      max_work = std::max(max_work, e.external_work_J);
-      peak_stored = std::max(peak_stored, stored);
-      const double allowed = 4.0 * (initial_stored + max_work);
+      if (n == 0) loop_.initial_stored_J = std::max(stored, 0.0);
+      loop_.max_work_J = std::max(loop_.max_work_J, e.external_work_J);
+      loop_.peak_stored_J = std::max(loop_.peak_stored_J, stored);
+      const double allowed = 4.0 * (loop_.initial_stored_J + loop_.max_work_J);
       if (stored > allowed && stored > 1e-300)
         throw InputError("energy blow-up at step " + std::to_string(n) + " (t = " + format_number(t * 1e6) +
                          " us): stored energy " + format_number(stored) + " J exceeds 4x the energy put in (" +
-                         format_number(initial_stored + max_work) + " J); the time step " + ns_text(dt) +
+                         format_number(loop_.initial_stored_J + loop_.max_work_J) + " J); the time step " + ns_text(dt) +
                          " is too large for this packing (stable limit " + ns_text(dt_cr_.limit_s) +
                          ") or the model is unstable; nothing was written");
     }
     if (snapshot_every > 0 && (n + 1) % snapshot_every == 0) options_.on_snapshot(model, double(n + 1) * dt, snapshot_index++);
-    if (options_.on_progress) options_.on_progress(n + 1, steps_);
-    done = n + 1;
+    loop_.done = n + 1;
     if (monitor && loads.front()->samples().size() > seen) {
       seen = loads.front()->samples().size();
       for (std::size_t i = 0; i < loads.size(); ++i) latest[i] = loads[i]->samples().back();
-      if (monitor->stop_after(latest)) {
+      const bool stop = monitor->stop_after(latest);
+      loop_.test_peak_Pa = monitor->peak_Pa();
+      if (stop) {
         stop_reason = monitor->reason();
         break;
       }
     }
+    // A checkpoint when one is due, before the progress report (which ends an interrupted run).
+    if (!checkpoint.file.empty()) {
+      const bool due = checkpoint.every_steps > 0 && loop_.done % checkpoint.every_steps == 0;
+      const bool asked = !request_served && checkpoint.requested && checkpoint.requested();
+      if (due || asked) {
+        save_checkpoint(checkpoint.file, checkpoint.identity);
+        if (checkpoint.on_written) checkpoint.on_written(loop_.done);
+      }
+      request_served = request_served || asked;
+    }
+    if (options_.on_progress) options_.on_progress(loop_.done, steps_);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const std::int64_t done = loop_.done, stepped = done - first;  // this process's steps (all but a restart's)
 
   RunReport r = describe();
   r.ran = true;
@@ -315,10 +332,10 @@ RunReport Simulation::run() {
   r.duration_s = double(done) * dt;
   r.stop_reason = stop_reason;
   r.wall_s = wall;
-  r.steps_per_s = wall > 0 ? double(done) / wall : 0;
-  r.ns_per_contact_step = done > 0 && r.contacts > 0 ? wall * 1e9 / (double(done) * double(r.contacts)) : 0;
+  r.steps_per_s = wall > 0 ? double(stepped) / wall : 0;
+  r.ns_per_contact_step = stepped > 0 && r.contacts > 0 ? wall * 1e9 / (double(stepped) * double(r.contacts)) : 0;
   r.energy = model.energy();
-  r.peak_stored_J = peak_stored;
+  r.peak_stored_J = loop_.peak_stored_J;
   r.peak_force_ratio = model.peak_force_ratio();
   r.broken_bonds = model.broken_bond_count();
   if (options_.impulse_actuator >= 0) {
@@ -338,6 +355,64 @@ RunReport Simulation::run() {
   for (const auto& s : sensors_) r.signals.push_back(s->signal(dt));
   if (test_specimen_) r.test = analyse_uniaxial_test(r.signals, scene_.test, *test_specimen_);
   return r;
+}
+
+// The run's checkpoint (checkpoint.hpp): the loop's state, then each part's own.
+void Simulation::save_checkpoint(const std::filesystem::path& file, const CheckpointIdentity& identity) const {
+  write_checkpoint_file(file, identity, [&](StateGroup& root) {
+    StateGroup run = root.create("run");
+    run.write("steps_done", loop_.done);
+    run.write("steps", steps_);
+    run.write("dt_s", scene_.dt_s);
+    run.write("initial_stored_J", loop_.initial_stored_J);
+    run.write("max_work_J", loop_.max_work_J);
+    run.write("peak_stored_J", loop_.peak_stored_J);
+    run.write("test_peak_Pa", loop_.test_peak_Pa);
+    StateGroup model = root.create("model");
+    model_->save_state(model);
+    StateGroup actuators = root.create("actuators");
+    for (std::size_t i = 0; i < actuators_.size(); ++i) {
+      StateGroup g = actuators.create(std::to_string(i));
+      g.write_text("name", actuators_[i]->name());
+      actuators_[i]->save_state(g);
+    }
+    StateGroup sensors = root.create("sensors");
+    for (std::size_t i = 0; i < sensors_.size(); ++i) {
+      StateGroup g = sensors.create(std::to_string(i));
+      g.write_text("name", sensors_[i]->name());
+      sensors_[i]->save_state(g);
+    }
+  });
+}
+
+void Simulation::restore(const std::filesystem::path& file, const CheckpointIdentity& identity) {
+  read_checkpoint_file(file, identity, [&](const StateGroup& root) {
+    const StateGroup run = root.open("run");
+    // The identity covers the inputs and options; these are what they determine, checked once more.
+    if (run.read_int64("steps") != steps_ || run.read_double("dt_s") != scene_.dt_s)
+      throw InputError("checkpoint " + file.string() + " is of a run of another time step or duration");
+    const std::int64_t done = run.read_int64("steps_done");
+    if (done < 0 || done > steps_)
+      throw InputError("checkpoint " + file.string() + " holds step " + std::to_string(done) + " of a " +
+                       std::to_string(steps_) + "-step run");
+    model_->load_state(root.open("model"));
+    const StateGroup actuators = root.open("actuators"), sensors = root.open("sensors");
+    for (std::size_t i = 0; i < actuators_.size(); ++i) {
+      const StateGroup g = actuators.open(std::to_string(i));
+      g.expect_text("name", actuators_[i]->name());
+      actuators_[i]->load_state(g);
+    }
+    for (std::size_t i = 0; i < sensors_.size(); ++i) {
+      const StateGroup g = sensors.open(std::to_string(i));
+      g.expect_text("name", sensors_[i]->name());
+      sensors_[i]->load_state(g);
+    }
+    loop_.done = done;
+    loop_.initial_stored_J = run.read_double("initial_stored_J");
+    loop_.max_work_J = run.read_double("max_work_J");
+    loop_.peak_stored_J = run.read_double("peak_stored_J");
+    loop_.test_peak_Pa = run.read_double("test_peak_Pa");
+  });
 }
 
 }  // namespace mesowave::dem

@@ -10,7 +10,12 @@
 //     sensors.record(n)
 //     every energy_check_steps: energies; a non-finite state or stored energy
 //       above 4x (initial + work put in) stops the run with an error;
-//     a [test]'s stop rule (a drop after the peak, a stress reached) ends it early.
+//     a [test]'s stop rule (a drop after the peak, a stress reached) ends it early;
+//     a checkpoint (checkpoint.hpp) when one is due, then the progress report
+//       (which stops an interrupted run).
+//
+// restore() reads a checkpoint into a Simulation built from the same scene and
+// packing; run() then continues from the step it holds, to the same bits.
 //
 // After the run the linear model's measured peak bond force / strength is
 // checked against the scene's bound (the chain's against 1: no breakage), and
@@ -21,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "mesowave/dem/engine/checkpoint.hpp"
 #include "mesowave/dem/loading/actuator.hpp"
 #include "mesowave/dem/engine/model.hpp"
 #include "mesowave/dem/scene/model_choice.hpp"
@@ -50,6 +56,7 @@ struct SimulationOptions {
   /// motion sensor's displacement twin (the same spheres and component; what a
   /// viscous damping windows, superposition.hpp). -1: the scene's loads.
   int impulse_actuator = -1;
+  CheckpointOptions checkpoint;  ///< none unless checkpoint.file is set
 };
 
 struct RunReport {
@@ -93,8 +100,15 @@ public:
   std::int64_t steps() const { return steps_; }
   /// Everything known before running (what `mw-dem info` prints).
   RunReport describe() const;
-  /// Runs every step. InputError on a blow-up or a violated validity check.
+  /// Runs every step (from the restored one on). InputError on a blow-up or a violated validity check.
   RunReport run();
+  /// Steps done so far (restore() sets it; 0 for a fresh run).
+  std::int64_t steps_done() const { return loop_.done; }
+  /// Writes the state after steps_done() steps to `file` (checkpoint.hpp).
+  void save_checkpoint(const std::filesystem::path& file, const CheckpointIdentity& identity) const;
+  /// Reads a checkpoint of this run (InputError if it is of another, checkpoint.hpp); call before run().
+  /// After an InputError the Simulation may hold part of the checkpoint: build a new one.
+  void restore(const std::filesystem::path& file, const CheckpointIdentity& identity);
 
 private:
   Scene scene_;
@@ -110,6 +124,12 @@ private:
   std::vector<Placement> actuator_placements_, sensor_placements_;
   std::vector<std::int64_t> sample_interval_steps_;
   std::optional<UniaxialTestSpecimen> test_specimen_;
+  /// What the step loop carries besides the model, actuators and sensors (saved in checkpoints).
+  struct LoopState {
+    std::int64_t done = 0;  ///< steps done
+    double initial_stored_J = 0, max_work_J = 0, peak_stored_J = 0;  ///< the energy check's
+    double test_peak_Pa = 0;  ///< a [test]'s peak stress so far (its stop rule's)
+  } loop_;
 };
 
 }  // namespace mesowave::dem

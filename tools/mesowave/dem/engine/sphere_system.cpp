@@ -364,6 +364,48 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
   return row.empty() ? 0.0 : *std::max_element(row.begin(), row.end());
 }
 
+// Between steps the external forces are spent (f_ext_ zero, forced_ empty) and
+// the per-step buffers (forces, contact records, elastic and peak per task) are
+// rewritten before they are read; what carries over is the motion, the peak
+// ratio, the speed that drives contact detection, the energies - the cumulative
+// sums kept per task and per sphere block, in the order they are added - and
+// the law's state. The law goes first: a new contact layout resets the per-task
+// plastic sums, which are then read over it.
+void SphereSystem::save_state(StateGroup& group) const {
+  group.write("x", x_);
+  group.write("v", v_);
+  group.write("w", w_);
+  group.write("a", a_);
+  group.write("a_undamped", a_undamped_);
+  if (track_rotation_) group.write("theta", theta_);
+  group.write("peak_ratio", peak_ratio_);
+  group.write("max_speed", max_speed_);
+  group.write("kinetic_J", energy_.kinetic_J);
+  group.write("elastic_J", energy_.elastic_J);
+  group.write("external_work_J", energy_.external_work_J);
+  group.write("sphere_block_damping_J", sphere_block_damping_);
+  StateGroup law = group.create("law");
+  kernel_->save_state(*this, law);
+  group.write("task_plastic_J", task_plastic_);
+}
+
+void SphereSystem::load_state(const StateGroup& group) {
+  kernel_->load_state(*this, group.open("law"));
+  group.read_into("x", x_);
+  group.read_into("v", v_);
+  group.read_into("w", w_);
+  group.read_into("a", a_);
+  group.read_into("a_undamped", a_undamped_);
+  if (track_rotation_) group.read_into("theta", theta_);
+  peak_ratio_ = group.read_double("peak_ratio");
+  max_speed_ = group.read_double("max_speed");
+  energy_.kinetic_J = group.read_double("kinetic_J");
+  energy_.elastic_J = group.read_double("elastic_J");
+  energy_.external_work_J = group.read_double("external_work_J");
+  group.read_into("sphere_block_damping_J", sphere_block_damping_);
+  group.read_into("task_plastic_J", task_plastic_);
+}
+
 std::size_t SphereSystem::memory_bytes() const {
   const std::size_t n = spheres_.size();
   std::size_t bytes = n * (sizeof(Vec3) * (6 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + 2 * sizeof(double) +

@@ -53,6 +53,11 @@ public:
   virtual std::size_t contact_count() const { return 0; }
   virtual std::size_t broken_bond_count() const { return 0; }
   virtual std::size_t memory_bytes() const = 0;
+  /// The law's state that changes from step to step (a checkpoint, state_group.hpp):
+  /// bonds broken, shear forces, contacts detected and their layout. load_state
+  /// restores it into a law attached to a system built from the same packing.
+  virtual void save_state(const SphereSystem& system, StateGroup& group) const = 0;
+  virtual void load_state(SphereSystem& system, const StateGroup& group) = 0;
   /// Rolling and twisting stiffness of bond b at step 0 (moment = -k_r theta_bend - k_tw theta_twist),
   /// for the critical time step; 0 for laws without moments.
   virtual void moment_stiffness(const SphereSystem& /*system*/, std::size_t /*bond*/, double& k_r, double& k_tw) const {
@@ -93,6 +98,8 @@ public:
   void scaled_stiffness_action(const double* x, double* y) const override;
   double scaled_stiffness_row_sum_bound() const override;
   std::size_t memory_bytes() const override;
+  void save_state(StateGroup& group) const override;
+  void load_state(const StateGroup& group) override;
   int threads() const override { return parallel_ ? threads_ : 1; }
 
   const SphereSet& spheres() const { return spheres_; }

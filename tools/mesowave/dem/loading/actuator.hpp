@@ -28,6 +28,10 @@ public:
   /// Largest stiffness / mass it adds to one sphere [1/s^2] (a wall's contact
   /// springs), for the critical time step; 0 for loads that add none.
   virtual double added_stiffness_per_mass() const { return 0; }
+  /// What it carries from step to step (a checkpoint, state_group.hpp); a
+  /// load that is a function of time alone keeps only its last force.
+  virtual void save_state(StateGroup& group) const = 0;
+  virtual void load_state(const StateGroup& group) = 0;
 };
 
 }  // namespace mesowave::dem

@@ -26,6 +26,9 @@ public:
   const std::vector<std::size_t>& spheres() const override { return spheres_; }
   std::string description() const override;
   double applied_force() const override { return last_force_; }
+  /// Its load is a function of time alone: only the last force carries over.
+  void save_state(StateGroup& group) const override { group.write("last_force_N", last_force_); }
+  void load_state(const StateGroup& group) override { last_force_ = group.read_double("last_force_N"); }
 
 private:
   std::string name_;

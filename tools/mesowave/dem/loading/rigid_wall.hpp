@@ -35,6 +35,9 @@ public:
   std::string description() const override;
   /// The total force the wall exerts on the specimen along its inward normal [N].
   double applied_force() const override { return last_force_; }
+  /// Its load is a function of time alone: only the last force carries over.
+  void save_state(StateGroup& group) const override { group.write("last_force_N", last_force_); }
+  void load_state(const StateGroup& group) override { last_force_ = group.read_double("last_force_N"); }
   double added_stiffness_per_mass() const override { return max_stiffness_per_mass_; }
 
   /// Position of the plane along its axis at time t [m].

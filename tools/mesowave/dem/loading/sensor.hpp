@@ -28,6 +28,10 @@ public:
   const std::vector<double>& samples() const { return samples_; }
   virtual signal::Signal signal(double dt_s) const = 0;
   virtual std::string description() const = 0;
+  /// The samples recorded so far (a checkpoint, state_group.hpp); a kind with
+  /// state of its own overrides both and calls these.
+  virtual void save_state(StateGroup& group) const { group.write("samples", samples_); }
+  virtual void load_state(const StateGroup& group) { samples_ = group.read_doubles("samples"); }
 
 protected:
   /// One sample of the model as it is after a step.

@@ -1,0 +1,66 @@
+#pragma once
+// Checkpoint and restart of a DEM run (mw-dem run --checkpoint FILE
+// --checkpoint-every-steps N; --restart FILE): the run's state after a step,
+// written so that a run restarted from it continues to the same bits as one
+// that never stopped. One HDF5 file:
+//
+//   /           attributes format = "mesowave-dem-checkpoint", format_version,
+//               scene_sha256, packing_sha256, experiment_sha256 (the files'
+//               contents) and options (JSON: the options that change results)
+//   /run        steps_done and the loop's own running values (energy check, a [test]'s peak)
+//   /model      the model's state (Model::save_state), /model/law its contact law's
+//   /actuators/<index>, /sensors/<index>   each one's state (an attribute names it)
+//
+// Every part writes its own state (state_group.hpp): numbers binary, exact.
+// The file is written whole or not at all (a temporary sibling renamed into
+// place), so a run killed while writing keeps the previous checkpoint. A
+// restart refuses, with one line naming what differs, a checkpoint of another
+// scene file, packing file, experiment file or results-changing option.
+//
+// Snapshots (--snapshots) of a restarted run begin at the restart step: the
+// interrupted run's were discarded with its other outputs.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "mesowave/dem/engine/state_group.hpp"
+#include "mesowave/dem/scene/scene.hpp"
+
+namespace mesowave::dem {
+
+struct SceneOverrides;  // scene_overrides.hpp
+
+/// What makes two runs the same run: the inputs' contents and the options that change results.
+struct CheckpointIdentity {
+  std::string scene_sha256, packing_sha256, experiment_sha256;  ///< experiment: "" without one
+  /// Option (as on mw-dem's command line: "--dt-ns") -> value; 0 or false: the scene's own.
+  nlohmann::ordered_json options = nlohmann::ordered_json::object();
+};
+
+/// The identity of a run of `scene` (read from `scene_file`, `overrides` applied) with --model `model`.
+CheckpointIdentity run_identity(const std::filesystem::path& scene_file, const Scene& scene,
+                                const SceneOverrides& overrides, const std::string& model);
+
+/// When and where a run writes checkpoints (SimulationOptions::checkpoint).
+struct CheckpointOptions {
+  std::filesystem::path file;     ///< empty: none
+  std::int64_t every_steps = 0;   ///< after every N steps (0: only when `requested` says so)
+  /// Polled after each step: true once a checkpoint should be written now (a
+  /// SIGTERM arrived, before the run's progress report stops it). One is written per request.
+  std::function<bool()> requested;
+  CheckpointIdentity identity;
+  std::function<void(std::int64_t steps_done)> on_written;  ///< after each checkpoint (optional)
+};
+
+/// Writes a checkpoint file: the identity, then `body` fills the root group.
+void write_checkpoint_file(const std::filesystem::path& file, const CheckpointIdentity& identity,
+                           const std::function<void(StateGroup& root)>& body);
+/// Reads one: InputError if it is not a checkpoint or not of the run `identity`
+/// describes (naming the first difference), else `body` reads the root group.
+void read_checkpoint_file(const std::filesystem::path& file, const CheckpointIdentity& identity,
+                          const std::function<void(const StateGroup& root)>& body);
+
+}  // namespace mesowave::dem

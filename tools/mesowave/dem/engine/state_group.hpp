@@ -1,0 +1,64 @@
+#pragma once
+// What a DEM run carries from step to step, saved and read back exactly so that
+// a run restarted from a checkpoint (checkpoint.hpp) continues to the same bits
+// as an uninterrupted one. Each stateful part of a run - the model (positions,
+// velocities, energies), its contact law (bonds broken, shear forces, the
+// contact list), each actuator and each sensor (the samples so far) - writes its
+// own state to a group of the checkpoint file and reads it from there, through
+// save_state / load_state (Model, ContactKernel, Actuator, Sensor); the engine
+// knows no kind. Numbers are stored binary (float64 for doubles, int64 for
+// counts and indices), never as text, so every double comes back bit for bit.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesowave/dem/engine/vec3.hpp"
+
+namespace mesowave::dem {
+
+/// One group of a checkpoint file (an HDF5 group; the id is an HDF5 hid_t,
+/// kept as int64 so that this header does not include HDF5). A read of a
+/// missing value, or of an array of another size than the run's, is an
+/// InputError naming the value and the file: the checkpoint is from another run.
+class StateGroup {
+public:
+  StateGroup(std::int64_t hdf5_id, std::string where) : id_(hdf5_id), where_(std::move(where)) {}
+  ~StateGroup();
+  StateGroup(StateGroup&& other) noexcept : id_(other.id_), where_(std::move(other.where_)) { other.id_ = -1; }
+  StateGroup(const StateGroup&) = delete;
+  StateGroup& operator=(const StateGroup&) = delete;
+
+  /// A sub-group: created (writing) or opened (reading; InputError if missing).
+  StateGroup create(const std::string& name);
+  StateGroup open(const std::string& name) const;
+
+  void write(const std::string& name, double value);
+  void write(const std::string& name, std::int64_t value);
+  void write(const std::string& name, const std::vector<double>& values);
+  void write(const std::string& name, const std::vector<Vec3>& values);
+  void write(const std::string& name, const std::vector<std::uint32_t>& values);
+
+  /// A text attribute of the group (a part's name).
+  void write_text(const std::string& key, const std::string& text);
+  /// InputError unless the attribute holds `text`.
+  void expect_text(const std::string& key, const std::string& text) const;
+
+  double read_double(const std::string& name) const;
+  std::int64_t read_int64(const std::string& name) const;
+  /// Arrays of any length.
+  std::vector<double> read_doubles(const std::string& name) const;
+  std::vector<std::uint32_t> read_uint32s(const std::string& name) const;
+  /// Into an array of the run's own length: InputError if the stored one differs.
+  void read_into(const std::string& name, std::vector<double>& values) const;
+  void read_into(const std::string& name, std::vector<Vec3>& values) const;
+
+  /// "FILE:/model/kernel", for messages.
+  const std::string& where() const { return where_; }
+  std::int64_t id() const { return id_; }
+
+private:
+  std::int64_t id_;
+  std::string where_;
+};
+
+}  // namespace mesowave::dem
