@@ -135,6 +135,69 @@ TEST(MwDem, RunWritesSignalsAndSummary) {
   EXPECT_EQ(j["validity_bound"], nullptr);
 }
 
+// One run, every frequency (--frequencies-kHz): the undamped chain is linear, so each file equals
+// the direct run at its frequency to round-off, and the record says how it was made.
+TEST(MwDem, FrequenciesFromOneRunMatchTheDirectRuns) {
+  test::TempDir dir;
+  dem::write_packing_file(dir / "rod.h5", rod(191, 5.1e-3, 1.03 * 5.1e-3));
+  test::write_file(dir / "rod.toml", rod_scene(dir / "rod.h5"));
+  const auto r = run_tool("mw-dem", {"run", (dir / "rod.toml").string(), "--duration-ms", "0.5", "--frequencies-kHz",
+                                     "80,120", "--check-kHz", "120", "--signals-pattern", (dir / "s-{f}kHz.h5").string(),
+                                     "--summary-pattern", (dir / "s-{f}kHz.json").string(), "--summary",
+                                     (dir / "all.json").string(), "--quiet"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  for (const char* f : {"80", "120"}) {
+    const auto d = run_tool("mw-dem", {"run", (dir / "rod.toml").string(), "--duration-ms", "0.5", "--frequency-kHz", f,
+                                       "--signals", (dir / "d.h5").string(), "--quiet"});
+    ASSERT_EQ(d.exit_status, 0) << d.err;
+    const auto direct = signal::read_signal_file(dir / "d.h5");
+    const auto superposed = signal::read_signal_file(dir / ("s-" + std::string(f) + "kHz.h5"));
+    ASSERT_EQ(superposed.size(), 1u);
+    EXPECT_EQ(superposed[0].name, direct[0].name);
+    EXPECT_EQ(superposed[0].t0_s, direct[0].t0_s);
+    EXPECT_EQ(superposed[0].dt_s, direct[0].dt_s);
+    ASSERT_EQ(superposed[0].size(), direct[0].size());
+    double peak = 0, diff = 0;
+    for (std::size_t i = 0; i < direct[0].size(); ++i) {
+      peak = std::max(peak, std::abs(direct[0].samples[i]));
+      diff = std::max(diff, std::abs(superposed[0].samples[i] - direct[0].samples[i]));
+    }
+    EXPECT_LT(diff, 1e-10 * peak) << f;
+    const auto j = nlohmann::json::parse(test::read_file(dir / ("s-" + std::string(f) + "kHz.json")));
+    EXPECT_EQ(j["method"], "superposition");
+    EXPECT_EQ(j["model"], "chain");
+    EXPECT_EQ(j["superposition"]["exact"], true);
+    EXPECT_EQ(j["actuator_loads"][0]["frequency_hz"].get<double>(), std::stod(f) * 1e3);
+    EXPECT_EQ(j["superposition"]["check"] == nullptr, std::string(f) == "80");
+  }
+  const auto all = nlohmann::json::parse(test::read_file(dir / "all.json"));
+  ASSERT_EQ(all["superposition"]["checks"].size(), 1u);
+  EXPECT_GT(all["superposition"]["checks"][0]["min_pcc"].get<double>(), 1 - 1e-12);
+  EXPECT_LT(all["superposition"]["checks"][0]["max_diff_over_peak"].get<double>(), 1e-10);
+  EXPECT_EQ(all["frequencies"].size(), 2u);
+}
+
+TEST(MwDem, FrequenciesNeedAPatternWithTheFrequencyAndWriteNothingOtherwise) {
+  test::TempDir dir;
+  dem::write_packing_file(dir / "rod.h5", rod(50, 5.1e-3, 1.03 * 5.1e-3));
+  test::write_file(dir / "rod.toml", rod_scene(dir / "rod.h5"));
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--signals-pattern", (dir / "s.h5").string()}, "needs {f}"},
+      {{"--signals-pattern", (dir / "s-{f}.h5").string(), "--signals", (dir / "s.h5").string()}, "for one direct run"},
+      {{"--signals-pattern", (dir / "s-{f}.h5").string(), "--check-kHz", "90"}, "must be one of --frequencies-kHz"},
+      {{"--signals-pattern", (dir / "s-{f}.h5").string(), "--model", "full"}, "needs a linear model"},
+  };
+  for (const auto& [extra, why] : cases) {
+    std::vector<std::string> args = {"run", (dir / "rod.toml").string(), "--duration-ms", "0.01", "--frequencies-kHz",
+                                     "80,120", "--quiet"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_tool("mw-dem", args);
+    EXPECT_EQ(r.exit_status, 1) << why;
+    EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+    EXPECT_EQ(test::count_files(dir.path()), 2u) << why;
+  }
+}
+
 TEST(MwDem, RecordsItsRunWithInputsOutputsAndMetrics) {
   test::TempDir dir;
   dem::write_packing_file(dir / "rod.h5", rod(50, 5.1e-3, 1.03 * 5.1e-3));

@@ -19,6 +19,9 @@ struct CohesiveFrictionalMaterial {
   double cohesion_Pa = std::numeric_limits<double>::infinity();
   double density_kg_m3 = 0;       ///< particle density rho_p
   double damping = 0;             ///< alpha_d of Eq. (7), local non-viscous damping
+  /// c of a mass-proportional viscous damping, force -c m v and torque -c I w [1/s] (0: none).
+  /// Set by [model] damping_law = "viscous" in place of alpha_d (scene.hpp): a linear damping.
+  double viscous_damping_1_s = 0;
   double bond_factor = 1.1;       ///< C_f: pairs with |x_j - x_i| <= C_f (r_i + r_j) are bonded at step 0
 
   bool breakable() const { return tensile_strength_Pa < std::numeric_limits<double>::infinity() ||

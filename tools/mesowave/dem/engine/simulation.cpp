@@ -6,6 +6,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/dem/loading/force_actuator.hpp"
 #include "mesowave/dem/loading/sphere_selection.hpp"
 
 namespace mesowave::dem {
@@ -80,6 +81,28 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
       throw InputError("no particle density: the packing file has none, so set [material] density_kg_m3 in the scene");
     m.density_kg_m3 = packing.particle_density_kg_m3;
   }
+  if (scene_.damping_law == "viscous") {
+    // c = 4 alpha_d f_c: Eq. (7) on one oscillator loses 4 alpha_d of its energy per cycle (alpha_d x the
+    // spring's energy in each quarter), viscous damping 4 pi zeta, so zeta = alpha_d / pi and c = 2 zeta w_c.
+    double f_c = 0;
+    for (const auto& a : scene_.actuators) {
+      if (a.kind != "force" || !(a.frequency_hz > 0))
+        throw InputError("[model] damping_law = \"viscous\" takes c = 4 alpha_d f_c from the bursts' centre frequency, "
+                         "but actuator " + a.name + " is not a force burst");
+      if (f_c != 0 && a.frequency_hz != f_c)
+        throw InputError("[model] damping_law = \"viscous\" needs one centre frequency for every burst (actuator " +
+                         a.name + ": " + format_number(a.frequency_hz / 1e3) + " kHz, another " +
+                         format_number(f_c / 1e3) + " kHz)");
+      f_c = a.frequency_hz;
+    }
+    if (f_c == 0) throw InputError("[model] damping_law = \"viscous\" needs a force burst (c = 4 alpha_d f_c)");
+    m.viscous_damping_1_s = 4.0 * m.damping * f_c;
+    notes_.push_back("damping_law viscous: the local damping alpha_d = " + format_number(m.damping) +
+                     " is replaced by mass-proportional viscous damping c = 4 alpha_d f_c = " +
+                     format_number(m.viscous_damping_1_s) + " 1/s (f_c = " + format_number(f_c / 1e3) +
+                     " kHz): the same amplitude loss per cycle, 2 alpha_d, at the bursts' centre frequency, and linear");
+    m.damping = 0;
+  }
   SphereSet spheres = make_sphere_set(packing, m.density_kg_m3);
   BondNetwork bonds = make_bond_network(spheres, m.bond_factor);
   const Box box = bounding_box(spheres);
@@ -100,6 +123,8 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
   }
   const std::string requested = options_.model != "auto" ? options_.model : scene_.model;
   choice_ = choose_model(requested, scene_, spheres, bonds, loads);
+  if (choice_.model == "chain" && m.viscous_damping_1_s != 0)
+    throw InputError("[model] damping_law = \"viscous\" is not implemented for the chain model; use --model linear");
 
   // Notes a user should see: second-neighbour bonds on a line (the rod at d < C_f R).
   if (auto axis = line_axis(spheres)) {
@@ -135,17 +160,41 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
                                     a.amplitude, a.frequency_hz, a.cycles, a.delay_s, {}});
     actuators_.push_back(actuator_kinds().get(a.kind, "actuator " + a.name).make(
         ActuatorSite{a, loads[i].spheres, loads[i].direction, *model_, box, m, scene_.duration_s}));
+    if (options_.impulse_actuator >= 0) {
+      if (a.kind != "force") throw InputError("actuator " + a.name + " is not a force actuator: no impulse response");
+      const bool pushes = std::size_t(options_.impulse_actuator) == i;
+      actuators_.back() = std::make_unique<ForceSeriesActuator>(a.name, loads[i].spheres, loads[i].direction,
+                                                                pushes ? std::vector<double>{1.0} : std::vector<double>{});
+    }
   }
+  if (options_.impulse_actuator >= std::int64_t(actuators_.size()))
+    throw InputError("no actuator number " + std::to_string(options_.impulse_actuator) + " for an impulse response");
   for (std::size_t i = 0; i < scene_.sensors.size(); ++i) {
     const SensorSpec& sensor = scene_.sensors[i];
     const std::string who = "sensor " + sensor.name;
     const std::int64_t every =
         sensor.sample_interval_s > 0 ? whole_steps(sensor.sample_interval_s, scene_.dt_s, who + " sample interval") : 1;
+    sample_interval_steps_.push_back(every);
     Placement where{sensor.name, "", {}, {}, 0, 0, 0, 0, {}};
     sensors_.push_back(sensor_kinds().get(sensor.kind, who).make(
-        SensorSite{sensor, *model_, sensor_groups[i], line, every, actuators_}, where));
+        SensorSite{sensor, *model_, sensor_groups[i], line, options_.impulse_actuator >= 0 ? 1 : every, actuators_},
+        where));
     sensor_placements_.push_back(std::move(where));
   }
+  if (options_.impulse_actuator >= 0)
+    for (std::size_t i = 0; i < loads.size(); ++i)
+      sensors_.push_back(std::make_unique<MotionSensor>("actuator " + loads[i].spec->name, loads[i].spheres,
+                                                        MotionQuantity::velocity, (1.0 / norm(loads[i].direction)) * loads[i].direction,
+                                                        "actuator direction", 1, Vec3{}));
+  if (options_.impulse_actuator >= 0)
+    for (std::size_t i = 0; i < scene_.sensors.size(); ++i) {
+      SensorSpec twin = scene_.sensors[i];
+      if (twin.kind != "motion") continue;  // superposition refuses other kinds
+      twin.quantity = MotionQuantity::displacement;
+      Placement unused{twin.name, "", {}, {}, 0, 0, 0, 0, {}};
+      sensors_.push_back(sensor_kinds().get(twin.kind, "sensor " + twin.name)
+                             .make(SensorSite{twin, *model_, sensor_groups[i], line, 1, actuators_}, unused));
+    }
   double r_min = model_->radius(0);
   for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
   dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.E_dem_Pa, m.damping);
@@ -190,6 +239,7 @@ RunReport Simulation::describe() const {
   for (const auto& s : sensors_) r.sensors.push_back(s->name() + ": " + s->description());
   r.notes = notes_;
   r.setup_s = setup_s_;
+  r.sample_interval_steps = sample_interval_steps_;
   return r;
 }
 
@@ -288,7 +338,9 @@ RunReport Simulation::run() {
   r.peak_stored_J = loop_.peak_stored_J;
   r.peak_force_ratio = model.peak_force_ratio();
   r.broken_bonds = model.broken_bond_count();
-  if (choice_.model == "linear") {
+  if (options_.impulse_actuator >= 0) {
+    // superposition.hpp checks the bound for the burst the response is convolved with.
+  } else if (choice_.model == "linear") {
     r.validity_bound = scene_.linear_validity_bound;
     if (!(r.peak_force_ratio < r.validity_bound))
       throw InputError("the linearised network is not valid for this run: the peak bond force / strength reached " +

@@ -46,6 +46,16 @@ struct SimulationOptions {
   std::function<void(std::int64_t done, std::int64_t total)> on_progress;
   /// Called at t = 0 and every scene.snapshot_interval_s (if > 0).
   std::function<void(const Model& model, double t_s, std::int64_t index)> on_snapshot;
+  /// Superposition (superposition.hpp), >= 0: actuator number `impulse_actuator`
+  /// pushes a unit impulse (1 N on step 0, shared by its spheres, along its
+  /// direction), the other actuators push nothing, every sensor samples every
+  /// step, and the peak bond force / strength is left to the caller to check
+  /// (it scales with the burst the response is convolved with). After the
+  /// scene's sensors the run adds one per actuator: the mean velocity of its
+  /// spheres along its direction, v_{n+1/2} (the power it puts in), then each
+  /// motion sensor's displacement twin (the same spheres and component; what a
+  /// viscous damping windows, superposition.hpp). -1: the scene's loads.
+  int impulse_actuator = -1;
   CheckpointOptions checkpoint;  ///< none unless checkpoint.file is set
 };
 
@@ -73,6 +83,8 @@ struct RunReport {
   double peak_force_ratio = 0;
   double validity_bound = 0;  ///< the bound the peak ratio was checked against (0: none)
   std::vector<signal::Signal> signals;
+  /// Each sensor's sampling interval in steps, as the scene asks (an impulse run samples every step regardless).
+  std::vector<std::int64_t> sample_interval_steps;
 };
 
 class Simulation {
@@ -117,6 +129,7 @@ private:
   double setup_s_ = 0;
   std::vector<std::string> notes_;
   std::vector<Placement> actuator_placements_, sensor_placements_;
+  std::vector<std::int64_t> sample_interval_steps_;
   std::optional<UniaxialTestSpecimen> test_specimen_;
   /// What the step loop carries besides the model, actuators and sensors (saved in checkpoints).
   struct LoopState {

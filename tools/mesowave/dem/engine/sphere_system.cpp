@@ -247,6 +247,10 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
 MESOWAVE_KERNEL_CLONES
 void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t blk, double dt, bool evaluate_energy) {
   const double alpha = material_.damping, half_dt = 0.5 * dt;
+  // Mass-proportional viscous damping (scene.hpp, damping_law viscous), implicit midpoint:
+  // v_{n+1/2} = ((1 - c dt/2) v_{n-1/2} + dt F/m) / (1 + c dt/2), i.e. a = (a - c v_{n-1/2}) / (1 + c dt/2).
+  const double c_visc = material_.viscous_damping_1_s, inv_den = 1.0 / (1.0 + half_dt * c_visc);
+  const bool viscous = c_visc != 0;
   const std::size_t m = 3 * (end - begin);
   double terms[2][3 * kSphereBlock];
   double vmax2 = 0, kinetic = 0, damping = 0;
@@ -267,7 +271,8 @@ void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t
       const double v0 = v[c];
       const double p = a_free * (v0 + half_dt * a_free);
       const double sign = p > 0.0 ? 1.0 : (p < 0.0 ? -1.0 : 0.0);
-      const double a = a_free * (1.0 - alpha * sign);
+      const double a_local = a_free * (1.0 - alpha * sign);
+      const double a = viscous ? (a_local - c_visc * v0) * inv_den : a_local;
       const double v1 = v0 + dt * a;
       const double mass = 1.0 / inv_m[c];
       kin[c] = 0.5 * mass * v0 * v1;
@@ -287,7 +292,7 @@ void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t
     if (!rotation) vmax2 = part_vmax2;
     if (evaluate_energy)
       for (std::size_t c = 0; c < m; ++c) kinetic += kin[c];
-    if (alpha != 0)
+    if (alpha != 0 || viscous)
       for (std::size_t c = 0; c < m; ++c) damping += dmp[c];
   }
   sphere_block_kinetic_[blk] = kinetic;

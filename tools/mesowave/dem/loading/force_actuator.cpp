@@ -12,10 +12,14 @@ ForceActuator::ForceActuator(std::string name, std::vector<std::size_t> spheres,
     : name_(std::move(name)), spheres_(std::move(spheres)), direction_((1.0 / norm(direction)) * direction),
       force_(force_N) {}
 
+double burst_force_N(const signal::HannBurst& burst, double t_s) {
+  if (t_s < burst.delay_s() || t_s > burst.end_s()) return 0.0;
+  return burst(t_s);
+}
+
 void ForceActuator::before_step(Model& model, double t_s, double /*dt_s*/) {
-  last_force_ = 0;
+  last_force_ = burst_force_N(force_, t_s);
   if (t_s < force_.delay_s() || t_s > force_.end_s()) return;
-  last_force_ = force_(t_s);
   const Vec3 share = (last_force_ / double(spheres_.size())) * direction_;
   for (std::size_t k : spheres_) model.add_external_force(k, share);
 }
@@ -25,6 +29,26 @@ std::string ForceActuator::description() const {
          " kHz " + format_number(force_.cycles()) + "-cycle Hann burst along (" + format_number(direction_.x + 0.0) + ", " +
          format_number(direction_.y + 0.0) + ", " + format_number(direction_.z + 0.0) + ") shared by " +
          std::to_string(spheres_.size()) + " spheres";
+}
+
+ForceSeriesActuator::ForceSeriesActuator(std::string name, std::vector<std::size_t> spheres, const Vec3& direction,
+                                         std::vector<double> force_N)
+    : name_(std::move(name)), spheres_(std::move(spheres)), direction_((1.0 / norm(direction)) * direction),
+      force_(std::move(force_N)) {}
+
+void ForceSeriesActuator::before_step(Model& model, double t_s, double dt_s) {
+  const auto n = std::llround(t_s / dt_s);  // t_s = n dt_s exactly (the step loop's time)
+  last_force_ = n >= 0 && std::size_t(n) < force_.size() ? force_[std::size_t(n)] : 0.0;
+  if (last_force_ == 0) return;
+  const Vec3 share = (last_force_ / double(spheres_.size())) * direction_;
+  for (std::size_t k : spheres_) model.add_external_force(k, share);
+}
+
+std::string ForceSeriesActuator::description() const {
+  std::string what = force_.empty() ? "no force" : force_.size() == 1 ? "force " + format_number(force_[0]) + " N on step 0 (an impulse)"
+                                                                     : "force given on " + std::to_string(force_.size()) + " steps";
+  return what + " along (" + format_number(direction_.x + 0.0) + ", " + format_number(direction_.y + 0.0) + ", " +
+         format_number(direction_.z + 0.0) + ") shared by " + std::to_string(spheres_.size()) + " spheres";
 }
 
 }  // namespace mesowave::dem

@@ -352,6 +352,9 @@ Scene parse_scene(const std::string& text, const std::string& origin, const std:
       throw InputError(k.where() + ".choice (\"" + s.model + "\") must be auto, full, linear or chain");
     s.linear_validity_bound = require_in_range(k.where() + ".linear_validity_bound", k.number("linear_validity_bound", 1e-3), 1e-12, 1.0);
     s.energy_check_steps = int(require_in_range(k.where() + ".energy_check_steps", k.number("energy_check_steps", 100), 1, 1e9));
+    s.damping_law = k.text("damping_law", "local");
+    if (s.damping_law != "local" && s.damping_law != "viscous")
+      throw InputError(k.where() + ".damping_law (\"" + s.damping_law + "\") must be local or viscous");
     k.finish();
   }
   std::set<std::string> names;

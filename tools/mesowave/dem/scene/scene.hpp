@@ -17,7 +17,10 @@
 //               absent = bonds never break), density_kg_m3 (optional: the packing's),
 //               damping (alpha_d), bond_factor (C_f)
 //   [time]      dt_ns, duration_ms
-//   [model]     choice (auto | full | linear | chain), linear_validity_bound, energy_check_steps
+//   [model]     choice (auto | full | linear | chain), linear_validity_bound, energy_check_steps,
+//               damping_law (local: Eq. 7 with alpha_d, the paper's | viscous: mass-proportional
+//               viscous damping c = 4 alpha_d f_c of the same amplitude loss per cycle, 2 alpha_d,
+//               at the bursts' centre frequency f_c - linear, so superposition holds)
 //   [[actuator]] name, kind (force | displacement | velocity), where (face + centre_mm + patch_mm
 //               [+ depth_mm] | point_mm | sphere = "first"/"last"), direction (inward | line | x | -x | ...),
 //               amplitude_N (force) or amplitude_nm (displacement) with frequency_kHz, cycles;
@@ -93,6 +96,7 @@ struct Scene {
   bool density_given = false;  ///< false: take the packing file's particle density
   double dt_s = 0, duration_s = 0;
   std::string model = "auto";
+  std::string damping_law = "local";  ///< local (Eq. 7) | viscous (c = 4 alpha_d f_c, mass-proportional)
   double linear_validity_bound = 1e-3;
   int energy_check_steps = 100;
   std::vector<ActuatorSpec> actuators;

@@ -21,6 +21,10 @@ void add_override_options(CLI::App& app, SceneOverrides& o) {
     if (!p.option.empty())
       app.add_option_function<double>(p.option, [&o, key = p.key](double v) { o.material[key] = v; },
                                       p.meaning + " (beats the scene's [material]; --from mw-calibrate's JSON fills it)");
+  app.add_option("--damping-law", o.damping_law,
+                 "local (Eq. 7, alpha_d) | viscous (mass-proportional, c = 4 alpha_d f_c: the same amplitude loss "
+                 "per cycle at the bursts' centre frequency, linear) instead of the scene's [model] damping_law")
+      ->check(CLI::IsMember({"local", "viscous"}));
   app.add_flag("--unbreakable-bonds", o.unbreakable,
                "Bonds never break (no T, C): the elastic response (mw-calibrate's elastic trials)");
   app.add_option("--stop-at-MPa", o.stop_at_MPa, "A [test] ends once its stress reaches this [MPa]");
@@ -41,6 +45,7 @@ void apply_overrides(Scene& scene, const SceneOverrides& o) {
       if (actuator_kinds().get(a.kind, "actuator " + a.name).moving && a.amplitude != 0)
         a.amplitude = o.velocity_mm_s * units::mm;
   }
+  if (!o.damping_law.empty()) scene.damping_law = o.damping_law;
   if (o.unbreakable)
     scene.material.tensile_strength_Pa = scene.material.cohesion_Pa = std::numeric_limits<double>::infinity();
   if ((o.stop_at_MPa != 0 || !o.modulus_levels_MPa.empty()) && !scene.test.active())

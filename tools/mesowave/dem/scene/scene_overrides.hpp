@@ -21,6 +21,7 @@ struct SceneOverrides {
   std::filesystem::path packing;        ///< empty: the scene's [packing] file
   std::map<std::string, double> material;  ///< material_parameters() key -> value in the key's unit
   bool unbreakable = false;             ///< no T, C: bonds never break
+  std::string damping_law;              ///< empty: the scene's [model] damping_law
   // 0 (or empty, or a negative snapshot interval): keep the scene's value.
   double frequency_kHz = 0, dt_ns = 0, duration_ms = 0, snapshot_us = -1, stop_at_MPa = 0, velocity_mm_s = 0;
   std::vector<double> modulus_levels_MPa;  ///< two stresses, or none
