@@ -52,7 +52,7 @@
 // Shock (bulk) viscosity, off by default (DynamicsOptions::viscosity): the artificial viscosity of von
 // Neumann and Richtmyer (1950, J. Appl. Phys. 21: 232-237) in the linear + quadratic form of Wilkins
 // (1980, J. Comput. Phys. 36: 281-303) as LS-DYNA states it (Hallquist, LS-DYNA Theory Manual, "Artificial
-// bulk viscosity"; Benson 1992, Comput. Methods Appl. Mech. Eng. 99: 235-394, Section 4): at every Gauss
+// bulk viscosity"; Benson 1992, Comput. Methods Appl. Mech. Eng. 99: 235-394): at every Gauss
 // point g, from its volumetric strain rate eps_dot_v (PointState::strain_rate_1_s = B_g v^{n-1/2}, with
 // eps_dot_zz = 0 in plane strain and -nu / (1 - nu) (eps_dot_xx + eps_dot_yy) in plane stress: efg/hugoniot's
 // volumetric_strain), only in compression,
