@@ -248,6 +248,8 @@ TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
       {{"wave", "--fem-reference"}, "--pulse hann"},
       {{"wave", "--pulse", "hann", "--fem-reference", "--sensor-mm", "102"}, "must lie on a node of the FEM bar"},
       {{"wave", "--pulse", "hann", "--frequency-kHz", "0"}, "--frequency-kHz"},
+      {{"wave", "--viscosity-quadratic", "-1"}, "C_0 (quadratic, -1)"},
+      {{"wave", "--viscosity-linear", "-0.5"}, "C_1 (linear, -0.5)"},
   };
   for (const auto& c : cases) {
     TempDir dir;
@@ -262,6 +264,37 @@ TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_EQ(count_files(dir.path()), 0u) << c.args[1];
   }
+}
+
+// The shock viscosity's options reach the explicit run of both subcommands: off by default (no viscous
+// work), on with LS-DYNA's coefficients (work done, the identity still closed, the CSV's column).
+TEST(MwEfg, ViscosityOptionsReachWaveAndBlast) {
+  TempDir dir;
+  const std::vector<std::string> wave = {"wave", "--law", "quadratic", "--beta", "40", "--length-mm", "100", "--width-mm", "8",
+                                         "--spacing-mm", "2", "--E-GPa", "20", "--peak-MPa", "500", "--rise-us", "20",
+                                         "--fall-us", "20", "--duration-us", "30", "--stiffness-check", "1", "--threads", "1"};
+  auto off_args = wave, on_args = wave;
+  off_args.insert(off_args.end(), {"--out", (dir / "off.json").string()});
+  on_args.insert(on_args.end(), {"--viscosity-quadratic", "1.5", "--viscosity-linear", "0.06", "--out", (dir / "on.json").string()});
+  ASSERT_EQ(run_tool("mw-efg", off_args).exit_status, 0);
+  const auto r = run_tool("mw-efg", on_args);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json off = json::parse(read_file(dir / "off.json")), on = json::parse(read_file(dir / "on.json"));
+  EXPECT_FALSE(off["viscosity"]["on"].get<bool>());
+  EXPECT_EQ(off["viscosity"]["viscous_work_J"].get<double>(), 0.0);
+  EXPECT_TRUE(on["viscosity"]["on"].get<bool>());
+  EXPECT_EQ(on["viscosity"]["C_0_quadratic"].get<double>(), 1.5);
+  EXPECT_GT(on["viscosity"]["viscous_work_J"].get<double>(), 0.0);
+  EXPECT_LT(on["energy_drift"].get<double>(), 1e-12);
+  const auto b = run_tool("mw-efg", {"blast", "--span-mm", "200", "--thickness-mm", "60", "--spacing-mm", "10", "--peak-MPa", "1000",
+                                     "--duration-us", "20", "--threads", "1", "--viscosity-quadratic", "1.5", "--viscosity-linear",
+                                     "0.06", "--energy", (dir / "e.csv").string(), "--out", (dir / "b.json").string()});
+  ASSERT_EQ(b.exit_status, 0) << b.err;
+  const json j = json::parse(read_file(dir / "b.json"));
+  EXPECT_GT(j["energy"]["viscous_J"].get<double>(), 0.0);
+  EXPECT_LT(j["energy"]["run_drift"].get<double>(), 1e-12);
+  const std::string e = read_file(dir / "e.csv");
+  EXPECT_NE(e.substr(0, e.find('\n')).find(",viscous_J"), std::string::npos);
 }
 
 TEST(MwEfg, HelpTeachesTheSubcommands) {

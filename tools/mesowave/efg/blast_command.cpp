@@ -6,6 +6,7 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/efg/viscosity_command.hpp"
 #include "mesowave/io/csv.hpp"
 
 namespace mesowave::efg {
@@ -47,6 +48,7 @@ BlastSlabOptions BlastCommandLine::resolve() const {
               gamma, fall_transits, peak_MPa * 1e6};
   o.duration_s = duration_us * 1e-6;
   o.dt_fraction = dt_fraction;
+  o.viscosity = {viscosity_quadratic, viscosity_linear};
   o.sample_stride = sample_stride;
   o.snapshot_stride = snapshot_stride == 0 && !snapshots.empty() ? 20 : snapshot_stride;
   o.validate();
@@ -97,6 +99,7 @@ void add_blast_options(CLI::App& app, BlastCommandLine& v) {
       ->capture_default_str();
   app.add_option("--duration-us", v.duration_us, "Simulated time")->capture_default_str();
   app.add_option("--dt-fraction", v.dt_fraction, "Fraction of the stable step 2/omega_max, in (0, 1]")->capture_default_str();
+  add_viscosity_options(app, v.viscosity_quadratic, v.viscosity_linear);
   app.add_option("--sample-stride", v.sample_stride, "Steps between the energy CSV's rows")->capture_default_str();
   app.add_option("--cracks", v.cracks_csv, "Crack events CSV: t_us, crack, initiation, from_x_mm, from_y_mm, to_x_mm, to_y_mm, length_mm, speed_m_s, ...");
   app.add_option("--energy", v.energy_csv, "Energies over time CSV [J per metre of charge]: KE, W_int, W_ext, W_damp, faces' work, dissipated, stored, jump, balances");
@@ -154,7 +157,7 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
                   {"internal_work_J", last.internal_work_J}, {"bulk_work_J", last.bulk_work_J()},
                   {"faces_work_J", last.faces_work_J}, {"dissipated_J", last.dissipated_J}, {"stored_J", last.stored_J},
                   {"energy_jump_J", last.energy_jump_J}, {"kinetic_jump_J", last.kinetic_jump_J},
-                  {"faces_jump_J", last.faces_jump_J}, {"damping_J", last.damping_J},
+                  {"faces_jump_J", last.faces_jump_J}, {"damping_J", last.damping_J}, {"viscous_J", last.viscous_J},
                   {"balance_over_W_ext", last.balance_J() / scale},
                   {"balance_less_faces_jump_over_W_ext", last.balance_less_faces_jump_J() / scale},
                   {"max_balance_over_W_ext", r.max_abs_balance_J / scale},
@@ -165,6 +168,7 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
       {"dt_min_us", d.dt_min_s * 1e6},
       {"stable_dt_us", d.stable.dt_critical_s * 1e6},
       {"max_modulus_scale", d.max_modulus_scale},
+      {"viscosity", viscosity_summary(o.viscosity, d)},
       {"cost", {{"setup_s", r.setup_s}, {"run_s", d.wall_s}, {"wall_s", r.wall_s}, {"threads_used", d.threads}}}};
 
   w.crack_header = {"t_us", "crack", "initiation", "end", "from_x_mm", "from_y_mm", "to_x_mm", "to_y_mm",
@@ -174,12 +178,13 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
                             num(e.from.x() * 1e3), num(e.from.y() * 1e3), num(e.to.x() * 1e3), num(e.to.y() * 1e3),
                             num(e.length_m * 1e3), num(e.speed_m_s), num(e.stress_ratio, 4), num(e.f_t_dyn_Pa * 1e-6, 4)});
   w.energy_header = {"t_us", "kinetic_J", "internal_work_J", "external_work_J", "damping_J", "faces_work_J",
-                     "dissipated_J", "stored_J", "energy_jump_J", "bulk_work_J", "run_balance_J", "balance_J", "kinetic_jump_J"};
+                     "dissipated_J", "stored_J", "energy_jump_J", "bulk_work_J", "run_balance_J", "balance_J", "kinetic_jump_J",
+                     "viscous_J"};
   for (const BlastEnergySample& e : r.energy)
     w.energy_rows.push_back({num(e.t_s * 1e6, 8), num(e.kinetic_J, 8), num(e.internal_work_J, 8), num(e.external_work_J, 8),
                              num(e.damping_J, 8), num(e.faces_work_J, 8), num(e.dissipated_J, 8), num(e.stored_J, 8),
                              num(e.energy_jump_J, 8), num(e.bulk_work_J(), 8), num(e.run_balance_J(), 4), num(e.balance_J(), 4),
-                             num(e.kinetic_jump_J, 8)});
+                             num(e.kinetic_jump_J, 8), num(e.viscous_J, 8)});
 
   // The figure: the slab's outline, the charge, the compacted Gauss points, the cracks (in mm).
   io::PlotSpec& f = w.figure;

@@ -151,6 +151,7 @@ void BlastSlabOptions::validate() const {
   require_positive("concrete density", concrete.density_kg_m3, "kg/m3");
   hugoniot.validate();
   cracks.validate();
+  viscosity.validate();
   require_positive("charge width", charge.width_m, "m");
   if (charge.width_m > span_m)
     throw InputError("charge width (" + format_quantity(charge.width_m, "m") + ") must not exceed the span (" +
@@ -224,6 +225,7 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
   d.sample_stride = o.sample_stride;
   d.snapshot_stride = o.snapshot_stride;
   d.min_points_per_thread = o.min_points_per_thread;
+  d.viscosity = o.viscosity;
   d.progress = o.progress;
   d.cracks = &recorded;
   r.run = dyn.run(d);
@@ -261,7 +263,7 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
     const EnergySample& e = r.run.energy[k];
     BlastEnergySample b{e.t_s, e.kinetic_J, e.internal_work_J, e.external_work_J, e.damping_J,
                         s[k].faces_work_J, s[k].dissipated_J, s[k].stored_J, s[k].energy_jump_J, e.kinetic_jump_J,
-                        s[k].faces_jump_J};
+                        s[k].faces_jump_J, e.viscous_J};
     r.max_abs_balance_J = std::max(r.max_abs_balance_J, std::abs(b.balance_J()));
     r.max_abs_run_balance_J = std::max(r.max_abs_run_balance_J, std::abs(b.run_balance_J()));
     r.energy.push_back(b);

@@ -94,6 +94,7 @@ struct BlastSlabOptions {
   int stiffness_check_every = 1;           ///< the Y-function stiffens within a step or two under the charge
   std::int64_t sample_stride = 10;         ///< energies every this many steps
   std::int64_t snapshot_stride = 0;        ///< VTK snapshots every this many steps (0: none)
+  BulkViscosity viscosity{};               ///< shock viscosity of the explicit solver (default off)
   std::size_t min_points_per_thread = 2000;
   std::function<void(std::int64_t step, double t_s)> progress;
   /// InputError naming the value (one line each).
@@ -114,10 +115,14 @@ struct BlastEnergySample {
   double kinetic_jump_J = 0;
   /// the faces' share of energy_jump_J (DynamicCracks::faces_jump_J): their law energy moved at fixed times
   double faces_jump_J = 0;
+  /// the shock viscosity's work (EnergySample::viscous_J; 0 when off)
+  double viscous_J = 0;
   double bulk_work_J() const { return internal_work_J - faces_work_J; }
-  double run_balance_J() const { return kinetic_J + internal_work_J + damping_J - external_work_J - kinetic_jump_J; }
+  double run_balance_J() const {
+    return kinetic_J + internal_work_J + damping_J + viscous_J - external_work_J - kinetic_jump_J;
+  }
   double balance_J() const {
-    return kinetic_J + bulk_work_J() + dissipated_J + stored_J + damping_J - external_work_J - kinetic_jump_J;
+    return kinetic_J + bulk_work_J() + dissipated_J + stored_J + damping_J + viscous_J - external_work_J - kinetic_jump_J;
   }
   /// balance_J less the faces' jump: what the faces' law energy misses of their force work over the steps
   double balance_less_faces_jump_J() const { return balance_J() - faces_jump_J; }

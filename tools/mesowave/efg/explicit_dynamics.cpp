@@ -10,6 +10,7 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/lanczos.hpp"
 #include "mesowave/core/threads.hpp"
+#include "mesowave/efg/hugoniot.hpp"
 #include "mesowave/efg/node_grid.hpp"
 
 namespace mesowave::efg {
@@ -23,6 +24,24 @@ std::string point_text(const Vec2& x) {
 constexpr std::int64_t block_nodes = 512;  // the energies' fixed partial sums: independent of the thread count
 
 }  // namespace
+
+void BulkViscosity::validate() const {
+  if (!std::isfinite(quadratic) || quadratic < 0)
+    throw InputError("bulk viscosity C_0 (quadratic, " + format_number(quadratic) + ") must be >= 0 and finite");
+  if (!std::isfinite(linear) || linear < 0)
+    throw InputError("bulk viscosity C_1 (linear, " + format_number(linear) + ") must be >= 0 and finite");
+}
+
+double bulk_viscosity_pressure_Pa(double rho, double l, double c, double eps_dot_v, const BulkViscosity& q) {
+  if (!(eps_dot_v < 0)) return 0.0;  // only in compression
+  return rho * l * (q.quadratic * l * eps_dot_v * eps_dot_v - q.linear * c * eps_dot_v);
+}
+
+double bulk_viscosity_step_factor(double l, double c, double eps_dot_v, const BulkViscosity& q) {
+  if (!(eps_dot_v < 0)) return 1.0;
+  const double xi = q.linear + q.quadratic * l * std::abs(eps_dot_v) / c;  // Q / c
+  return 1.0 / (xi + std::sqrt(1.0 + xi * xi));  // = sqrt(1 + xi^2) - xi, without the cancellation
+}
 
 Eigen::VectorXd lumped_mass(const ElasticModel& model) {
   const double rho = model.material().density_kg_m3, t = model.material().thickness_m;
@@ -110,6 +129,32 @@ ExplicitDynamics::ExplicitDynamics(const ElasticModel& model, const PointMateria
   for (const Rect& c : model.discretisation().cells)
     x0 = std::min(x0, c.x0), x1 = std::max(x1, c.x1), y0 = std::min(y0, c.y0), y1 = std::max(y1, c.y1);
   body_diagonal_m_ = std::hypot(x1 - x0, y1 - y0);
+  const auto& cells = model.discretisation().cells;
+  for (const GaussPoint& g : model.discretisation().points) {
+    const Rect& c = cells[std::size_t(g.cell)];
+    point_length_m_.push_back(std::sqrt((c.x1 - c.x0) * (c.y1 - c.y0)));
+  }
+  c0_m_s_ = std::sqrt(model.material().D()(0, 0) / model.material().density_kg_m3);
+}
+
+double ExplicitDynamics::point_viscous_pressure(std::size_t p, const PointState& st, const BulkViscosity& q,
+                                                double* step_factor) const {
+  const double eps_dot_v = volumetric_strain(st.strain_rate_1_s, model_->material());  // linear in the rate
+  const double c = c0_m_s_ * std::sqrt(std::max(0.0, st.modulus_scale));
+  const double l = point_length_m_[p];
+  if (step_factor) *step_factor = bulk_viscosity_step_factor(l, c, eps_dot_v, q);
+  return bulk_viscosity_pressure_Pa(model_->material().density_kg_m3, l, c, eps_dot_v, q);
+}
+
+std::vector<double> ExplicitDynamics::bulk_viscosity_pressures(const std::vector<PointState>& states,
+                                                               const BulkViscosity& q) const {
+  q.validate();
+  if (states.size() != point_length_m_.size())
+    throw InputError("bulk viscosity: " + std::to_string(states.size()) + " point states for " +
+                     std::to_string(point_length_m_.size()) + " Gauss points");
+  std::vector<double> out(states.size());
+  for (std::size_t p = 0; p < states.size(); ++p) out[p] = point_viscous_pressure(p, states[p], q, nullptr);
+  return out;
 }
 
 Eigen::VectorXd ExplicitDynamics::external_force(double t_s) const {
@@ -170,6 +215,18 @@ Eigen::Vector2d ExplicitDynamics::node_internal_force(const NodeGather& g, std::
   return {fx, fy};
 }
 
+Eigen::Vector2d ExplicitDynamics::node_viscous_force(const NodeGather& g, std::int64_t i, const std::vector<double>& qwt) const {
+  const auto& shape = model_->shape_functions();
+  double fx = 0, fy = 0;  // B^T (-q, -q, 0) w t
+  for (std::int64_t k = g.start[std::size_t(i)]; k < g.start[std::size_t(i) + 1]; ++k) {
+    const auto p = std::size_t(g.point[std::size_t(k)]);
+    const auto a = std::size_t(g.local[std::size_t(k)]);
+    fx -= shape[p].dphi_dx[a] * qwt[p];
+    fy -= shape[p].dphi_dy[a] * qwt[p];
+  }
+  return {fx, fy};
+}
+
 Eigen::VectorXd ExplicitDynamics::internal_force(const Eigen::VectorXd& u, std::vector<PointState>& states) const {
   return internal_force_with(u, nullptr, states);
 }
@@ -208,6 +265,8 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
   if (o.snapshot_stride < 0) throw InputError("snapshot stride (" + std::to_string(o.snapshot_stride) + ") must be >= 0");
   if (!std::isfinite(o.displacement_bound_m) || o.displacement_bound_m < 0)
     throw InputError("displacement bound (" + format_quantity(o.displacement_bound_m, "m") + ") must be >= 0 (0: the body's diagonal)");
+  o.viscosity.validate();
+  const bool viscous = o.viscosity.on();
   DynamicsCracks* const cracks = o.cracks;
   if (cracks && C_.rows() > 0)
     throw InputError("growing cracks with " + std::to_string(C_.rows()) +
@@ -274,22 +333,44 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
   r.dt_min_s = dt_base;
   r.sensors.resize(sensors.size());
   Eigen::VectorXd u = Eigen::VectorXd::Zero(ndof), v = Eigen::VectorXd::Zero(ndof), u_prev = u;
-  Eigen::VectorXd f_int(ndof), f_ext(ndof), vs(ndof);
+  Eigen::VectorXd f_int(ndof), f_ext(ndof), vs(ndof), f_visc;
   std::vector<Eigen::Vector3d> s(shape.size());
+  std::vector<double> qwt;  // q_g w_g t per point (viscosity on)
+  if (viscous) f_visc = Eigen::VectorXd::Zero(ndof), qwt.assign(shape.size(), 0.0);
   const auto nb = std::size_t(nblocks);
-  std::vector<double> ke_b(nb), wi_b(nb), we_b(nb), wd_b(nb);
+  std::vector<double> ke_b(nb), wi_b(nb), we_b(nb), wd_b(nb), wv_b(nb, 0.0);
   std::vector<std::int64_t> bad_b(nb);
   std::vector<double> p_now(loads_.size());
-  double t = 0, dt_prev = 0, dt_half = dt_base, W_int = 0, W_ext = 0, W_damp = 0, worst = 0, scale_ref = 0;
+  double t = 0, dt_prev = 0, dt_half = dt_base, W_int = 0, W_ext = 0, W_damp = 0, W_visc = 0, worst = 0, scale_ref = 0;
+  const double thickness = model_->material().thickness_m;
   const auto start = std::chrono::steady_clock::now();
 
   for (std::int64_t n = 0; t < o.duration_s; ++n) {
     // Stresses at the points from u^n, each point writing its own entry.
     const double smax = point_forces(u, &v, states, s, nt);  // v = v^{n-1/2}: the points' strain rates
     r.max_modulus_scale = std::max(r.max_modulus_scale, smax);
+    double rmin = 1.0;  // the viscosity's step factor, smallest over the points
+    if (viscous) {
+      const auto np = std::int64_t(shape.size());
+      double qmax = 0;
+#pragma omp parallel for num_threads(nt) schedule(static) reduction(min : rmin) reduction(max : qmax)
+      for (std::int64_t p = 0; p < np; ++p) {
+        double rp = 1.0;
+        const double q = point_viscous_pressure(std::size_t(p), states[std::size_t(p)], o.viscosity, &rp);
+        qwt[std::size_t(p)] = q * points[std::size_t(p)].weight_m2 * thickness;
+        rmin = std::min(rmin, rp);
+        qmax = std::max(qmax, q);
+      }
+      r.max_viscous_pressure_Pa = std::max(r.max_viscous_pressure_Pa, qmax);
+      r.min_viscous_step_factor = std::min(r.min_viscous_step_factor, rmin);
+    }
     if (n % o.stiffness_check_every == 0 || recheck_step) {  // the stable step of the stiffened law
       recheck_step = false;
       dt_half = dt_base / std::sqrt(std::max(1.0, smax));
+      if (viscous) dt_half *= rmin;
+      r.dt_min_s = std::min(r.dt_min_s, dt_half);
+    } else if (viscous) {  // between checks: only shrink, when the rates ask for it
+      dt_half = std::min(dt_half, dt_base / std::sqrt(std::max(1.0, smax)) * rmin);
       r.dt_min_s = std::min(r.dt_min_s, dt_half);
     }
     const double dt_avg = n == 0 ? 0.5 * dt_half : 0.5 * (dt_prev + dt_half);
@@ -299,11 +380,15 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
 #pragma omp parallel for num_threads(nt) schedule(static)
     for (std::int64_t i = 0; i < nn; ++i) {
       f_int.segment<2>(2 * i) = node_internal_force(*gather, i, s);
+      if (viscous) f_visc.segment<2>(2 * i) = node_viscous_force(*gather, i, qwt);
       for (Eigen::Index d = 2 * i; d < 2 * i + 2; ++d) {
         double fe = 0;
         for (std::size_t l = 0; l < loads_.size(); ++l) fe += p_now[l] * unit_loads_[l][d];
         f_ext[d] = fe;
-        vs[d] = keep * v[d] + gain * (fe - f_int[d]) * inv_mass_dof_[d];
+        if (viscous)
+          vs[d] = keep * v[d] + gain * (fe - f_int[d] - f_visc[d]) * inv_mass_dof_[d];
+        else
+          vs[d] = keep * v[d] + gain * (fe - f_int[d]) * inv_mass_dof_[d];
       }
     }
     if (cracks) {  // the faces' cohesive tractions and contact: part of f_int
@@ -323,7 +408,7 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
     u_prev = u;
 #pragma omp parallel for num_threads(nt) schedule(static)
     for (std::int64_t b = 0; b < nblocks; ++b) {
-      double ke = 0, wi = 0, we = 0, wd = 0;
+      double ke = 0, wi = 0, we = 0, wd = 0, wv = 0;
       std::int64_t bad = -1;
       const Eigen::Index d1 = 2 * std::min(nn, (b + 1) * block_nodes);
       for (Eigen::Index d = 2 * b * block_nodes; d < d1; ++d) {
@@ -332,10 +417,12 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
         wi += f_int[d] * sum;
         we += f_ext[d] * sum;
         wd += 0.5 * alpha * m * (v[d] + vs[d]) * sum;
+        if (viscous) wv += f_visc[d] * sum;
         u[d] += dt_half * vs[d];
         if (bad < 0 && !(std::abs(u[d]) <= bound)) bad = d;
       }
       ke_b[std::size_t(b)] = ke, wi_b[std::size_t(b)] = wi, we_b[std::size_t(b)] = we, wd_b[std::size_t(b)] = wd;
+      wv_b[std::size_t(b)] = wv;
       bad_b[std::size_t(b)] = bad;
     }
     double ke = 0;
@@ -350,8 +437,9 @@ DynamicsResult ExplicitDynamics::run(const DynamicsOptions& o, const std::vector
       }
       ke += ke_b[std::size_t(b)];
       W_int += wi_b[std::size_t(b)], W_ext += we_b[std::size_t(b)], W_damp += wd_b[std::size_t(b)];
+      W_visc += wv_b[std::size_t(b)];
     }
-    const EnergySample e{t + 0.5 * dt_half, ke, W_int, W_ext, W_damp, kinetic_jump};
+    const EnergySample e{t + 0.5 * dt_half, ke, W_int, W_ext, W_damp, kinetic_jump, W_visc};
     worst = std::max(worst, std::abs(e.balance_J()));
     scale_ref = std::max({scale_ref, std::abs(W_ext), ke, std::abs(W_int)});
 

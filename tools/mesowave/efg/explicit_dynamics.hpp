@@ -44,10 +44,35 @@
 // Energy: with the half-step velocities,
 //   KE^{n+1/2} = 1/2 v^{n+1/2}.M v^{n+1/2},
 //   W^{n+1/2} = W^{n-1/2} + f^n . (dt_n / 2)(v^{n-1/2} + v^{n+1/2}) for f = f_int, f_ext and the damping force,
-// and KE + W_int + W_damp - W_ext = 0 up to round-off for any dt sequence and material. For a linear
+// and KE + W_int + W_damp (+ W_visc) - W_ext = 0 up to round-off for any dt sequence and material. For a linear
 // law and a constant step W_int^{n+1/2} = 1/2 u^n.K u^{n+1}: the balance is then the central
 // difference's conserved shadow energy (tested against the assembled K), not 1/2 u.K u + KE.
-// drift = max |KE + W_int + W_damp - W_ext| / max(W_ext, KE) over the run.
+// drift = max |KE + W_int + W_damp + W_visc - W_ext - jumps| / max(W_ext, KE, W_int) over the run.
+//
+// Shock (bulk) viscosity, off by default (DynamicsOptions::viscosity): the artificial viscosity of von
+// Neumann and Richtmyer (1950, J. Appl. Phys. 21: 232-237) in the linear + quadratic form of Wilkins
+// (1980, J. Comput. Phys. 36: 281-303) as LS-DYNA states it (Hallquist, LS-DYNA Theory Manual, "Artificial
+// bulk viscosity"; Benson 1992, Comput. Methods Appl. Mech. Eng. 99: 235-394): at every Gauss
+// point g, from its volumetric strain rate eps_dot_v (PointState::strain_rate_1_s = B_g v^{n-1/2}, with
+// eps_dot_zz = 0 in plane strain and -nu / (1 - nu) (eps_dot_xx + eps_dot_yy) in plane stress: efg/hugoniot's
+// volumetric_strain), only in compression,
+//   q_g = rho l_g (C_0 l_g eps_dot_v^2 - C_1 c_g eps_dot_v)   for eps_dot_v < 0,   q_g = 0 otherwise,
+// l_g = sqrt(area of the point's background cell) (LS-DYNA's length of a 2D solid: the node spacing on the
+// regular square grids), c_g = c_0 sqrt(modulus_scale_g) the point's current dilatational speed (c_0 =
+// sqrt(D_11 / rho), D_11 the P-wave modulus in plane strain; modulus_scale the law's tangent over D, which
+// the Y-function raises). q is a pressure: the stress -q I joins sigma_g in the internal force,
+//   f_visc = sum_g B_g^T (-q_g, -q_g, 0) w_g t,
+// kept apart from f_int so that its work is booked on its own, W_visc^{n+1/2} = W_visc^{n-1/2} + f_visc^n .
+// (dt_n / 2)(v^{n-1/2} + v^{n+1/2}), and the identity reads KE + W_int + W_damp + W_visc - W_ext = jumps.
+// The points' PointState::stress (sensors, snapshots, the cracks' criterion) stays the law's stress, q
+// excluded (q is numerical, not the material's; Abaqus and LS-DYNA keep it out of the output stresses too).
+// Stable step: LS-DYNA's per-element dt <= l / (Q + sqrt(Q^2 + c^2)), Q = C_1 c + C_0 l |eps_dot_v|, is
+// (l / c) r with r = sqrt(1 + xi^2) - xi, xi = Q / c (the central difference's limit with a damping ratio
+// xi). The eigenvalue step dt_base / sqrt(s_max) plays l / c here, so a compressing point multiplies it by
+// r_g: dt = dt_base / sqrt(s_max) x min_g r_g (conservative: s_max and the smallest r need not be at one
+// point). It is set at every stiffness check with the modulus scale, and between checks the step is only
+// shrunk, the same step, when min_g r_g of the current rates asks for less (a shock's compression rate
+// grows within a few steps). C_0 = C_1 = 0 (the default) runs none of it: the same bits as without.
 //
 // Parallelism and bits: the Gauss points (strain, PointMaterial::update, sigma w t) in parallel, each
 // point writing its own entry; then each node gathers its points' B^T sigma w t in point order (a fixed
@@ -107,8 +132,29 @@ struct EnergySample {
   double kinetic_J = 0, internal_work_J = 0, external_work_J = 0, damping_J = 0;
   /// the kinetic energy the cracks' hook changed at fixed times by replacing v (DynamicsCracks), so far
   double kinetic_jump_J = 0;
-  double balance_J() const { return kinetic_J + internal_work_J + damping_J - external_work_J - kinetic_jump_J; }
+  /// the bulk viscosity's work f_visc . du so far (see the top of this file; 0 when it is off)
+  double viscous_J = 0;
+  double balance_J() const {
+    return kinetic_J + internal_work_J + damping_J + viscous_J - external_work_J - kinetic_jump_J;
+  }
 };
+
+/// The shock viscosity's coefficients (see the top of this file); both 0: off.
+struct BulkViscosity {
+  double quadratic = 0;  ///< C_0 (LS-DYNA's Q1 = 1.5), >= 0
+  double linear = 0;     ///< C_1 (LS-DYNA's Q2 = 0.06), >= 0
+  bool on() const { return quadratic > 0 || linear > 0; }
+  /// InputError: a coefficient negative or not finite.
+  void validate() const;
+};
+
+/// q [Pa] at a point of density rho, length l and dilatational speed c under the volumetric strain rate
+/// eps_dot_v [1/s]: rho l (C_0 l eps_dot_v^2 - C_1 c eps_dot_v) in compression (eps_dot_v < 0), else 0.
+double bulk_viscosity_pressure_Pa(double rho_kg_m3, double length_m, double c_m_s, double eps_dot_v_1_s,
+                                  const BulkViscosity& q);
+/// The factor r = sqrt(1 + xi^2) - xi, xi = C_1 + C_0 l |eps_dot_v| / c, that the point's stable step
+/// l / c takes under the viscosity (LS-DYNA's l / (Q + sqrt(Q^2 + c^2))); 1 when eps_dot_v >= 0.
+double bulk_viscosity_step_factor(double length_m, double c_m_s, double eps_dot_v_1_s, const BulkViscosity& q);
 
 /// Cracks that open and grow during a run (efg/dynamic_cracks implements it; issue 16). At every step n
 /// the run calls add_forces(u^n, f) with f zero, adds f to the continuum's f_int (so W_int holds the
@@ -151,6 +197,7 @@ struct DynamicsOptions {
   bool allow_unstable = false;      ///< tests only: run above the stable step to see the guard stop it
   std::function<void(std::int64_t step, double t_s)> progress;  ///< now and then, from one thread
   DynamicsCracks* cracks = nullptr;  ///< growing cracks (see DynamicsCracks); null: none
+  BulkViscosity viscosity{};         ///< shock viscosity (see the top of this file); default off
 };
 
 struct DynamicsResult {
@@ -164,6 +211,8 @@ struct DynamicsResult {
   double max_modulus_scale = 1;         ///< the largest over points and time
   double energy_drift = 0;              ///< see the header: max |balance| / max(W_ext, KE)
   double max_constraint_violation_m = 0;  ///< max |C u - d| over the steps
+  double max_viscous_pressure_Pa = 0;     ///< the largest q over points and steps (0: viscosity off)
+  double min_viscous_step_factor = 1;     ///< the smallest r the step took (1: off or never compressed)
   StableStep stable;
   double wall_s = 0;
   int threads = 1;
@@ -186,6 +235,13 @@ class ExplicitDynamics {
   /// The same with the velocity v (MLS parameters) whose strain rate B v each point's state gets before
   /// its update (PointState::strain_rate_1_s), as in the run with v = v^{n-1/2}.
   Eigen::VectorXd internal_force(const Eigen::VectorXd& u, const Eigen::VectorXd& v, std::vector<PointState>& states) const;
+  /// q_g [Pa] at every Gauss point from its state's strain rate and modulus_scale (as the run sets them:
+  /// internal_force(u, v, states) first), for the coefficients `q` (see the top of this file).
+  std::vector<double> bulk_viscosity_pressures(const std::vector<PointState>& states, const BulkViscosity& q) const;
+  /// l_g per Gauss point [m]: sqrt(area of its background cell).
+  const std::vector<double>& viscosity_length_m() const { return point_length_m_; }
+  /// c_0 = sqrt(D_11 / rho) [m/s], the speed q's linear term scales by sqrt(modulus_scale).
+  double dilatational_speed_m_s() const { return c0_m_s_; }
   /// f_ext(t) = sum_l p_l(t) f_1,l.
   Eigen::VectorXd external_force(double t_s) const;
   /// Runs from rest (u = v = 0, fresh PointStates). InputError: bad options (one line each), a step
@@ -208,6 +264,10 @@ class ExplicitDynamics {
   };
   static NodeGather build_gather(const std::vector<ShapeFunctions>& shape, std::size_t nodes);
   Eigen::Vector2d node_internal_force(const NodeGather& g, std::int64_t i, const std::vector<Eigen::Vector3d>& s) const;
+  /// Node i's f_visc from the points' q_g w_g t (stress -q I), in point order.
+  Eigen::Vector2d node_viscous_force(const NodeGather& g, std::int64_t i, const std::vector<double>& qwt) const;
+  /// q_g and r_g of point p from its state (see the top of this file).
+  double point_viscous_pressure(std::size_t p, const PointState& st, const BulkViscosity& q, double* step_factor) const;
 
   const ElasticModel* model_;
   const PointMaterial* material_;
@@ -222,6 +282,8 @@ class ExplicitDynamics {
   std::uint64_t gather_version_ = 0;  ///< the CrackSet version gather_ was built for
   std::uint64_t crack_version() const { return model_->mls().cracks() ? model_->mls().cracks()->version() : 0; }
   double body_diagonal_m_ = 0;
+  std::vector<double> point_length_m_;  ///< l_g of the viscosity
+  double c0_m_s_ = 0;
 };
 
 }  // namespace mesowave::efg

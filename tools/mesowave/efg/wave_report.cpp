@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "mesowave/core/check.hpp"
+#include "mesowave/efg/viscosity_command.hpp"
 
 namespace mesowave::efg {
 
@@ -31,6 +32,8 @@ WaveStripOptions WaveCommandLine::resolve() const {
   o.dynamics.dt_s = dt_us * 1e-6;
   o.dynamics.dt_fraction = dt_fraction;
   o.dynamics.alpha_damping_per_s = alpha_per_s;
+  o.dynamics.viscosity = {viscosity_quadratic, viscosity_linear};
+  o.dynamics.viscosity.validate();
   o.dynamics.stiffness_check_every = stiffness_check_every;
   o.dynamics.sample_stride = sample_stride;
   // the profiles pick the snapshot nearest each time: every other step keeps that within one step
@@ -71,6 +74,7 @@ void add_wave_options(CLI::App& app, WaveCommandLine& v) {
       ->capture_default_str();
   app.add_option("--dt-fraction", v.dt_fraction, "Fraction of the stable step 2/omega_max, in (0, 1]")->capture_default_str();
   app.add_option("--alpha-damping", v.alpha_per_s, "Mass-proportional damping alpha [1/s] (0: none)")->capture_default_str();
+  add_viscosity_options(app, v.viscosity_quadratic, v.viscosity_linear);
   app.add_option("--stiffness-check", v.stiffness_check_every, "Steps between re-reading the law's stiffening")->capture_default_str();
   app.add_option("--sensor-mm", v.sensor_mm, "Sensor x on the centre line, repeatable (default L/4, L/2, 3L/4)");
   app.add_option("--sample-stride", v.sample_stride, "Steps between the history's rows")->capture_default_str();
@@ -193,6 +197,7 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
       {"energy_drift", d.energy_drift},
       {"external_work_J", d.energy.empty() ? 0.0 : d.energy.back().external_work_J},
       {"damping_work_J", d.energy.empty() ? 0.0 : d.energy.back().damping_J},
+      {"viscosity", viscosity_summary(o.dynamics.viscosity, d)},
       {"max_constraint_violation_m", d.max_constraint_violation_m},
       {"P_modulus_GPa", r.P_modulus_Pa * 1e-9},
       {"c_p_m_s", r.c_p_m_s},

@@ -26,6 +26,7 @@ struct WaveCommandLine {
   std::string pulse = "triangular", basis = "linear", weight = "quartic-spline";
   double peak_MPa = 100, rise_us = 10, fall_us = 10, start_us = 0, positive_us = 20, decay = 1;
   double duration_us = 0, dt_us = 0, dt_fraction = 0.9, alpha_per_s = 0;
+  double viscosity_quadratic = 0, viscosity_linear = 0;  ///< C_0, C_1 of the shock viscosity (0, 0: off)
   double support_scale = 2.5;
   int gauss = 2, stiffness_check_every = 10;
   std::int64_t sample_stride = 1, snapshot_stride = 0;
