@@ -3,6 +3,9 @@
 // for run; merging again adds nothing; a bad source or a conflicting record changes nothing.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <thread>
+
 #include "mesowave/core/error.hpp"
 #include "mesowave/prov/database.hpp"
 #include "mesowave/prov/merge.hpp"
@@ -216,4 +219,42 @@ TEST(ProvenanceMerge, AnEmptyFileIsASourceWithoutRuns) {
   const auto result = prov::merge_databases(jobs.dir / "merged.sqlite", {jobs.dir / "empty.sqlite", jobs.job_dbs[0]});
   EXPECT_EQ(result.sources[0].runs, 0);
   EXPECT_EQ(result.runs_after, 2);
+}
+
+TEST(ProvenanceMerge, ASourceBeingWrittenIsReadAsOneSnapshot) {
+  // make -j: one step's database is merged into the main one while another merge seeds a step
+  // from it. Each merge reads its source in one transaction, so it sees a run with all of its
+  // files or not at all (read statement by statement, a run committed between the reading of
+  // runs and of files had files without a run: the merge refused). At the end every run is
+  // there once.
+  Jobs jobs;
+  const auto live = jobs.dir / "live.sqlite";
+  { auto create = prov::Database::open(live); }
+  constexpr int kRuns = 2000;
+  std::atomic<bool> done = false;
+  std::thread writer([&] {
+    auto db = prov::Database::open(live);
+    for (int i = 0; i < kRuns; ++i) {
+      auto run = jobs.runs[std::size_t(i % 6)];
+      run.argv.push_back(std::to_string(i));  // a run of its own
+      prov::record_run(db, run);
+    }
+    done = true;
+  });
+  int merges = 0;
+  std::string failure;
+  for (; !done && failure.empty(); ++merges) {
+    try {
+      prov::merge_databases(jobs.dir / ("seed-" + std::to_string(merges % 4) + ".sqlite"), {live});
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+  }
+  writer.join();
+  EXPECT_EQ(failure, "") << "after " << merges << " merges";
+  const auto last = prov::merge_databases(jobs.dir / "seed-0.sqlite", {live});
+  EXPECT_EQ(last.runs_after, kRuns);
+  const auto seed = prov::Database::open(jobs.dir / "seed-0.sqlite", prov::Database::Mode::ReadOnly);
+  const auto source = prov::Database::open(live, prov::Database::Mode::ReadOnly);
+  for (const char* table : {"files", "metrics"}) EXPECT_EQ(rows(seed, table), rows(source, table)) << table;
 }

@@ -116,6 +116,9 @@ void check_columns(const Columns& found, const Columns& expected, const std::str
 std::vector<SourceRun> read_source(const fs::path& path, std::size_t index, const Columns& expected) {
   const auto db = Database::open(path, Database::Mode::ReadOnly);
   const std::string shown = "database " + path.string();
+  // One read transaction: a snapshot, so that a run another process commits meanwhile (make -j
+  // merging its steps) is either wholly in what is read or not at all.
+  db.exec("BEGIN");
   {
     auto tables = db.prepare("SELECT count(*) FROM sqlite_master");
     tables.step();
@@ -150,6 +153,7 @@ std::vector<SourceRun> read_source(const fs::path& path, std::size_t index, cons
   };
   while (files.step()) owner(files.integer(0)).files.push_back(copy_row(files, 1));
   while (metrics.step()) owner(metrics.integer(0)).metrics.push_back(copy_row(metrics, 1));
+  db.exec("COMMIT");
   return runs;
 }
 
