@@ -167,3 +167,4 @@ clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD) results report results-quick report-quick
 	rm -f db/provenance.sqlite db/provenance.sqlite-wal db/provenance.sqlite-shm \
 	  db/provenance-quick.sqlite db/provenance-quick.sqlite-wal db/provenance-quick.sqlite-shm
+	rm -rf db/provenance.jobs db/provenance-quick.jobs
