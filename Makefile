@@ -8,6 +8,9 @@
 #   make fuzz             libFuzzer campaign on every parser of user files (build-fuzz/, docs/fuzzing.md)
 #   make bench            benchmarks (bench/), results in docs/benchmarks.md
 #   make clean            remove build/, both result trees, reports and provenance databases
+#   make reproduce LAUNCH=slurm [-j N] [LAUNCH_CPUS=4] [LAUNCH_FLAGS='-p long']
+#                         every tool run of the pipeline as a Slurm job step (docs/slurm.md)
+#   make check-slurm      reproduce-quick on a one-node Slurm cluster on localhost against the plain run
 #
 # Every tool run by the pipeline records itself in $(MESOWAVE_DB): db/provenance.sqlite for the
 # full tree, db/provenance-quick.sqlite for the quick one.
@@ -34,12 +37,30 @@ endif
 QUICK_DB := $(CURDIR)/db/provenance-quick.sqlite
 export MESOWAVE_DB ?= $(if $(filter 1,$(QUICK)),$(QUICK_DB),$(CURDIR)/db/provenance.sqlite)
 
-.PHONY: all help deps build test test-sanitize fuzz reproduce reproduce-quick pipeline bench clean
+# LAUNCH=slurm: make's shell is scripts/slurm-shell, which runs every recipe line that starts a
+# tool ($(BIN)/mw-...) as a Slurm job step (srun: a job of its own, or a step of the allocation
+# make runs in) with LAUNCH_CPUS cores (OMP_NUM_THREADS the same) and LAUNCH_FLAGS added to srun
+# (partition, time limit, account); other lines run here. The tree must be on storage the nodes
+# share. Each step records into a database of its own, merged into $(MESOWAVE_DB) on this host
+# after it (mw-prov merge): SQLite is never opened from two hosts at once (docs/slurm.md).
+LAUNCH ?=
+LAUNCH_CPUS ?= 1
+LAUNCH_FLAGS ?=
+ifeq ($(LAUNCH),slurm)
+SHELL := $(CURDIR)/scripts/slurm-shell
+export MESOWAVE_LAUNCH_BIN := $(BIN)
+export MESOWAVE_LAUNCH_CPUS := $(LAUNCH_CPUS)
+export MESOWAVE_LAUNCH_FLAGS := $(LAUNCH_FLAGS)
+else ifneq ($(LAUNCH),)
+$(error LAUNCH=$(LAUNCH): the one launcher is slurm (LAUNCH=slurm), or leave LAUNCH unset to run the tools here)
+endif
+
+.PHONY: all help deps build test test-sanitize fuzz reproduce reproduce-quick pipeline bench clean check-slurm
 
 all: build
 
 help:
-	@sed -n '2,14p' Makefile | sed 's/^# \{0,1\}//'
+	@sed -n '2,17p' Makefile | sed 's/^# \{0,1\}//'
 
 deps:
 	@scripts/install-deps
@@ -51,7 +72,9 @@ build: deps
 	@$(MAKE) --no-print-directory $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
+# The suite's Slurm test starts a one-node cluster (tests/pipeline/slurm_test.cpp): its packages.
 test: build
+	@scripts/install-deps slurm
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The whole suite with AddressSanitizer and UndefinedBehaviorSanitizer: the
@@ -122,6 +145,14 @@ include pipeline/report.mk
 
 pipeline: $(PIPELINE_GOALS) $(REPORT_DIR)/index.html
 	@echo; echo "report: $(CURDIR)/$(REPORT_DIR)/index.html"
+	$(if $(filter slurm,$(LAUNCH)),@scripts/slurm-shell --summary)
+
+# `make reproduce-quick LAUNCH=slurm` on a one-node Slurm cluster started on localhost, against
+# the same pipeline run plainly, each in a copy of this tree: outputs equal, provenance whole
+# (scripts/check-slurm; the suite's test runs a part of it). Needs root.
+check-slurm: build
+	@scripts/install-deps slurm
+	scripts/check-slurm --build $(BUILD) -j $(JOBS)
 
 # A lab's own specimen as a new study, copied from an existing one with every lab-data value
 # marked to be replaced (scripts/new-study --help):  make new-study NAME=my-cube FROM=concrete-cube
@@ -136,3 +167,4 @@ clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD) results report results-quick report-quick
 	rm -f db/provenance.sqlite db/provenance.sqlite-wal db/provenance.sqlite-shm \
 	  db/provenance-quick.sqlite db/provenance-quick.sqlite-wal db/provenance-quick.sqlite-shm
+	rm -rf db/provenance.jobs db/provenance-quick.jobs

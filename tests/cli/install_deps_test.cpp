@@ -129,3 +129,17 @@ TEST(InstallDeps, ClangOnlyForTheFuzzBuild) {
   ASSERT_EQ(calls.size(), 1u);
   EXPECT_EQ(calls[0], "DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends clang libclang-rt-14-dev");
 }
+
+// The suite's Slurm test needs slurm-wlm and munge (scripts/install-deps slurm, which `make test`
+// runs); the build and `make reproduce` do not.
+TEST(InstallDeps, SlurmOnlyForTheSlurmGroup) {
+  const Shims shims({"slurm-wlm", "munge"}, 0);
+  const auto plain = shims.run();
+  ASSERT_EQ(plain.exit_status, 0) << plain.err;
+  EXPECT_TRUE(shims.lines("calls").empty()) << "the normal build asked for Slurm";
+  const auto slurm = shims.run({"slurm"});
+  ASSERT_EQ(slurm.exit_status, 0) << slurm.err;
+  const auto calls = shims.lines("calls");
+  ASSERT_EQ(calls.size(), 1u);
+  EXPECT_EQ(calls[0], "DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends slurm-wlm munge");
+}

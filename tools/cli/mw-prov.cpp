@@ -9,6 +9,7 @@
 //   mw-prov metrics E_d [--by frequency-kHz]
 //   mw-prov export --format prov-json > provenance.json
 //   mw-prov why results/concrete-cube/table1.csv
+//   mw-prov merge --into db/provenance.sqlite db/jobs/*.sqlite
 //
 // Reads the database named by --db or MESOWAVE_DB (default
 // db/provenance.sqlite); every subcommand also answers in JSON (--json).
@@ -35,7 +36,8 @@ int main(int argc, char** argv) {
                  "  mw-prov verify                      re-hash every live output; report missing or changed ones\n"
                  "  mw-prov metrics E_d --by t-p-us     one metric across runs, beside a parameter\n"
                  "  mw-prov export --format prov-json   the whole graph as W3C PROV-JSON (or --format dot)\n"
-                 "  mw-prov why FILE                    which files changed since FILE was made (why make re-runs it)");
+                 "  mw-prov why FILE                    which files changed since FILE was made (why make re-runs it)\n"
+                 "  mw-prov merge --into DB A.sqlite... add the runs of other databases (one per Slurm job) to DB");
   tool.set_records_runs(false);
   auto& cli = tool.cli();
   cli.require_subcommand(1);
@@ -84,10 +86,24 @@ int main(int argc, char** argv) {
   std::string why_file;
   why->add_option("file", why_file, "A file made by a recorded run")->required();
 
-  for (auto* sub : {runs, show, lineage, stale, diff, verify, metrics, why})
+  auto* merge = cli.add_subcommand("merge",
+                                   "Add to --into the runs of other databases it does not hold yet (a run is there when "
+                                   "its whole record is; merging again adds nothing); whole or nothing");
+  std::string merge_into;
+  std::vector<std::string> merge_sources;
+  merge->add_option("--into", merge_into, "The database merged into (created if absent)")->required();
+  merge->add_option("sources", merge_sources, "Databases whose runs are added (read only)")->required();
+
+  for (auto* sub : {runs, show, lineage, stale, diff, verify, metrics, why, merge})
     sub->add_flag("--json", json, "Answer in JSON");
 
   return tool.run(argc, argv, [&](app::Run& run) {
+    if (merge->parsed()) {
+      const auto result = prov::merge_databases(merge_into, {merge_sources.begin(), merge_sources.end()});
+      run.out() << (json ? prov::merge_json(merge_into, result).dump(2) + "\n"
+                         : prov::merge_text(merge_into, result, fs::current_path()));
+      return;
+    }
     const std::string path = tool.db_path().empty() ? "db/provenance.sqlite" : tool.db_path();
     const auto db = prov::Database::open(path, prov::Database::Mode::ReadOnly);
     const fs::path base = fs::current_path();

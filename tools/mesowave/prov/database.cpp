@@ -55,6 +55,11 @@ Statement& Statement::bind_null(int index) {
   return *this;
 }
 
+Statement& Statement::bind(int index, const sqlite3_value* value) {
+  if (sqlite3_bind_value(stmt_, index, value) != SQLITE_OK) fail(db_, "cannot bind value");
+  return *this;
+}
+
 bool Statement::step() {
   const int rc = sqlite3_step(stmt_);
   if (rc == SQLITE_ROW) return true;
@@ -69,6 +74,8 @@ void Statement::run() {
   sqlite3_clear_bindings(stmt_);
 }
 
+void Statement::reset() { sqlite3_reset(stmt_); }
+
 std::string Statement::text(int column) const {
   const auto* p = sqlite3_column_text(stmt_, column);
   return p ? std::string(reinterpret_cast<const char*>(p), std::size_t(sqlite3_column_bytes(stmt_, column)))
@@ -77,6 +84,9 @@ std::string Statement::text(int column) const {
 
 std::int64_t Statement::integer(int column) const { return sqlite3_column_int64(stmt_, column); }
 double Statement::real(int column) const { return sqlite3_column_double(stmt_, column); }
+const sqlite3_value* Statement::value(int column) const { return sqlite3_column_value(stmt_, column); }
+int Statement::column_count() const { return sqlite3_column_count(stmt_); }
+std::string Statement::column_name(int column) const { return sqlite3_column_name(stmt_, column); }
 
 // ---- Database ---------------------------------------------------------------
 

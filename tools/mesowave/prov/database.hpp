@@ -25,15 +25,23 @@ public:
   Statement& bind(int index, std::int64_t value);
   Statement& bind(int index, double value);
   Statement& bind_null(int index);
+  /// Binds a value as it is (any type; NULL included), e.g. one read from another database.
+  Statement& bind(int index, const sqlite3_value* value);
   /// Advances to the next row; false when done.
   bool step();
   /// Runs to completion, for statements that return no rows, then resets
   /// the statement so it can be bound and run again.
   void run();
+  /// Rewinds the statement so it can be stepped again; bindings are kept until rebound.
+  void reset();
 
   std::string text(int column) const;
   std::int64_t integer(int column) const;
   double real(int column) const;
+  /// The column of the current row as SQLite holds it, valid until the next step or reset.
+  const sqlite3_value* value(int column) const;
+  int column_count() const;
+  std::string column_name(int column) const;
 
 private:
   sqlite3* db_;

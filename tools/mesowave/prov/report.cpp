@@ -301,4 +301,31 @@ nlohmann::ordered_json why_json(const std::string& path, const std::vector<Chang
   return {{"file", path}, {"up_to_date", changed.empty()}, {"changed", list}};
 }
 
+std::string merge_text(const std::string& into, const MergeResult& result, const fs::path& base) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& s : result.sources)
+    rows.push_back({display_path(fs::absolute(s.path).lexically_normal().string(), base), std::to_string(s.runs),
+                    std::to_string(s.runs_added), std::to_string(s.runs_present), std::to_string(s.files_added),
+                    std::to_string(s.metrics_added)});
+  std::ostringstream out;
+  out << io::format_text_table({"source", "runs", "added", "already there", "files added", "metrics added"}, rows);
+  out << "into " << into << ": runs " << result.runs_before << " -> " << result.runs_after << ", files "
+      << result.files_before << " -> " << result.files_after << ", metrics " << result.metrics_before << " -> "
+      << result.metrics_after << "\n";
+  return out.str();
+}
+
+nlohmann::ordered_json merge_json(const std::string& into, const MergeResult& result) {
+  auto sources = nlohmann::ordered_json::array();
+  for (const auto& s : result.sources)
+    sources.push_back({{"path", s.path}, {"runs", s.runs}, {"runs_added", s.runs_added},
+                       {"runs_present", s.runs_present}, {"files_added", s.files_added},
+                       {"metrics_added", s.metrics_added}});
+  return {{"into", into},
+          {"sources", sources},
+          {"runs", {{"before", result.runs_before}, {"after", result.runs_after}}},
+          {"files", {{"before", result.files_before}, {"after", result.files_after}}},
+          {"metrics", {{"before", result.metrics_before}, {"after", result.metrics_after}}}};
+}
+
 }  // namespace mesowave::prov

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "mesowave/prov/merge.hpp"
 #include "mesowave/prov/queries.hpp"
 
 namespace mesowave::prov {
@@ -37,5 +38,9 @@ nlohmann::ordered_json metrics_json(const std::string& name, const std::vector<M
 
 std::string why_text(const std::string& path, const std::vector<ChangedUpstream>& changed, const std::filesystem::path& base);
 nlohmann::ordered_json why_json(const std::string& path, const std::vector<ChangedUpstream>& changed);
+
+/// What `mw-prov merge` did: a line per source, then the target's rows before and after.
+std::string merge_text(const std::string& into, const MergeResult& result, const std::filesystem::path& base);
+nlohmann::ordered_json merge_json(const std::string& into, const MergeResult& result);
 
 }  // namespace mesowave::prov
