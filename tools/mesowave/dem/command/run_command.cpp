@@ -1,0 +1,224 @@
+#include "mesowave/dem/command/run_command.hpp"
+
+#include <iostream>
+#include <map>
+#include <optional>
+
+#include "mesowave/app/interrupt.hpp"
+#include "mesowave/app/progress.hpp"
+#include "mesowave/core/error.hpp"
+#include "mesowave/dem/calibration/static_elastic.hpp"
+#include "mesowave/dem/engine/run_report.hpp"
+#include "mesowave/dem/engine/simulation.hpp"
+#include "mesowave/dem/engine/snapshot.hpp"
+#include "mesowave/dem/engine/superposition.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
+#include "mesowave/dem/scene/scene.hpp"
+#include "mesowave/signal/signal_file.hpp"
+
+namespace mesowave::dem {
+
+void add_scene_options(CLI::App& sub, RunCommandLine& v) {
+  sub.add_option("scene", v.scene_path, "Scene file (TOML; see docs/formats.md)")->required();
+  sub.add_option("--model", v.model, "auto (default: the scene's choice, else the rules) | full | linear | chain")
+      ->check(CLI::IsMember({"auto", "full", "linear", "chain"}));
+  add_override_options(sub, v.overrides);
+}
+
+void add_run_options(CLI::App& run_cmd, RunCommandLine& v) {
+  run_cmd.add_option("--signals", v.signals_path, "Sensor signals (HDF5, docs/formats.md); required without --frequencies-kHz");
+  auto* many = run_cmd.add_option("--frequencies-kHz", v.frequencies_kHz,
+                                  "Burst centre frequencies [kHz] (comma-separated) from one run by superposition "
+                                  "(dem/engine/superposition.hpp): linear model, force actuators, motion sensors")
+                   ->delimiter(',')
+                   ->excludes(run_cmd.get_option("--frequency-kHz"));
+  run_cmd.add_option("--signals-pattern", v.signals_pattern,
+                     "With --frequencies-kHz: each frequency's signals, {f} the frequency in kHz ('dem-{f}kHz.h5')")
+      ->needs(many);
+  run_cmd.add_option("--summary-pattern", v.summary_pattern, "With --frequencies-kHz: each frequency's summary (JSON), {f} as above")
+      ->needs(many);
+  run_cmd.add_option("--check-kHz", v.check_kHz,
+                     "With --frequencies-kHz: also run these of them directly (comma-separated) and record the "
+                     "superposition's PCC and largest difference / peak against each in the summaries")
+      ->delimiter(',')
+      ->needs(many);
+  run_cmd.add_option("--summary", v.summary_path, "Run summary (JSON; also printed)");
+  run_cmd.add_option("--signals-csv", v.csv_path, "The signals also as CSV (t_s and one column per sensor)");
+  run_cmd.add_option("--snapshots", v.snapshot_dir, "Folder for ParaView snapshots (.vtp per instant + snapshots.pvd)");
+  run_cmd.add_option("--snapshot-interval-us", v.overrides.snapshot_us, "Time between snapshots [us] (default: the scene's)");
+  run_cmd.add_flag("--quiet", v.quiet, "No progress bar");
+  run_cmd.add_flag("--static", v.static_solve,
+                   "A compression [test]'s elastic part as one static solve of the linearised network instead of "
+                   "stepping (dem/calibration/static_elastic.hpp): E_glob and nu_glob between --modulus-levels-MPa, "
+                   "walls as one-sided springs, the same extensometers; --signals and --curves get the two levels");
+  run_cmd.add_option("--curves", v.curves_path,
+                     "A [test]'s stress-strain curves as CSV (t_s, stress_MPa, axial_strain, lateral_strain, "
+                     "broken_bonds); the signal file holds them too (test.stress, test.axial_strain, ...)");
+  auto* checkpoint_opt = run_cmd.add_option("--checkpoint", v.checkpoint_path,
+                                            "Checkpoint (HDF5, written whole) on SIGTERM/SIGINT before the run stops, "
+                                            "and every --checkpoint-every-steps steps");
+  run_cmd.add_option("--checkpoint-every-steps", v.checkpoint_every, "Steps between checkpoints")
+      ->check(CLI::PositiveNumber)
+      ->needs(checkpoint_opt);
+  run_cmd.add_option("--restart", v.restart_path,
+                     "Continue from this checkpoint, to the same bits as a run never stopped; the scene, packing "
+                     "and options must be the checkpoint's")
+      ->check(CLI::ExistingFile);
+}
+
+namespace {
+
+struct Inputs {
+  Scene scene;
+  Packing packing;
+};
+
+Inputs read_inputs(RunCommandLine& v, app::Run& run) {
+  Scene scene = read_scene_file(v.scene_path);
+  run.input(v.scene_path);
+  if (!scene.experiment_file.empty()) run.input(scene.experiment_file);
+  v.overrides.curves = !v.curves_path.empty();
+  apply_overrides(scene, v.overrides);
+  Packing packing = read_packing_file(scene.packing_file);
+  run.input(scene.packing_file);
+  return {std::move(scene), std::move(packing)};
+}
+
+void run_static(const RunCommandLine& v, const Inputs& in, app::Run& run, const std::string& threads_reason) {
+  if (!v.snapshot_dir.empty() || !v.csv_path.empty())
+    throw InputError("--static solves for equilibrium: it has no --snapshots or --signals-csv");
+  if (v.model != "auto" && v.model != "linear") throw InputError("--static solves the linearised network, not --model " + v.model);
+  const StaticElasticResult r = static_compression_test(in.scene, in.packing);
+  if (!v.curves_path.empty()) run.write_text(v.curves_path, uniaxial_curves_csv(r.test));
+  signal::write_signal_file(run.output(v.signals_path), uniaxial_curve_signals(r.test),
+                            {{"scene", in.scene.name}, {"model", "linear"}, {"method", "static"},
+                             {"packing", in.scene.packing_file.string()}});
+  run.param("model_chosen", "linear");
+  run.param("method", "static");
+  run.metric("E_glob", r.E_glob_Pa / 1e9, "GPa");
+  if (r.nu_glob) run.metric("nu_glob", *r.nu_glob, "");
+  run.metric("wall", r.wall_s, "s");
+  auto summary = to_json(r);
+  summary["scene"] = in.scene.name;
+  summary["threads_reason"] = threads_reason;
+  run.emit_json(summary, v.summary_path);
+}
+
+void run_superposed_set(const RunCommandLine& v, const Inputs& in, const SimulationOptions& options,
+                        std::optional<app::Progress>& progress, app::Run& run, const std::string& threads_reason) {
+  if (!v.signals_path.empty() || !v.csv_path.empty() || !v.snapshot_dir.empty() || !v.curves_path.empty() ||
+      !v.checkpoint_path.empty() || !v.restart_path.empty())
+    throw InputError("--frequencies-kHz writes --signals-pattern files: --signals, --signals-csv, --snapshots, "
+                     "--curves, --checkpoint and --restart are for one direct run");
+  if (v.signals_pattern.empty()) throw InputError("--frequencies-kHz needs --signals-pattern (e.g. 'dem-{f}kHz.h5')");
+  const SuperposedSet set = run_superposed(in.scene, in.packing, options, v.frequencies_kHz, v.check_kHz);
+  if (progress) progress->finish();
+  for (const auto& f : set.frequencies) {
+    const std::string kHz = frequency_text(f.run.frequency_hz);
+    signal::write_signal_file(run.output(frequency_path(v.signals_pattern, "--signals-pattern", f.run.frequency_hz)),
+                              f.run.signals, {{"scene", in.scene.name}, {"model", set.responses.report.choice.model},
+                                              {"packing", in.scene.packing_file.string()}, {"method", "superposition"}});
+    if (!v.summary_pattern.empty())
+      run.write_text(frequency_path(v.summary_pattern, "--summary-pattern", f.run.frequency_hz), f.summary.dump(2) + "\n");
+    run.metric("peak_force_ratio_bound_" + kHz + "kHz", f.run.peak_force_ratio_bound, "");
+  }
+  run.param("model_chosen", set.responses.report.choice.model);
+  run.param("method", "superposition");
+  run.metric("wall", set.responses.wall_s, "s");
+  for (const auto& c : set.checks) {
+    const std::string kHz = frequency_text(c.frequency_hz);
+    run.metric("superposition_min_pcc_" + kHz + "kHz", c.error.min_pcc, "");
+    run.metric("superposition_max_diff_over_peak_" + kHz + "kHz", c.error.max_diff_over_peak_all, "");
+  }
+  auto summary = set.summary;
+  summary["threads_reason"] = threads_reason;
+  run.emit_json(summary, v.summary_path);
+}
+
+void write_direct_run(const RunCommandLine& v, const Scene& scene, const RunReport& report,
+                      const std::vector<std::pair<double, std::string>>& snapshots, app::Run& run,
+                      const std::string& threads_reason) {
+  std::map<std::string, std::string> attributes = {
+      {"scene", scene.name}, {"model", report.choice.model}, {"packing", scene.packing_file.string()}};
+  std::vector<signal::Signal> signals = report.signals;
+  if (report.test) {
+    for (auto& s : uniaxial_curve_signals(*report.test)) signals.push_back(std::move(s));
+    if (!v.curves_path.empty()) run.write_text(v.curves_path, uniaxial_curves_csv(*report.test));
+    run.metric("E_glob", report.test->E_secant_Pa / 1e9, "GPa");
+    if (report.test->nu_secant) run.metric("nu_glob", *report.test->nu_secant, "");
+    run.metric("peak_stress", report.test->peak_stress_Pa / 1e6, "MPa");
+    run.metric("inertial_number_max", report.test->inertial_number_max, "");
+  }
+  signal::write_signal_file(run.output(v.signals_path), signals, attributes);
+  if (!v.csv_path.empty()) run.write_text(v.csv_path, signals_csv(report.signals));
+  if (!snapshots.empty()) write_pvd(run.output(v.snapshot_dir / "snapshots.pvd"), snapshots);
+  run.param("model_chosen", report.choice.model);
+  run.metric("steps_per_s", report.steps_per_s, "1/s");
+  run.metric("wall", report.wall_s, "s");
+  run.metric("dt_limit", report.dt_cr.limit_s, "s");
+  run.metric("peak_force_ratio", report.peak_force_ratio, "");
+  run.metric("ns_per_contact_step", report.ns_per_contact_step, "ns");
+  auto summary = to_json(report);
+  summary["threads_reason"] = threads_reason;
+  run.emit_json(summary, v.summary_path);
+}
+
+}  // namespace
+
+void run_info_command(RunCommandLine v, app::Run& run, const std::string& threads_reason) {
+  const Inputs in = read_inputs(v, run);
+  SimulationOptions options;
+  options.model = v.model;
+  const Simulation sim(in.scene, in.packing, options);
+  auto j = to_json(sim.describe());
+  j["threads_reason"] = threads_reason;
+  run.emit_json(j);
+}
+
+void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads_reason) {
+  const Inputs in = read_inputs(v, run);
+  if (v.static_solve) return run_static(v, in, run, threads_reason);
+
+  SimulationOptions options;
+  options.model = v.model;
+  std::vector<std::pair<double, std::string>> snapshots;
+  if (!v.snapshot_dir.empty()) {
+    if (!(in.scene.snapshot_interval_s > 0))
+      throw InputError("--snapshots needs --snapshot-interval-us or [output] snapshot_interval_us");
+    options.on_snapshot = [&](const Model& m, double t, std::int64_t index) {
+      const std::string name = "snapshot-" + std::to_string(index) + ".vtp";
+      write_vtp(run.output(v.snapshot_dir / name), m, t);
+      snapshots.emplace_back(t, name);
+    };
+  }
+  std::optional<app::Progress> progress;
+  std::int64_t resumed_at = 0;
+  options.on_progress = [&](std::int64_t done, std::int64_t total) {
+    if (!progress) progress.emplace("mw-dem " + in.scene.name, total, "steps", !v.quiet, resumed_at);
+    progress->update(done);
+  };
+  if (!v.frequencies_kHz.empty()) return run_superposed_set(v, in, options, progress, run, threads_reason);
+
+  if (!v.checkpoint_path.empty() || !v.restart_path.empty()) {
+    const auto written = [&](std::int64_t step) {
+      run.param("checkpoint_step", step);  // recorded also when the run is interrupted
+      if (app::interrupt_signal())
+        std::cerr << "mw-dem: " << v.checkpoint_path.string() << " holds step " << step << "; continue with --restart\n";
+    };
+    options.checkpoint = {v.checkpoint_path, v.checkpoint_every, [] { return app::interrupt_signal() != 0; },
+                          run_identity(v.scene_path, in.scene, v.overrides, v.model), written};
+  }
+  Simulation sim(in.scene, in.packing, options);
+  if (v.signals_path.empty()) throw InputError("run needs --signals (or --frequencies-kHz with --signals-pattern)");
+  if (!v.restart_path.empty()) {
+    run.input(v.restart_path);
+    sim.restore(v.restart_path, options.checkpoint.identity);
+    resumed_at = sim.steps_done();
+    run.param("restarted_at_step", resumed_at);
+  }
+  const RunReport report = sim.run();
+  if (progress) progress->finish();
+  write_direct_run(v, in.scene, report, snapshots, run, threads_reason);
+}
+
+}  // namespace mesowave::dem
