@@ -39,6 +39,9 @@ nlohmann::json json_without_wall_time(const std::string& text) {
   j.erase("element_updates_per_s");
   j.erase("peak_rss_MiB");
   j.erase("signals");
+  // the machine's state at the start, not the run's result (core/threads: the other runnable threads)
+  j.erase("threads");
+  j.erase("threads_reason");
   return j;
 }
 }  // namespace

@@ -205,4 +205,84 @@ inertial_number_bound = 0.0
   return text;
 }
 
+/// n x n x n equal spheres of radius r touching on a simple cubic lattice (each column a chain of
+/// bonds): E_glob = E_dem / 2 and nu_glob = 0 in closed form.
+inline Packing simple_cubic_packing(int n, double r, double density) {
+  Packing p;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        p.centres_m.push_back({r * (1 + 2 * i), r * (1 + 2 * j), r * (1 + 2 * k)});
+        p.radii_m.push_back(r);
+        p.ids.push_back(std::int64_t(p.ids.size()));
+      }
+  p.container.upper_m = {2 * r * n, 2 * r * n, 2 * r * n};
+  p.particle_density_kg_m3 = density;
+  return p;
+}
+
+/// A compression test of a small lattice: walls on z, a vertical and a horizontal extensometer on the
+/// face x-; `modulus_levels` is the [test] line that sets the levels (in % of the peak or in MPa).
+inline std::string lattice_compression_toml(const std::string& modulus_levels) {
+  std::string text = R"(
+[packing]
+file = "unused.h5"
+[material]
+E_dem_GPa = 20.0
+nu_dem = 0.3
+damping = 0.1
+bond_factor = 1.05
+[time]
+dt_ns = 20
+duration_ms = 0.8
+[[actuator]]
+name = "bottom"
+kind = "wall"
+face = "z-"
+[[actuator]]
+name = "top"
+kind = "wall"
+face = "z+"
+velocity_mm_s = 10.0
+ramp_us = 100
+[[sensor]]
+name = "P_top"
+quantity = "force"
+actuator = "top"
+sample_interval_ns = 1000
+[[sensor]]
+name = "P_bottom"
+quantity = "force"
+actuator = "bottom"
+sample_interval_ns = 1000
+[[sensor]]
+name = "V"
+quantity = "strain"
+component = "z"
+face = "x-"
+centre_rel = [0.0, 0.5, 0.5]
+gauge_rel = 0.5
+patch_mm = [3.0, 1.5]
+sample_interval_ns = 1000
+[[sensor]]
+name = "H"
+quantity = "strain"
+component = "y"
+face = "x-"
+centre_rel = [0.0, 0.5, 0.5]
+gauge_rel = 0.5
+patch_mm = [1.5, 3.0]
+sample_interval_ns = 1000
+[test]
+kind = "compression"
+load = ["P_top", "P_bottom"]
+axial = ["V"]
+lateral = ["H"]
+MODULUS_LEVELS
+inertial_number_bound = 0.0
+)";
+  text.replace(text.find("MODULUS_LEVELS"), 14, modulus_levels);
+  return text;
+}
+
 }  // namespace mesowave::dem::testing

@@ -33,79 +33,8 @@ Simulation linear_simulation(const Packing& p, double dt = 1e-8) {
   return Simulation(dem::testing::bare_scene(m, dt, 10 * dt), p, o);
 }
 
-// The compression scene of uniaxial_analysis_test.cpp (walls on z, extensometers
-// on the face x-), with the modulus levels as stresses.
-const char* kCompression = R"(
-[packing]
-file = "unused.h5"
-[material]
-E_dem_GPa = 20.0
-nu_dem = 0.3
-damping = 0.1
-bond_factor = 1.05
-[time]
-dt_ns = 20
-duration_ms = 0.8
-[[actuator]]
-name = "bottom"
-kind = "wall"
-face = "z-"
-[[actuator]]
-name = "top"
-kind = "wall"
-face = "z+"
-velocity_mm_s = 10.0
-ramp_us = 100
-[[sensor]]
-name = "P_top"
-quantity = "force"
-actuator = "top"
-sample_interval_ns = 1000
-[[sensor]]
-name = "P_bottom"
-quantity = "force"
-actuator = "bottom"
-sample_interval_ns = 1000
-[[sensor]]
-name = "V"
-quantity = "strain"
-component = "z"
-face = "x-"
-centre_rel = [0.0, 0.5, 0.5]
-gauge_rel = 0.5
-patch_mm = [3.0, 1.5]
-sample_interval_ns = 1000
-[[sensor]]
-name = "H"
-quantity = "strain"
-component = "y"
-face = "x-"
-centre_rel = [0.0, 0.5, 0.5]
-gauge_rel = 0.5
-patch_mm = [1.5, 3.0]
-sample_interval_ns = 1000
-[test]
-kind = "compression"
-load = ["P_top", "P_bottom"]
-axial = ["V"]
-lateral = ["H"]
-modulus_levels_MPa = [1.0, 4.0]
-inertial_number_bound = 0.0
-)";
-
-Packing simple_cubic(int n, double r, double density) {
-  Packing p;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        p.centres_m.push_back({r * (1 + 2 * i), r * (1 + 2 * j), r * (1 + 2 * k)});
-        p.radii_m.push_back(r);
-        p.ids.push_back(std::int64_t(p.ids.size()));
-      }
-  p.container.upper_m = {2 * r * n, 2 * r * n, 2 * r * n};
-  p.particle_density_kg_m3 = density;
-  return p;
-}
+// The lattice compression of dem/test_packings.hpp, with the modulus levels as stresses.
+const std::string kCompression = dem::testing::lattice_compression_toml("modulus_levels_MPa = [1.0, 4.0]");
 
 }  // namespace
 
@@ -193,7 +122,7 @@ TEST(StaticElastic, SimpleCubicLatticeHasHalfTheContactModulus) {
   // so E_glob = K_n / (2r) = E_dem / 2 = 10 GPa; no bond is inclined, so a
   // compression along z moves nothing across it: nu_glob = 0.
   const Scene scene = parse_scene(kCompression, "compression");
-  const StaticElasticResult r = static_compression_test(scene, simple_cubic(6, 1e-3, 2500.0));
+  const StaticElasticResult r = static_compression_test(scene, dem::testing::simple_cubic_packing(6, 1e-3, 2500.0));
   EXPECT_NEAR(r.E_glob_Pa / 10e9, 1.0, 1e-9);
   ASSERT_TRUE(r.nu_glob);
   EXPECT_NEAR(*r.nu_glob, 0.0, 1e-9);
@@ -202,7 +131,7 @@ TEST(StaticElastic, SimpleCubicLatticeHasHalfTheContactModulus) {
   // The incomplete-LU preconditioner gives the same solution.
   StaticElasticOptions ilut;
   ilut.preconditioner = "ilut";
-  const StaticElasticResult i = static_compression_test(scene, simple_cubic(6, 1e-3, 2500.0), ilut);
+  const StaticElasticResult i = static_compression_test(scene, dem::testing::simple_cubic_packing(6, 1e-3, 2500.0), ilut);
   EXPECT_EQ(i.solver, "BiCGSTAB (ILUT)");
   EXPECT_NEAR(i.E_glob_Pa / 10e9, 1.0, 1e-9);
   EXPECT_NEAR(*i.nu_glob, 0.0, 1e-9);

@@ -18,82 +18,10 @@ using namespace mesowave::dem;
 
 namespace {
 
-// n x n x n spheres of radius r on a simple cubic lattice of spacing 2r
-// (touching): with C_f = 1.05 each sphere is bonded to its six neighbours
-// only (the face diagonals are 2.83 r apart).
-Packing simple_cubic(int n, double r, double density) {
-  Packing p;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        p.centres_m.push_back({r * (1 + 2 * i), r * (1 + 2 * j), r * (1 + 2 * k)});
-        p.radii_m.push_back(r);
-        p.ids.push_back(std::int64_t(p.ids.size()));
-      }
-  p.container.upper_m = {2 * r * n, 2 * r * n, 2 * r * n};
-  p.particle_density_kg_m3 = density;
-  return p;
-}
-
-// Compression between walls on z, vertical and horizontal extensometers on the
-// faces x- and y-, positions relative to the packing (as the shipped scene).
-const char* kCompression = R"(
-[packing]
-file = "unused.h5"
-[material]
-E_dem_GPa = 20.0
-nu_dem = 0.3
-damping = 0.1
-bond_factor = 1.05
-[time]
-dt_ns = 20
-duration_ms = 0.8
-[[actuator]]
-name = "bottom"
-kind = "wall"
-face = "z-"
-[[actuator]]
-name = "top"
-kind = "wall"
-face = "z+"
-velocity_mm_s = 10.0
-ramp_us = 100
-[[sensor]]
-name = "P_top"
-quantity = "force"
-actuator = "top"
-sample_interval_ns = 1000
-[[sensor]]
-name = "P_bottom"
-quantity = "force"
-actuator = "bottom"
-sample_interval_ns = 1000
-[[sensor]]
-name = "V"
-quantity = "strain"
-component = "z"
-face = "x-"
-centre_rel = [0.0, 0.5, 0.5]
-gauge_rel = 0.5
-patch_mm = [3.0, 1.5]
-sample_interval_ns = 1000
-[[sensor]]
-name = "H"
-quantity = "strain"
-component = "y"
-face = "x-"
-centre_rel = [0.0, 0.5, 0.5]
-gauge_rel = 0.5
-patch_mm = [1.5, 3.0]
-sample_interval_ns = 1000
-[test]
-kind = "compression"
-load = ["P_top", "P_bottom"]
-axial = ["V"]
-lateral = ["H"]
-modulus_levels_pct = [20.0, 80.0]
-inertial_number_bound = 0.0
-)";
+// The lattice compression of dem/test_packings.hpp (walls on z, extensometers on the face x-) with
+// the modulus levels as fractions of the peak; with C_f = 1.05 each sphere of the simple cubic
+// lattice is bonded to its six neighbours only (the face diagonals are 2.83 r apart).
+const std::string kCompression = dem::testing::lattice_compression_toml("modulus_levels_pct = [20.0, 80.0]");
 
 }  // namespace
 
@@ -103,7 +31,7 @@ TEST(VirtualCompression, SimpleCubicLatticeHasHalfTheContactModulus) {
   // E_glob = K_n / (2r) = E_dem / 2; no bond is inclined, so nu_glob = 0.
   const double r = 1e-3;
   const Scene scene = parse_scene(kCompression, "compression");
-  Simulation sim(scene, simple_cubic(6, r, 2500.0));
+  Simulation sim(scene, dem::testing::simple_cubic_packing(6, r, 2500.0));
   EXPECT_EQ(sim.choice().model, "full");
   const RunReport report = sim.run();
   ASSERT_TRUE(report.test);
@@ -122,7 +50,7 @@ TEST(VirtualCompression, WallsAddTheirStiffnessToTheCriticalStep) {
   // (Weyl): the limit falls below the bonded network's own.
   const double r = 1e-3, rho = 2500;
   const Scene scene = parse_scene(kCompression, "compression");
-  const Simulation sim(scene, simple_cubic(6, r, rho));
+  const Simulation sim(scene, dem::testing::simple_cubic_packing(6, r, rho));
   const double m = rho * 4.0 / 3.0 * std::numbers::pi * r * r * r;
   EXPECT_NEAR(sim.time_step().boundary_lambda, 20e9 * r / m, 1e-9 * 20e9 * r / m);
   const double without = 2.0 / std::sqrt(sim.time_step().lambda_max - sim.time_step().boundary_lambda);

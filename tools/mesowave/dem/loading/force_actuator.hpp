@@ -13,45 +13,50 @@ namespace mesowave::dem {
 /// sample it here, so that a superposed signal sees the same force samples.
 double burst_force_N(const signal::HannBurst& burst, double t_s);
 
-class ForceActuator : public Actuator {
+/// What both force actuators share: f(t) e divided equally among the spheres, the last force
+/// reported and checkpointed (the load itself is a function of time or step alone).
+class SharedForceActuator : public Actuator {
 public:
-  ForceActuator(std::string name, std::vector<std::size_t> spheres, const Vec3& direction, signal::HannBurst force_N);
   const std::string& name() const override { return name_; }
-  void before_step(Model& model, double t_s, double dt_s) override;
   const std::vector<std::size_t>& spheres() const override { return spheres_; }
-  std::string description() const override;
   double applied_force() const override { return last_force_; }
-  /// Its load is a function of time alone: only the last force carries over.
   void save_state(StateGroup& group) const override { group.write("last_force_N", last_force_); }
   void load_state(const StateGroup& group) override { last_force_ = group.read_double("last_force_N"); }
+
+protected:
+  SharedForceActuator(std::string name, std::vector<std::size_t> spheres, const Vec3& direction);
+  /// Records f as this step's force and, when `apply`, adds f e / count to every sphere.
+  void push(Model& model, double force_N, bool apply);
+  /// "along (x, y, z) shared by N spheres"
+  std::string sharing_text() const;
 
 private:
   double last_force_ = 0;
   std::string name_;
   std::vector<std::size_t> spheres_;
   Vec3 direction_;
+};
+
+class ForceActuator : public SharedForceActuator {
+public:
+  ForceActuator(std::string name, std::vector<std::size_t> spheres, const Vec3& direction, signal::HannBurst force_N);
+  void before_step(Model& model, double t_s, double dt_s) override;
+  std::string description() const override;
+
+private:
   signal::HannBurst force_;
 };
 
 /// f_n e shared equally by the spheres on step n (t_n = n dt), 0 after the
 /// last sample: {1.0} is a unit impulse on step 0, {} pushes nothing.
-class ForceSeriesActuator : public Actuator {
+class ForceSeriesActuator : public SharedForceActuator {
 public:
   ForceSeriesActuator(std::string name, std::vector<std::size_t> spheres, const Vec3& direction,
                       std::vector<double> force_N);
-  const std::string& name() const override { return name_; }
   void before_step(Model& model, double t_s, double dt_s) override;
-  const std::vector<std::size_t>& spheres() const override { return spheres_; }
   std::string description() const override;
-  double applied_force() const override { return last_force_; }
-  void save_state(StateGroup& group) const override { group.write("last_force_N", last_force_); }
-  void load_state(const StateGroup& group) override { last_force_ = group.read_double("last_force_N"); }
 
 private:
-  double last_force_ = 0;
-  std::string name_;
-  std::vector<std::size_t> spheres_;
-  Vec3 direction_;
   std::vector<double> force_;
 };
 
