@@ -9,7 +9,6 @@
 #include "mesowave/app/subprocess.hpp"
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
-#include "mesowave/core/format.hpp"
 #include "mesowave/core/units.hpp"
 #include "mesowave/dem/calibration/calibration.hpp"
 #include "mesowave/dem/calibration/calibration_report.hpp"
@@ -75,12 +74,9 @@ int main(int argc, char** argv) {
   cube->add_option("--targets-csv", targets_csv, "CSV: each target, its tolerance, the calibrated value, where it was read from");
   cube->add_option("--plot-trajectory", plot_trajectory, "PNG: the trials against the targets");
   std::string elastic_trials = "dynamic";
-  cube->add_option("--elastic-trials", elastic_trials,
-                   "dynamic: step the elastic trials (the linearised network to sigma_max / 3); static: solve each as one "
-                   "linear static problem (mw-dem run --static: the same E_glob, nu_glob, docs/calibration.md); failure "
-                   "trials stay dynamic")
-      ->check(CLI::IsMember({"dynamic", "static"}))
-      ->capture_default_str();
+  cube->add_option("--elastic-trials", elastic_trials, "dynamic: step the elastic trials (the linearised network to "
+                   "sigma_max / 3); static: one linear solve each (mw-dem run --static, docs/calibration.md); failure "
+                   "trials stay dynamic")->check(CLI::IsMember({"dynamic", "static"}))->capture_default_str();
   cube->add_option("--plot-curves", plot_curves, "PNG: stress-strain curves of the calibrated test, with the moduli");
 
   auto* rod = cli.add_subcommand("rod", "Tension test of a chain: the contact modulus for the rod's E");
@@ -144,9 +140,8 @@ int main(int argc, char** argv) {
       io::run_gnuplot(dem::stress_strain_script(dem::read_trial_curve(best.summary_file), targets.E_Pa, targets.nu,
                                                 run.output(plot_curves), "Virtual compression test, calibrated parameters"));
     }
-    auto summary = dem::calibration_summary(
-        calibration, mu_deg, {run.origin("--E-st-measured-GPa"), run.origin("--nu-st"), run.origin("--sigma-max-MPa")},
-        elastic_trials);
+    auto summary = dem::calibration_summary(calibration, mu_deg, {run.origin("--E-st-measured-GPa"), run.origin("--nu-st"),
+                                            run.origin("--sigma-max-MPa")}, elastic_trials);
     if (!targets_csv.empty()) run.write_text(targets_csv, dem::calibration_targets_csv(summary));
     // The five values the wave runs take (mw-dem --from calibration.json); the rest is the record.
     app::declare_products(summary, {"E_dem_GPa", "nu_dem", "T_MPa", "C_MPa", "friction_angle_deg"});
