@@ -11,6 +11,7 @@
 #include "dem/test_packings.hpp"
 #include "mesowave/dem/packing/packing_file.hpp"
 #include "mesowave/signal/signal_file.hpp"
+#include "support/rod_scene.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -23,35 +24,7 @@ std::vector<std::string> with(std::vector<std::string> args, const std::vector<s
   return args;
 }
 
-// The rod of mw_dem_test.cpp: the rod paper's chain, a burst on the first sphere, the last one's acceleration.
-std::string rod_scene(const std::filesystem::path& packing) {
-  return R"toml([scene]
-name = "rod-wave"
-[packing]
-file = ")toml" + packing.string() + R"toml("
-[material]
-E_dem_GPa = 660.0
-nu_dem = 0.3
-damping = 0.0
-bond_factor = 1.0
-[time]
-dt_ns = 50
-duration_ms = 1.5
-[[actuator]]
-name = "A"
-kind = "force"
-sphere = "first"
-direction = "line"
-amplitude_N = 1.0
-frequency_kHz = 100
-cycles = 5
-[[sensor]]
-name = "S"
-quantity = "acceleration"
-component = "line"
-sphere = "last"
-)toml";
-}
+std::string rod_scene(const std::filesystem::path& packing) { return mesowave::test::rod_chain_scene_toml(packing); }
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include "mesowave/dem/packing/packing_file.hpp"
 #include "mesowave/dem/packing/packing_generator.hpp"
 #include "mesowave/signal/signal_file.hpp"
+#include "support/rod_scene.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -36,40 +37,7 @@ void replace_once(std::string& text, const std::string& key, const std::string& 
   text.replace(at, key.size(), by);
 }
 
-// A chain scene of the tests' own: the rod paper's 1.03 R chain (Table 1), a force burst on the
-// first sphere along the line, the acceleration of the last, 1.5 ms (the shipped rod scene's
-// values; that one takes its transducers from lab-data/steel-rod/experiment.toml, which needs a
-// line along z, and records the experiment as a third input).
-std::string rod_scene(const std::filesystem::path& packing) {
-  std::string text = R"toml([scene]
-name = "rod-wave"
-[packing]
-file = "PACKING"
-[material]
-E_dem_GPa = 660.0
-nu_dem = 0.3
-damping = 0.0
-bond_factor = 1.0
-[time]
-dt_ns = 50
-duration_ms = 1.5
-[[actuator]]
-name = "A"
-kind = "force"
-sphere = "first"
-direction = "line"
-amplitude_N = 1.0
-frequency_kHz = 100
-cycles = 5
-[[sensor]]
-name = "S"
-quantity = "acceleration"
-component = "line"
-sphere = "last"
-)toml";
-  replace_once(text, "PACKING", packing.string());
-  return text;
-}
+std::string rod_scene(const std::filesystem::path& packing) { return mesowave::test::rod_chain_scene_toml(packing); }
 
 // The shipped rod scene, its packing and its experiment file given as absolute paths.
 std::string shipped_rod_scene(const std::filesystem::path& packing) {
