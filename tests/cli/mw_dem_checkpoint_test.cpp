@@ -106,6 +106,9 @@ TEST(MwDemCheckpoint, AfterSigtermTheRestartWritesTheUninterruptedSignals) {
   ASSERT_TRUE(stopped.signal_sent) << "the run ended before its 10 % progress line: " << stopped.err;
   EXPECT_EQ(stopped.exit_status, 143) << stopped.err;
   EXPECT_NE(stopped.err.find("c.h5 holds step "), std::string::npos) << stopped.err;
+  // The interrupted run's error line (and its record) names the file it kept, not "nothing written".
+  EXPECT_NE(stopped.err.find("; no output was written; kept " + (dir / "c.h5").string() + " (a checkpoint at step "),
+            std::string::npos) << stopped.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "s.h5"));
   ASSERT_TRUE(std::filesystem::exists(dir / "c.h5"));
   const auto again = run_tool("mw-dem", with(base, {"--signals", (dir / "s.h5").string(), "--restart",

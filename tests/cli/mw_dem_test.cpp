@@ -250,6 +250,8 @@ TEST(MwDem, ASigtermStopsTheRunWritesNothingAndRecordsItAsInterrupted) {
   EXPECT_FALSE(r.killed_by_signal);
   EXPECT_EQ(r.exit_status, 143) << r.err;
   EXPECT_NE(r.err.find("error: interrupted by SIGTERM after "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("; no output was written"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("; kept "), std::string::npos) << r.err;  // no checkpoint asked for
   EXPECT_EQ(test::count_files(dir.path()), 2u);  // rod.h5 and rod.toml: no signals, summary or staged temporary
 
   const auto runs = nlohmann::json::parse(run_tool("mw-prov", {"--db", db, "runs", "--json"}).out);

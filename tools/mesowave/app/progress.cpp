@@ -56,15 +56,36 @@ void Progress::finish() {
   finished_ = true;
 }
 
-void Progress::draw(std::int64_t done, bool final) {
+void Progress::finish_early(std::int64_t done, const std::string& why) {
+  if (!finished_) done_ = done;
+  mark_progress(mark());
+  if (!enabled_ || finished_) return;
+  draw(done_, true, why);
+  finished_ = true;
+}
+
+void Progress::draw(std::int64_t done, bool final, const std::string& stopped_because) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const double rate = elapsed > 0 ? double(done - resumed_at_) / elapsed : 0.0;
-  const double eta = rate > 0 ? double(total_ - done) / rate : 0.0;
   const double fraction = double(done) / double(total_);
-  char numbers[160];
-  std::snprintf(numbers, sizeof numbers, "%3d%% %lld/%lld %s, %.3g %s/s, %s %s", int(100 * fraction), (long long)done,
-                (long long)total_, unit_.c_str(), rate, unit_.c_str(), final ? "took" : "ETA",
-                clock_text(final ? elapsed : eta).c_str());
+  // A rate needs steps done and time passed: the first plain line (at 0 %) comes right after the
+  // start, where a few steps over microseconds give a meaningless rate and an ETA of 0:00.
+  const bool measured = done > resumed_at_ && elapsed >= 0.05;
+  const double rate = measured ? double(done - resumed_at_) / elapsed : 0.0;
+  char numbers[256];
+  const int head = std::snprintf(numbers, sizeof numbers, "%3d%% %lld/%lld %s", int(100 * fraction), (long long)done,
+                                 (long long)total_, unit_.c_str());
+  const std::size_t used = std::min(std::size_t(std::max(head, 0)), sizeof numbers - 1);
+  if (final && !stopped_because.empty())
+    std::snprintf(numbers + used, sizeof numbers - used, ", stopped early: %s; took %s", stopped_because.c_str(),
+                  clock_text(elapsed).c_str());
+  else if (final)
+    std::snprintf(numbers + used, sizeof numbers - used, ", %.3g %s/s, took %s",
+                  elapsed > 0 ? double(done - resumed_at_) / elapsed : 0.0, unit_.c_str(), clock_text(elapsed).c_str());
+  else if (measured)
+    std::snprintf(numbers + used, sizeof numbers - used, ", %.3g %s/s, ETA %s", rate, unit_.c_str(),
+                  clock_text(double(total_ - done) / rate).c_str());
+  else
+    std::snprintf(numbers + used, sizeof numbers - used, ", started");
   if (tty_) {
     const int width = 24, filled = int(width * fraction);
     std::fprintf(stderr, "\r%s [%s%s] %s\033[K%s", label_.c_str(), std::string(filled, '#').c_str(),

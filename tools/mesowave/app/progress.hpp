@@ -24,12 +24,16 @@ public:
   ~Progress();
   /// Shows `done` of `total`; throws app::Interrupted if a signal arrived.
   void update(std::int64_t done);
+  /// The work is complete: the last line shows `total` and the time taken.
   void finish();
+  /// The loop ended at `done` before `total` because `why` (a test's stop rule, say): the last
+  /// line says so instead of claiming 100 %.
+  void finish_early(std::int64_t done, const std::string& why);
   /// Where the loop is: label, unit, the last `done` given, total.
   ProgressMark mark() const;
 
 private:
-  void draw(std::int64_t done, bool final);
+  void draw(std::int64_t done, bool final, const std::string& stopped_because = {});
   PollingScope polling_;  // a signal while this loop runs waits for its update()
   std::string label_, unit_;
   std::int64_t total_, done_ = 0, resumed_at_ = 0;

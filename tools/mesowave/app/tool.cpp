@@ -1,6 +1,6 @@
-#include <algorithm>
 #include "mesowave/app/tool.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -212,6 +212,14 @@ void Run::metric(const std::string& name, double value, const std::string& unit)
 
 void Run::param(const std::string& name, nlohmann::ordered_json value) { extra_params_[name] = std::move(value); }
 
+void Run::keep_on_interrupt(const std::filesystem::path& path, const std::string& what) {
+  const std::string entry = path.string() + " (" + what + ")";
+  const auto same_file = [&](const std::string& k) { return k.rfind(path.string() + " (", 0) == 0; };
+  const auto it = std::find_if(kept_.begin(), kept_.end(), same_file);
+  if (it != kept_.end()) *it = entry;
+  else kept_.push_back(entry);
+}
+
 nlohmann::ordered_json Run::origin(const std::string& option) const {
   nlohmann::ordered_json o = {{"option", option}};
   for (const auto& arg : command_line_) {
@@ -341,7 +349,8 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
                       m->label + ")";
       where.update({{"label", m->label}, {"done", m->done}, {"total", m->total}, {"unit", m->unit}});
     }
-    record.error += "; nothing was written";
+    record.error += "; no output was written";
+    for (const auto& kept : run.kept_) record.error += "; kept " + kept;
     record.params["interrupted"] = where;
   }
   record.inputs = run.inputs_;

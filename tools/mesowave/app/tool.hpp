@@ -46,6 +46,9 @@ public:
   void metric(const std::string& name, double value, const std::string& unit);
   /// A parameter that is not an option (a derived choice worth recording).
   void param(const std::string& name, nlohmann::ordered_json value);
+  /// A file written in place, outside the whole-or-nothing outputs, that stays when the run is
+  /// interrupted (a checkpoint): the interrupted run's record names it, `what` says what it holds.
+  void keep_on_interrupt(const std::filesystem::path& path, const std::string& what);
 
   /// Where the value of `option` ("--nu-st") came from, for a result that must say what it was
   /// computed from (mw-calibrate's targets): {"option", "given": "command line"}; or the --from
@@ -66,6 +69,7 @@ private:
   std::vector<prov::FileRecord> inputs_;
   std::vector<prov::MetricRecord> metrics_;
   nlohmann::ordered_json extra_params_ = nlohmann::ordered_json::object();
+  std::vector<std::string> kept_;  ///< keep_on_interrupt: "path (what)"
   struct FromFile {
     std::string path;  ///< as named on the command line
     io::QuantityFile content;

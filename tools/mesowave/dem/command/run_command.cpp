@@ -202,6 +202,7 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
   if (!v.checkpoint_path.empty() || !v.restart_path.empty()) {
     const auto written = [&](std::int64_t step) {
       run.param("checkpoint_step", step);  // recorded also when the run is interrupted
+      run.keep_on_interrupt(v.checkpoint_path, "a checkpoint at step " + std::to_string(step));
       if (app::interrupt_signal())
         std::cerr << "mw-dem: " << v.checkpoint_path.string() << " holds step " << step << "; continue with --restart\n";
     };
@@ -217,7 +218,8 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
     run.param("restarted_at_step", resumed_at);
   }
   const RunReport report = sim.run();
-  if (progress) progress->finish();
+  if (progress && report.stop_reason.empty()) progress->finish();
+  else if (progress) progress->finish_early(report.steps, report.stop_reason);
   write_direct_run(v, in.scene, report, snapshots, run, threads_reason);
 }
 
