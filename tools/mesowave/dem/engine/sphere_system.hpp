@@ -160,7 +160,7 @@ public:
 
   /// Runs kernel(slot, result) for every contact; call it from contact_forces
   /// (inside the step's parallel region). The kernel runs on chunks of
-  /// kChunk contacts as one vector loop (`omp simd`: it must not depend on
+  /// kChunk contacts as one vector loop (`GCC ivdep`: it must not depend on
   /// other contacts of the chunk); the results are then applied one by one in
   /// slot order: contacts inside a partition add their force to its spheres
   /// directly (one thread owns a partition, so no races and no atomics),
