@@ -30,7 +30,11 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
   const CohesiveFrictionalMaterial& material = system.material();
   const double two_E_dem = 2.0 * material.E_dem_Pa, ratio = material.stiffness_ratio;
   const double T = material.tensile_strength_Pa, C = material.cohesion_Pa;
-  const bool finite_T = std::isfinite(T), finite_C = std::isfinite(C);
+  // The strengths' and the energy's choices as 0/1 factors, not bools: the vectoriser cannot select
+  // on a scalar bool inside the vector loop (GCC 12 left the whole loop scalar).
+  const double T_ref = std::isfinite(T) ? T : 0.0, C_ref = std::isfinite(C) ? C : 0.0;
+  const double T_none = std::isfinite(T) ? 0.0 : 1.0, C_none = std::isfinite(C) ? 0.0 : 1.0;
+  const double energy_on = evaluate_energy ? 1.0 : 0.0;
   const double* radius = system.spheres().radius_m.data();
   const Vec3* d = system.positions();
   const Vec3* theta = system.rotations();
@@ -52,11 +56,13 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
     const double fs2 = norm2(fs);
     // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
     const double r_min = std::min(ri, rj);
-    const double sn = finite_T ? T * r_min * r_min : kn * r_min, ss = finite_C ? C * r_min * r_min : kn * r_min;
+    // (x + 0 and 1 x are exact: the same bits as choosing with a branch.)
+    const double sn = T_ref * r_min * r_min + T_none * (kn * r_min), ss = C_ref * r_min * r_min + C_none * (kn * r_min);
     r.ratio2 = std::max(fn * fn / (sn * sn), fs2 / (ss * ss));
     r.plastic = 0;
     // The shear spring acting on a0 P_t dd is a0 K_s (Yade's incident-velocity factor).
-    r.elastic = evaluate_energy ? 0.5 * fn * fn / kn + (ks > 0 ? 0.5 * fs2 / (a0 * ks) : 0.0) : 0.0;
+    const double shear_energy = 0.5 * fs2 / (a0 * ks);
+    r.elastic = energy_on * (0.5 * fn * fn / kn + (ks > 0 ? shear_energy : 0.0));
   });
 }
 

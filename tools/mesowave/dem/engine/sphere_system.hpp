@@ -160,7 +160,7 @@ public:
 
   /// Runs kernel(slot, result) for every contact; call it from contact_forces
   /// (inside the step's parallel region). The kernel runs on chunks of
-  /// kChunk contacts as one vector loop (`omp simd`: it must not depend on
+  /// kChunk contacts as one vector loop (`GCC ivdep`: it must not depend on
   /// other contacts of the chunk); the results are then applied one by one in
   /// slot order: contacts inside a partition add their force to its spheres
   /// directly (one thread owns a partition, so no races and no atomics),
@@ -177,6 +177,25 @@ public:
   static constexpr std::size_t kChunk = 32;
   static constexpr std::size_t kSphereBlock = 256;
   static constexpr std::size_t kSpheresPerPartition = 4096;
+
+  /// One chunk's results, one array per component (structure of arrays), so that the kernel's
+  /// vector loop stores each component of kChunk contacts with contiguous vector stores.
+  template <bool Moments>
+  struct ChunkResults {
+    double f[3][kChunk], c[3][kChunk], arm[2][kChunk], elastic[kChunk], plastic[kChunk], ratio2[kChunk];
+    double m[Moments ? 3 : 1][Moments ? kChunk : 1];
+    template <class Result>
+    __attribute__((always_inline)) void store(std::size_t q, const Result& r) {
+      f[0][q] = r.f.x, f[1][q] = r.f.y, f[2][q] = r.f.z;
+      c[0][q] = r.c.x, c[1][q] = r.c.y, c[2][q] = r.c.z;
+      arm[0][q] = r.arm[0], arm[1][q] = r.arm[1];
+      elastic[q] = r.elastic, plastic[q] = r.plastic, ratio2[q] = r.ratio2;
+      if constexpr (Moments) m[0][q] = r.m.x, m[1][q] = r.m.y, m[2][q] = r.m.z;
+    }
+    Vec3 force(std::size_t q) const { return {f[0][q], f[1][q], f[2][q]}; }
+    Vec3 torque_factor(std::size_t q) const { return {c[0][q], c[1][q], c[2][q]}; }
+    Vec3 moment(std::size_t q) const { return {m[0][q], m[1][q], m[2][q]}; }
+  };
 
 private:
   SphereSet spheres_;
@@ -226,34 +245,43 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel) {
     double elastic = 0, plastic = 0, peak2 = 0;
     Vec3* f = f_acc_.data();
     Vec3* t = t_acc_.data();
-    Result results[kChunk];
+    ChunkResults<moments> results;
     for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
       const std::size_t m = std::min(kChunk, end - chunk);
-#pragma omp simd
-      for (std::size_t q = 0; q < m; ++q) kernel(chunk + q, results[q]);
+      // The law runs on a private Result per contact, stored component by component into the chunk's
+      // arrays: only stores to separate arrays indexed by q let GCC vectorize this loop (a store of the
+      // whole struct into an array of structs kept it scalar: issue 17 item 3, docs/benchmarks.md).
+#pragma GCC ivdep
       for (std::size_t q = 0; q < m; ++q) {
-        const Result& r = results[q];
-        elastic += r.elastic;
-        plastic += r.plastic;
-        peak2 = std::max(peak2, r.ratio2);
+        Result r;
+        kernel(chunk + q, r);
+        results.store(q, r);
+      }
+      for (std::size_t q = 0; q < m; ++q) {
+        const Vec3 rf = results.force(q), rc = results.torque_factor(q);
+        const double arm0 = results.arm[0][q], arm1 = results.arm[1][q];
+        elastic += results.elastic[q];
+        plastic += results.plastic[q];
+        peak2 = std::max(peak2, results.ratio2[q]);
         const std::size_t b = chunk + q;
         if (interior) {
           const std::uint32_t i = first_[b], j = second_[b];
-          f[i] -= r.f;
-          f[j] += r.f;
-          t[i] -= r.arm[0] * r.c;
-          t[j] -= r.arm[1] * r.c;
+          f[i] -= rf;
+          f[j] += rf;
+          t[i] -= arm0 * rc;
+          t[j] -= arm1 * rc;
           if constexpr (moments) {
-            t[i] -= r.m;
-            t[j] += r.m;
+            const Vec3 rm = results.moment(q);
+            t[i] -= rm;
+            t[j] += rm;
           }
         } else {
           ContactOut& o = out_[b - cross_begin_];
-          o.f = r.f;
-          o.c = r.c;
-          o.arm[0] = r.arm[0];
-          o.arm[1] = r.arm[1];
-          if constexpr (moments) out_moment_[b - cross_begin_] = r.m;
+          o.f = rf;
+          o.c = rc;
+          o.arm[0] = arm0;
+          o.arm[1] = arm1;
+          if constexpr (moments) out_moment_[b - cross_begin_] = results.moment(q);
         }
       }
     }
