@@ -31,10 +31,11 @@
 # 23-26 s a law for the complete curve; the 2.5 mm grid would take about 10 min a law), the linear
 # strips at 10, 5 and 2.5 mm (13 s in all), the shock strips at 2, 1 and 0.5 mm (116 s in all, 100 s
 # of it the two 0.5 mm runs). The quick tree: the 10 mm beam (about 1.5 s a law), strips at 20 and
-# 10 mm, shock strips at 4 and 2 mm - about 4 s of tool time. The slab (one thread, load 9-11): 0.6 s at
-# 20 mm, 1.3 s at 15 mm, 15-31 s at 10 mm, 99 s at 7.5 mm (76 s of CPU; every crack change re-evaluates all shape
-# functions and runs Lanczos, so the cost follows the number of changes more than the steps); the quick
-# tree runs 20 and 15 mm (its figure 15 mm), the full one 15, 10 and 7.5 mm (its figure 7.5 mm).
+# 10 mm, shock strips at 4 and 2 mm - about 4 s of tool time. The slab (one thread, with the viscosity, load
+# 18): 0.5 s at 20 mm, 1.6 s at 15 mm, 9 s at 10 mm, 91 s at 7.5 mm (every crack change re-evaluates all shape
+# functions and runs Lanczos, so the cost follows the number of changes more than the steps; docs/efg.md "The
+# slab's time step, its spacing and its cost"); the quick tree runs 20 and 15 mm (its figure 15 mm), the full
+# one 15, 10 and 7.5 mm (its figure 7.5 mm), at the default step (0.9 of the stable one: not time-resolved).
 
 # Study prefix: SC (make variables SC_*, functions sc_*; scripts/new-study renames them).
 PIPELINE_GOALS += shock-concrete-summary

@@ -113,7 +113,7 @@ private:
   /// crack k's bounding box (min x, min y, max x, max y), kept by every change: a segment whose box misses it
   /// cannot cross or touch the crack (segments_cross is true only at a common point), so crosses() skips it.
   /// The shape functions ask crosses() for every node-point pair and every crack after each change
-  /// (docs/efg.md, "Where the slab's time goes"); the answer is the same, only sooner.
+  /// (docs/efg.md, "The slab's time step, its spacing and its cost"); the answer is the same, only sooner.
   void update_box(std::size_t k);
 
   std::vector<Crack> cracks_;
