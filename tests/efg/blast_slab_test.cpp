@@ -173,4 +173,9 @@ TEST(BlastSlab, BadInputIsOneLineNamingTheValue) {
   o.cracks.crack_speed_limit_m_s = 0;
   EXPECT_NE(input_error_of([&] { o.validate(); }).find("crack speed limit"), std::string::npos);
   for (const std::string& m : {input_error_of([&] { o.validate(); })}) EXPECT_EQ(m.find('\n'), std::string::npos);
+  o = small_slab();
+  o.dt_s = -1e-6;
+  EXPECT_NE(input_error_of([&] { o.validate(); }).find("time step (-1e-06 s)"), std::string::npos);
+  o.dt_s = 20e-6;  // the stable step of this slab is about 5 us (10 mm)
+  EXPECT_NE(input_error_of([&] { run_blast_slab(o); }).find("exceeds the stable step"), std::string::npos);
 }

@@ -48,6 +48,7 @@ BlastSlabOptions BlastCommandLine::resolve() const {
               gamma, fall_transits, peak_MPa * 1e6};
   o.duration_s = duration_us * 1e-6;
   o.dt_fraction = dt_fraction;
+  o.dt_s = dt_us * 1e-6;
   o.viscosity = {viscosity_quadratic, viscosity_linear};
   o.sample_stride = sample_stride;
   o.snapshot_stride = snapshot_stride == 0 && !snapshots.empty() ? 20 : snapshot_stride;
@@ -99,6 +100,9 @@ void add_blast_options(CLI::App& app, BlastCommandLine& v) {
       ->capture_default_str();
   app.add_option("--duration-us", v.duration_us, "Simulated time")->capture_default_str();
   app.add_option("--dt-fraction", v.dt_fraction, "Fraction of the stable step 2/omega_max, in (0, 1]")->capture_default_str();
+  app.add_option("--dt-us", v.dt_us,
+                 "Time step (0: --dt-fraction x the stable step; above the stable step: refused; shrunk as the law stiffens and cracks form)")
+      ->capture_default_str();
   add_viscosity_options(app, v.viscosity_quadratic, v.viscosity_linear);
   app.add_option("--sample-stride", v.sample_stride, "Steps between the energy CSV's rows")->capture_default_str();
   app.add_option("--cracks", v.cracks_csv, "Crack events CSV: t_us, crack, initiation, from_x_mm, from_y_mm, to_x_mm, to_y_mm, length_mm, speed_m_s, ...");

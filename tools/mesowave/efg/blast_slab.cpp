@@ -165,6 +165,8 @@ void BlastSlabOptions::validate() const {
     throw InputError("peak pressure (" + format_quantity(charge.peak_Pa, "Pa") + ") must be >= 0 (0: from the charge)");
   require_positive("duration", duration_s, "s");
   if (!(dt_fraction > 0 && dt_fraction <= 1)) throw InputError("dt fraction (" + format_number(dt_fraction) + ") must lie in (0, 1]");
+  if (!(std::isfinite(dt_s) && dt_s >= 0))
+    throw InputError("time step (" + format_quantity(dt_s, "s") + ") must be >= 0 (0: the fraction of the stable step)");
   if (sample_stride < 1) throw InputError("sample stride (" + std::to_string(sample_stride) + ") must be >= 1");
   if (snapshot_stride < 0) throw InputError("snapshot stride (" + std::to_string(snapshot_stride) + ") must be >= 0");
 }
@@ -221,6 +223,7 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
   DynamicsOptions d;
   d.duration_s = o.duration_s;
   d.dt_fraction = o.dt_fraction;
+  d.dt_s = o.dt_s;
   d.stiffness_check_every = o.stiffness_check_every;
   d.sample_stride = o.sample_stride;
   d.snapshot_stride = o.snapshot_stride;

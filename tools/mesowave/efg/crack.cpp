@@ -98,6 +98,8 @@ std::size_t CrackSet::add(Crack crack) {
                      " points, a crack needs at least 2");
   for (std::size_t i = 0; i + 1 < crack.points.size(); ++i) check_segment(crack.points[i], crack.points[i + 1], index);
   cracks_.push_back(std::move(crack));
+  boxes_.emplace_back();
+  update_box(index);
   ++version_;
   return index;
 }
@@ -115,6 +117,7 @@ void CrackSet::extend(std::size_t k, const Vec2& new_tip) {
     check_segment(new_tip, p.front(), k);
     p.insert(p.begin(), new_tip);
   }
+  update_box(k);
   ++version_;
 }
 
@@ -132,6 +135,7 @@ void CrackSet::extend_end(std::size_t k, bool at_end, const Vec2& new_point) {
     check_segment(new_point, p.front(), k);
     p.insert(p.begin(), new_point);
   }
+  update_box(k);
   ++version_;
 }
 
@@ -145,7 +149,18 @@ void CrackSet::close_tip(std::size_t k, bool at_end) {
 void CrackSet::restore(const CrackSet& earlier) {
   const std::uint64_t next = std::max(version_, earlier.version_) + 1;
   cracks_ = earlier.cracks_;
+  boxes_ = earlier.boxes_;
   version_ = next;
+}
+
+void CrackSet::update_box(std::size_t k) {
+  Eigen::Vector4d& b = boxes_[k];
+  const auto& p = cracks_[k].points;
+  b << p[0].x(), p[0].y(), p[0].x(), p[0].y();
+  for (const Vec2& q : p) {
+    b[0] = std::min(b[0], q.x()), b[1] = std::min(b[1], q.y());
+    b[2] = std::max(b[2], q.x()), b[3] = std::max(b[3], q.y());
+  }
 }
 
 const Vec2& CrackSet::tip(std::size_t k) const {
@@ -168,6 +183,10 @@ double CrackSet::distance(const Vec2& p) const {
 }
 
 bool CrackSet::crosses(std::size_t k, const Segment& s, const Vec2* tip) const {
+  const Eigen::Vector4d& b = boxes_[k];
+  if (std::max(s.a.x(), s.b.x()) < b[0] || std::min(s.a.x(), s.b.x()) > b[2] || std::max(s.a.y(), s.b.y()) < b[1] ||
+      std::min(s.a.y(), s.b.y()) > b[3])
+    return false;  // no common point with the crack's box: no crossing, no touching (update_box)
   const auto& p = cracks_[k].points;
   for (std::size_t i = 0; i + 1 < p.size(); ++i) {
     // A segment ending at the tip may be touched there (the bent path of diffraction).

@@ -110,7 +110,14 @@ private:
   bool crosses(std::size_t k, const Segment& s, const Vec2* tip = nullptr) const;
   bool path_clear(const Segment& s, const Vec2& tip) const;
 
+  /// crack k's bounding box (min x, min y, max x, max y), kept by every change: a segment whose box misses it
+  /// cannot cross or touch the crack (segments_cross is true only at a common point), so crosses() skips it.
+  /// The shape functions ask crosses() for every node-point pair and every crack after each change
+  /// (docs/efg.md, "The slab's time step, its spacing and its cost"); the answer is the same, only sooner.
+  void update_box(std::size_t k);
+
   std::vector<Crack> cracks_;
+  std::vector<Eigen::Vector4d> boxes_;
   std::uint64_t version_ = 0;
 };
 

@@ -348,14 +348,23 @@ bool DynamicCracks::advance(double t_s, Eigen::VectorXd& u, Eigen::VectorXd& v, 
   const std::vector<Critical> critical = critical_points(states);
   if (critical.empty()) return false;
   bool changed = false;
+  // The energies before a change depend only on u and the state, which an attempt changes only when it
+  // is kept: computed once per kept state, not per attempt (most attempts - every tip, every critical
+  // point - change nothing). The same sums in the same order as before, so the same bits.
+  bool have_before = false;
+  double stored_before = 0, dissipated_before = 0, e_before = 0;
   // one change at a time, each kept only if every point still gets shape functions (see the header)
   const auto attempt = [&](const auto& change, std::int64_t point) {
+    if (!have_before) {
+      stored_before = stored_J(u), dissipated_before = dissipated_J();
+      e_before = 0.5 * u.dot(model_->internal_force(u)) + stored_before + dissipated_before;
+      have_before = true;
+    }
+    // what to restore from; a change only appends face points (add_face_segment), so their count is enough
     const CrackSet cracks_before = *cracks_;
-    const auto points_before = points_;
+    const std::size_t points_before = points_.size();
     const auto tips_before = tips_;
     const std::size_t events_before = events_.size(), laws_before = laws_.size();
-    const double bulk_before = 0.5 * u.dot(model_->internal_force(u)), stored_before = stored_J(u), dissipated_before = dissipated_J();
-    const double e_before = bulk_before + stored_before + dissipated_before;
     if (!change()) return;
     std::vector<ShapeFunctions> shape_before;  // the change moved the CrackSet only: these are still the old ones
     if (o_.project_fields != FieldProjection::none) shape_before = model_->shape_functions();
@@ -363,16 +372,17 @@ bool DynamicCracks::advance(double t_s, Eigen::VectorXd& u, Eigen::VectorXd& v, 
       refresh();
       if (o_.project_fields != FieldProjection::none) project(shape_before, t_s, u, v);
       // the new faces start at the jump the cut approximation shows there (header: w_birth)
-      for (std::size_t k = points_before.size(); k < points_.size(); ++k) points_[k].w_birth_m = opening_m(k, u);
+      for (std::size_t k = points_before; k < points_.size(); ++k) points_[k].w_birth_m = opening_m(k, u);
       // older faces whose opening the cut moved past their history: committed now, into the jump
-      for (std::size_t k = 0; k < points_before.size(); ++k) points_[k].w_hist_m = std::max(points_[k].w_hist_m, opening_m(k, u));
+      for (std::size_t k = 0; k < points_before; ++k) points_[k].w_hist_m = std::max(points_[k].w_hist_m, opening_m(k, u));
       const double stored_after = stored_J(u), dissipated_after = dissipated_J();
       energy_jump_J_ += 0.5 * u.dot(model_->internal_force(u)) + stored_after + dissipated_after - e_before;
       faces_jump_J_ += stored_after + dissipated_after - (stored_before + dissipated_before);
       changed = true;
+      have_before = false;  // a new state: the next attempt's energies are its own
     } catch (const InputError&) {
       cracks_->restore(cracks_before);  // a new version: the model recomputes what it had
-      points_ = points_before;
+      points_.resize(points_before);  // the older points' shape functions: the refresh below recomputes them
       tips_ = tips_before;
       events_.resize(events_before);
       laws_.resize(laws_before);

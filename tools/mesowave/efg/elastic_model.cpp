@@ -109,17 +109,17 @@ void ElasticModel::build_pattern() {
         }
     std::sort(neighbours[j].begin(), neighbours[j].end());
   }
-  pattern_ = Eigen::SparseMatrix<double>(Eigen::Index(2 * nodes), Eigen::Index(2 * nodes));
-  Eigen::VectorXi per_column(Eigen::Index(2 * nodes));
-  for (std::size_t j = 0; j < nodes; ++j) per_column[Eigen::Index(2 * j)] = per_column[Eigen::Index(2 * j + 1)] = int(2 * neighbours[j].size());
-  pattern_.reserve(per_column);
+  // The compressed arrays written directly (columns 2j, 2j+1 hold rows 2i, 2i+1 of every neighbour i,
+  // ascending): the same pattern as inserting entry by entry, which took a quarter of a cracked run's time.
+  std::vector<int> outer(2 * nodes + 1, 0), inner;
   for (std::size_t j = 0; j < nodes; ++j)
-    for (int c = 0; c < 2; ++c)
-      for (std::int32_t i : neighbours[j]) {  // ascending rows: inserted at each column's end
-        pattern_.insert(2 * Eigen::Index(i), Eigen::Index(2 * j) + c) = 0.0;
-        pattern_.insert(2 * Eigen::Index(i) + 1, Eigen::Index(2 * j) + c) = 0.0;
-      }
-  pattern_.makeCompressed();
+    for (int c = 0; c < 2; ++c) {
+      for (std::int32_t i : neighbours[j]) inner.push_back(2 * i), inner.push_back(2 * i + 1);
+      outer[2 * j + std::size_t(c) + 1] = int(inner.size());
+    }
+  const std::vector<double> zeros(inner.size(), 0.0);
+  pattern_ = Eigen::Map<const Eigen::SparseMatrix<double>>(Eigen::Index(2 * nodes), Eigen::Index(2 * nodes),
+                                                           Eigen::Index(inner.size()), outer.data(), inner.data(), zeros.data());
 }
 
 Eigen::SparseMatrix<double> ElasticModel::stiffness() const {

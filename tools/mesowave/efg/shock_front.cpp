@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
 
 namespace mesowave::efg {
 
@@ -38,8 +40,52 @@ double arrival_time(const WaveStripResult& r, std::size_t k, double level) {
   return kNaN;
 }
 
+double bar_1d_shock_speed(const CompressionLaw& law, double rho, const TriangularPulse& pulse, double length_m,
+                          double duration_s, double x_a, double x_b, double level, const BarShockSpeedOptions& bar) {
+  const double h = bar.spacing_m;
+  if (!(h > 0) || !(length_m >= 4 * h))
+    throw InputError("1D bar: cell length " + format_quantity(h, "m") + " must be > 0 and at most a quarter of the length " +
+                     format_quantity(length_m, "m"));
+  if (!(x_a >= h && x_a < x_b && x_b <= length_m - 2 * h))
+    throw InputError("1D bar: stations " + format_quantity(x_a, "m") + ", " + format_quantity(x_b, "m") +
+                     " must be ascending and inside the bar");
+  bar.viscosity.validate();
+  const double M = law.tangent_Pa(0), C0 = bar.viscosity.quadratic, C1 = bar.viscosity.linear;
+  const auto n = std::size_t(std::lround(length_m / h));
+  std::vector<double> u(n + 1, 0.0), v(n + 1, 0.0), m(n + 1, rho * h), p(n, 0.0);
+  m.front() = m.back() = 0.5 * rho * h;
+  const auto pressure = [&](double s) { return s > 0 ? law.pressure_Pa(s) : M * s; };
+  const auto station = [&](double x) {  // -sigma_xx at x, linear between cell centres
+    const double f = x / h - 0.5;
+    const auto j = std::size_t(std::floor(f));
+    const double w = f - double(j);
+    const double sj = -(u[j + 1] - u[j]) / h, sk = -(u[j + 2] - u[j + 1]) / h;
+    return (1 - w) * pressure(sj) + w * pressure(sk);
+  };
+  double t = 0, ta = -1, tb = -1, pa = 0, pb = 0;
+  while (t < duration_s && tb < 0) {
+    double dt = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < n; ++j) {
+      const double s = -(u[j + 1] - u[j]) / h, rate = -(v[j + 1] - v[j]) / h;
+      const double c = std::sqrt((s > 0 ? law.tangent_Pa(s) : M) / rho);
+      const double Q = rate > 0 ? C1 * c + C0 * h * rate : 0.0;
+      dt = std::min(dt, 0.5 * h / (Q + std::sqrt(Q * Q + c * c)));
+      p[j] = pressure(s) + (rate > 0 ? rho * h * Q * rate : 0.0);  // q = rho h (C_0 h s_dot + C_1 c) s_dot
+    }
+    const double load = pulse(t);
+    for (std::size_t i = 0; i <= n; ++i) v[i] += dt * ((i == 0 ? load : p[i - 1]) - (i == n ? 0.0 : p[i])) / m[i];
+    for (std::size_t i = 0; i <= n; ++i) u[i] += dt * v[i];
+    t += dt;
+    const double qa = station(x_a), qb = station(x_b);
+    if (ta < 0 && qa >= level) ta = t - dt * (qa - level) / (qa - pa);
+    if (tb < 0 && qb >= level) tb = t - dt * (qb - level) / (qb - pb);
+    pa = qa, pb = qb;
+  }
+  return ta >= 0 && tb > ta ? (x_b - x_a) / (tb - ta) : kNaN;
+}
+
 ShockFrontComparison compare_front_with_characteristics(const WaveStripOptions& o, const WaveStripResult& r,
-                                                        const CompressionLaw& law) {
+                                                        const CompressionLaw& law, const BarShockSpeedOptions* bar) {
   if (o.pulse != "triangular" || o.custom)
     throw InputError("the characteristics' reference needs the triangular pulse (--pulse triangular)");
   const TriangularPulse& pulse = o.triangular;
@@ -89,6 +135,12 @@ ShockFrontComparison compare_front_with_characteristics(const WaveStripOptions& 
     if (dt > 0) c.shock_speed_m_s = (r.sensors[m - 1].x.x() - r.sensors[m - 2].x.x()) / dt;
   }
   c.jump_speed_m_s = shock_speed_m_s(law, rho, c.s_lo, c.s_hi);
+  c.bar_speed_m_s = kNaN;
+  if (bar && std::isfinite(c.shock_speed_m_s)) {
+    c.bar_spacing_m = bar->spacing_m;
+    c.bar_speed_m_s = bar_1d_shock_speed(law, rho, pulse, o.length_m, o.dynamics.duration_s, r.sensors[m - 2].x.x(),
+                                         r.sensors[m - 1].x.x(), c.speed_level_Pa, *bar);
+  }
   return c;
 }
 

@@ -11,13 +11,19 @@
 //    characteristics have crossed yet) fitted by a line give the measured x_meet, t_meet;
 //  - past it the front is a shock: its speed between the last two sensors, when both lie past
 //    x_meet (the level midway between p_lo and p_hi timed), against the jump condition
-//    U^2 = (p_hi - p_lo) / (rho (s_hi - s_lo)).
+//    U^2 = (p_hi - p_lo) / (rho (s_hi - s_lo)) between those FIXED levels, and against a second
+//    method, a fine 1D bar of the same law (bar_1d_shock_speed below). The fixed-level jump condition
+//    is not the continuum's speed where the last sensors lie (docs/efg.md "Shock viscosity": for the
+//    Y-function the pulse's peak characteristic catches the shock near 100 mm and the pulse's fall
+//    then eats it; the smooth law's shock is still growing there), so the bar is the reference the
+//    study reads (shock_speed_over_bar); the jump condition stays beside it, named as what it is.
 // The levels: p_hi = 0.9 p_max; p_lo = the larger of 0.1 p_max and the pressure where the law's
 // tangent is least on [0, s(p_max)] (the Y-function's dip: levels below it travel in a spreading
 // fan, not in the steepening front).
 #include <vector>
 
 #include "mesowave/efg/characteristics.hpp"
+#include "mesowave/efg/explicit_dynamics.hpp"
 #include "mesowave/efg/wave_strip.hpp"
 
 namespace mesowave::efg {
@@ -40,14 +46,39 @@ struct ShockFrontComparison {
   double speed_level_Pa = 0;       ///< the level timed for it
   double jump_speed_m_s = 0;       ///< U of the jump condition between s_lo and s_hi
   double c_0_m_s = 0;              ///< sqrt(f'(0) / rho)
+  /// the 1D bar's speed of speed_level_Pa between the same two sensors (bar_1d_shock_speed; NaN: the
+  /// strip's speed not measured, the bar's level not reached, or no bar asked for)
+  double bar_speed_m_s = 0;
+  double bar_spacing_m = 0;        ///< its cell length (0: no bar)
 };
+
+/// The second method for the shock speed: the strip's uniaxial-strain bar as a 1D Lagrangian column
+/// of the same law p = f(s) (cells of h, nodal masses rho h, halves at the ends; staggered central
+/// differences; p = M s in tension, M = f'(0)), loaded by `pulse` on x = 0 and free at x = L, with the
+/// von Neumann-Richtmyer viscosity q = rho h (C_0 h s_dot^2 + C_1 c s_dot) in compression (c = sqrt(f'(s)
+/// / rho)) and its own step 0.5 h / (Q + sqrt(Q^2 + c^2)), Q = C_1 c + C_0 h s_dot (LS-DYNA's bound,
+/// halved). Undamped the bar blows up at the shock, so it always carries q; the shock's speed does not
+/// depend on q, only its width (docs/efg.md "Shock viscosity": 2385.3 / 2385.9 m/s with C_0 = 1.5 / 3 at
+/// h = 0.1 mm for the study's Y-function strip, 2383.9 / 2385.3 / 2386.0 / 2386.3 m/s at h = 0.2 / 0.1 /
+/// 0.05 / 0.025 mm). Returns the speed (x_b - x_a) / (t_b - t_a) of the level `level_Pa` of -sigma_xx
+/// (interpolated between cell centres and in time) between the stations x_a < x_b; NaN when the level
+/// does not reach x_b within `duration_s`. InputError: h, the length or the stations out of range.
+struct BarShockSpeedOptions {
+  double spacing_m = 0.2e-3;              ///< h (5-10 times finer than the study's strips)
+  BulkViscosity viscosity{1.5, 0.06};     ///< LS-DYNA's C_0, C_1
+};
+double bar_1d_shock_speed(const CompressionLaw& law, double rho_kg_m3, const TriangularPulse& pulse, double length_m,
+                          double duration_s, double x_a_m, double x_b_m, double level_Pa,
+                          const BarShockSpeedOptions& bar = {});
 
 /// The first time -sigma_xx at sensor k reaches `level` [Pa], linear between samples (NaN: never).
 double arrival_time(const WaveStripResult& r, std::size_t k, double level_Pa);
 
 /// The comparison above for the strip run `r` of options `o` (its triangular pulse and density)
 /// with the uniaxial-strain law `law`. InputError unless o.pulse is triangular and starts at 0.
+/// `bar`: also the 1D bar's speed of the same level between the same sensors (null: none; a law that
+/// unloads on another path than `law` has no such bar).
 ShockFrontComparison compare_front_with_characteristics(const WaveStripOptions& o, const WaveStripResult& r,
-                                                        const CompressionLaw& law);
+                                                        const CompressionLaw& law, const BarShockSpeedOptions* bar = nullptr);
 
 }  // namespace mesowave::efg

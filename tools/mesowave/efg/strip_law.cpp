@@ -35,6 +35,7 @@ const std::map<std::string, StripLawEntry>& strip_laws() {
           law.point = std::make_unique<HugoniotElastic>(m, p.hugoniot);
           law.compression = std::make_unique<HugoniotCompression>(m.D()(0, 0), p.hugoniot);
           law.nonlinear = true;
+          law.unloads = p.hugoniot.unloading;
           return law;
         }}},
   };

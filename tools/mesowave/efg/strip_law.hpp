@@ -33,6 +33,9 @@ struct StripLaw {
   std::unique_ptr<PointMaterial> point;           ///< the explicit solver's law at a Gauss point
   std::unique_ptr<CompressionLaw> compression;    ///< the same under uniaxial strain, p = f(s)
   bool nonlinear = false;                         ///< false: the linear law (no shock forms)
+  /// true: the point law unloads on another path than `compression` (hugoniot with Eq. (27)), so a
+  /// 1D bar of `compression` is not the same material behind the front (efg/shock_front's bar reference)
+  bool unloads = false;
 };
 
 struct StripLawEntry {

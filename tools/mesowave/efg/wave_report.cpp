@@ -157,7 +157,10 @@ nlohmann::ordered_json front_json(const ShockFrontComparison& c) {
           {"speed_level_MPa", c.speed_level_Pa * 1e-6},
           {"shock_speed_m_s", num(c.shock_speed_m_s)},
           {"jump_speed_m_s", c.jump_speed_m_s},
-          {"shock_speed_over_jump", num(c.shock_speed_m_s / c.jump_speed_m_s)}};
+          {"shock_speed_over_jump", num(c.shock_speed_m_s / c.jump_speed_m_s)},
+          {"bar_1d_spacing_mm", c.bar_spacing_m * 1e3},
+          {"bar_1d_speed_m_s", num(c.bar_speed_m_s)},
+          {"shock_speed_over_bar", num(c.shock_speed_m_s / c.bar_speed_m_s)}};
 }
 
 }  // namespace
@@ -215,7 +218,9 @@ WaveOutputs wave_strip_outputs(const WaveStripOptions& o, const WaveStripResult&
                {"stable_dt", d.stable.dt_critical_s * 1e6, "us"}, {"wall", d.wall_s, "s"}};
   const bool linear = !law || !law->nonlinear;
   if (!linear && o.pulse == "triangular" && !o.custom && o.triangular.start_s == 0) {
-    const ShockFrontComparison c = compare_front_with_characteristics(o, r, *law->compression);
+    // the 1D bar of the same law: the shock speed's reference (shock_front.hpp), not for a law that unloads
+    const BarShockSpeedOptions bar;
+    const ShockFrontComparison c = compare_front_with_characteristics(o, r, *law->compression, law->unloads ? nullptr : &bar);
     w.summary["characteristics"] = front_json(c);
     w.front_header = {"sensor", "x_mm", "width_us", "simple_wave_width_us", "before_breaking"};
     const auto cell = [](double v) { return std::isfinite(v) ? format_significant(v, 4) : std::string(); };  // "": not reached
