@@ -13,7 +13,6 @@
 #include "mesowave/dem/engine/run_report.hpp"
 #include "mesowave/dem/engine/sphere_set.hpp"
 #include "mesowave/dem/loading/force_actuator.hpp"
-#include "mesowave/signal/correlation.hpp"
 #include "mesowave/signal/hann_burst.hpp"
 #include "mesowave/signal/superposition.hpp"
 
