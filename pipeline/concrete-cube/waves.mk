@@ -26,7 +26,7 @@
 # the early references all from one run on the finest mesh, h(highest frequency):
 # at least as converged as h(f) for every f (a finer mesh changes them only by the
 # coarser mesh's discretisation error, measured there), and the cheapest choice -
-# every group that holds the highest frequency costs that mesh's run, which is 40 %
+# every group that holds the highest frequency costs that mesh's run, which is 38 %
 # of the nine meshes' (the cost goes as h^-4 = f^4).
 
 CC_SCENE := $(CC_NOTES)/scenes/cube-wave.toml
