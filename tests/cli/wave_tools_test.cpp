@@ -185,3 +185,44 @@ TEST(MwDispersion, BarEchoOnTheRealHopkinsonBarRecord) {
   EXPECT_NEAR(value("fitted_c0_m_s") / 5188.7, 1.0, 0.015);
   EXPECT_LT(value("echo_over_pulse_amplitude"), 0);  // the echo from the soft specimen is tensile
 }
+
+TEST(MwFem, FrequenciesFromOneRunWriteTheDirectRunsSignalsAndNothingOnBadInput) {
+  // mw-fem box --frequencies-kHz (fem/superposition.hpp) against a direct --frequency-kHz run: the same
+  // signals to round-off in each frequency's file, every report saying how they were made.
+  TempDir dir;
+  const std::vector<std::string> box = with(with({"box"}, {"--E-GPa", "36.67", "--nu", "0.162", "--density-kg-m3", "2129.56"}),
+                                            {"--size-mm", "8", "--mesh-mm", "1", "--source-mm", "4,4,0", "--sensor",
+                                             "B=4,4,8", "--sensor", "C=0,4,4", "--duration-ms", "0.03", "--quiet"});
+  const auto direct = run_tool("mw-fem", with(box, {"--frequency-kHz", "200", "--signals", (dir / "d.h5").string()}));
+  ASSERT_EQ(direct.exit_status, 0) << direct.err;
+  const auto r = run_tool("mw-fem", with(box, {"--frequencies-kHz", "100,200", "--signals-pattern",
+                                               (dir / "s-{f}kHz.h5").string(), "--out-pattern",
+                                               (dir / "s-{f}kHz.json").string()}));
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"method\": \"superposition\""), std::string::npos) << r.out;
+  const auto d = signal::read_signal_file(dir / "d.h5"), s = signal::read_signal_file(dir / "s-200kHz.h5");
+  ASSERT_EQ(d.size(), 3u);  // B, C, the excitation
+  ASSERT_EQ(s.size(), d.size());
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    ASSERT_EQ(s[i].name, d[i].name);
+    ASSERT_EQ(s[i].size(), d[i].size());
+    double peak = 0, diff = 0;
+    for (std::size_t k = 0; k < d[i].size(); ++k)
+      peak = std::max(peak, std::abs(d[i].samples[k])), diff = std::max(diff, std::abs(s[i].samples[k] - d[i].samples[k]));
+    EXPECT_GT(peak, 0) << d[i].name;
+    EXPECT_LT(diff, 1e-10 * peak) << d[i].name;
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir / "s-100kHz.h5"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "s-100kHz.json"));
+
+  TempDir empty;
+  for (const auto& bad : {with(box, {"--frequencies-kHz", "100", "--signals-pattern", (empty / "one.h5").string()}),
+                          with(box, {"--frequencies-kHz", "100,100", "--signals-pattern", (empty / "{f}.h5").string()}),
+                          with(box, {"--frequencies-kHz", "100", "--signals", (empty / "x.h5").string(),
+                                     "--signals-pattern", (empty / "{f}.h5").string()})}) {
+    const auto e = run_tool("mw-fem", bad);
+    EXPECT_EQ(e.exit_status, 1) << e.err;
+    EXPECT_EQ(e.err.rfind("error: ", 0), 0u) << e.err;
+  }
+  EXPECT_EQ(mesowave::test::count_files(empty.path()), 0u);
+}

@@ -321,7 +321,13 @@ FemRun run_fem_case(const FemSetup& setup, const std::function<void(std::int64_t
   // descheduled thread stalls the others, so the default leaves busy cores alone.
   FemRun run{{}, use_threads(setup.spec.threads, {model.element_count(), opt.min_elements_per_thread, "elements"}), {}};
   run.result = run_explicit(model, setup.load, setup.probes, opt, setup.spacetime ? &*setup.spacetime : nullptr);
+  complete_fem_run(setup, run);
+  return run;
+}
 
+void complete_fem_run(const FemSetup& setup, FemRun& run) {
+  const FemModel& model = setup.model;
+  const Stepping& stepping = setup.stepping;
   // The excitation, sampled like the signals, travels with them.
   const signal::HannBurst& burst = setup.load.burst;
   signal::Signal excitation;
@@ -338,7 +344,6 @@ FemRun run_fem_case(const FemSetup& setup, const std::function<void(std::int64_t
                     {"alpha_damping_per_s", format_number(setup.spec.alpha_damping_per_s)},
                     {"burst_frequency_Hz", format_exact(burst.centre_frequency_hz())},
                     {"burst_cycles", format_exact(burst.cycles())}};
-  return run;
 }
 
 nlohmann::ordered_json fem_report(const FemSetup& setup, const FemRun& run, double peak_rss_MiB,

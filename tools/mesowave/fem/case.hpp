@@ -133,6 +133,10 @@ struct FemRun {
 };
 /// Runs it on the threads of core/threads.hpp's rule (at least 4000 elements a thread).
 FemRun run_fem_case(const FemSetup& setup, const std::function<void(std::int64_t)>& progress = {});
+/// What every run's record carries besides the probes' signals (run_fem_case's and
+/// superpose_fem's alike): the excitation signal (the burst, sampled like them) and the
+/// signal file's attributes.
+void complete_fem_run(const FemSetup& setup, FemRun& run);
 
 /// The run's JSON report: model, mesh, stable step, stepping, threads and why, cost.
 nlohmann::ordered_json fem_report(const FemSetup& setup, const FemRun& run, double peak_rss_MiB,

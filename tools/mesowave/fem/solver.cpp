@@ -208,7 +208,7 @@ ExplicitResult run_explicit(const FemModel& model, const BurstLoad& load, const 
     const auto tap_begin = std::lower_bound(taps.begin(), taps.end(), b, [](const Tap& t, std::size_t d) { return t.dof < d; });
     const auto tap_end = std::lower_bound(taps.begin(), taps.end(), e, [](const Tap& t, std::size_t d) { return t.dof < d; });
     for (std::int64_t n = 0; n <= opt.steps; ++n) {
-      const double F = load.burst(double(n) * dt);
+      const double F = opt.unit_impulse ? (n == 0 ? 1.0 : 0.0) : load.burst(double(n) * dt);
       A.add(u.data(), f.data());  // ends with a barrier: f = K u^n complete
       if (n % opt.sample_stride == 0) {
         const auto k = std::size_t(n / opt.sample_stride);

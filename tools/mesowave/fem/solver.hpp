@@ -57,6 +57,9 @@ struct ExplicitOptions {
   /// run and is rethrown once the threads have left the loop (an interrupted run's stop).
   std::function<void(std::int64_t)> progress;
   bool allow_unstable = false;       ///< tests only: run above the stable step to watch it diverge
+  /// Superposition (fem/superposition.hpp): the load's weights carry 1 N on step 0 alone
+  /// (F^0 = 1, F^n = 0 after), the load's burst unused - the impulse response of every probe.
+  bool unit_impulse = false;
   /// Threads used: at most one per this many elements (and at most OpenMP's maximum;
   /// core/threads.hpp), so that small meshes do not pay for barriers they cannot amortise.
   std::size_t min_elements_per_thread = 4000;

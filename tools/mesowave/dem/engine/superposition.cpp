@@ -13,8 +13,8 @@
 #include "mesowave/dem/engine/run_report.hpp"
 #include "mesowave/dem/engine/sphere_set.hpp"
 #include "mesowave/dem/loading/force_actuator.hpp"
-#include "mesowave/signal/correlation.hpp"
 #include "mesowave/signal/hann_burst.hpp"
+#include "mesowave/signal/superposition.hpp"
 
 namespace mesowave::dem {
 namespace {
@@ -135,25 +135,17 @@ SuperposedRun superpose(const ImpulseResponses& h, const Scene& scene, double fr
   const double r_step = std::sqrt((1.0 - half) / (1.0 + half)), s_factor = std::sqrt(1.0 - half * half);
   out.viscous_damping_1_s = c;
   // The force of every step, as ForceActuator applies it (burst_force_N at t_n = n dt).
-  std::vector<std::vector<double>> force(scene.actuators.size());
-  std::vector<std::int64_t> first(force.size(), 0), last(force.size(), -1);  // the nonzero span
-  for (std::size_t a = 0; a < force.size(); ++a) {
+  std::vector<signal::ForceHistory> histories;
+  for (std::size_t a = 0; a < scene.actuators.size(); ++a) {
     const ActuatorSpec& spec = scene.actuators[a];
     const signal::HannBurst burst(frequency_hz, spec.cycles, spec.amplitude, spec.delay_s);
-    force[a].assign(std::size_t(steps), 0.0);
-    double l1 = 0;
-    for (std::int64_t n = 0; n < steps; ++n) {
-      const double f = burst_force_N(burst, double(n) * dt);
-      force[a][std::size_t(n)] = f;
-      if (f != 0) {
-        if (last[a] < 0) first[a] = n;
-        last[a] = n;
-      }
-      l1 += std::abs(f);
-    }
-    out.force_l1_N += l1;
-    out.triangle_bound += l1 * h.impulse_peak_force_ratio[a];
+    histories.push_back(signal::force_history([&burst](double t) { return burst_force_N(burst, t); }, dt, steps));
+    out.force_l1_N += histories.back().l1_N;
+    out.triangle_bound += histories.back().l1_N * h.impulse_peak_force_ratio[a];
   }
+  std::vector<std::vector<double>> force;
+  std::vector<std::int64_t> first, last;  // the nonzero span
+  for (const auto& g : histories) force.push_back(g.force_N), first.push_back(g.first), last.push_back(g.last);
   // The work of the bursts: each actuator's velocity v_{k+1/2} = sum_c sum_j f_c,j hv_{c->a, k-j}, needed only
   // where some force is not zero (W changes only there).
   double work = 0;
@@ -202,37 +194,17 @@ SuperposedRun superpose(const ImpulseResponses& h, const Scene& scene, double fr
     signal::Signal sig = h.layout[s];
     const std::int64_t every = h.interval_steps[s];
     const std::int64_t samples = (steps - 1) / every + 1;
-    sig.samples.assign(std::size_t(samples), 0.0);
-    double* y = sig.samples.data();
+    std::vector<signal::ConvolutionTerm> terms;
+    for (std::size_t a = 0; a < histories.size(); ++a)
+      terms.push_back({&histories[a], c == 0 ? h.response[a][s] : h.displacement[a][s]});
     if (c == 0) {
-      // Each output is its own sum in a fixed order: the same bits for any thread count.
-#pragma omp parallel for schedule(static)
-      for (std::int64_t m = 0; m < samples; ++m) {
-        const std::int64_t n = m * every;
-        double sum = 0;
-        for (std::size_t a = 0; a < force.size(); ++a) {
-          const double* f = force[a].data();
-          const double* resp = h.response[a][s].data();
-          const std::int64_t end = std::min(last[a], n);
-          for (std::int64_t k = first[a]; k <= end; ++k) sum += f[k] * resp[n - k];
-        }
-        y[m] = sum;
-      }
+      sig.samples = signal::convolve_sampled(terms, every, samples);
     } else {
       // The damped displacement after every step, then the sensor's quantity by the leapfrog's differences.
-      std::vector<double> x(std::size_t(steps), 0.0);
-#pragma omp parallel for schedule(static)
-      for (std::int64_t n = 0; n < steps; ++n) {
-        double sum = 0;
-        for (std::size_t a = 0; a < force.size(); ++a) {
-          const double* f = force[a].data();
-          const double* resp = h.displacement[a][s].data();
-          const std::int64_t end = std::min(last[a], n);
-          for (std::int64_t k = first[a]; k <= end; ++k) sum += f[k] * (window[std::size_t(n - k)] * resp[n - k]);
-        }
-        x[std::size_t(n)] = sum;
-      }
+      const std::vector<double> x = signal::convolve_sampled(terms, 1, steps, window);
       auto at = [&](std::int64_t n) { return n >= 0 ? x[std::size_t(n)] : 0.0; };  // x_{n+1}; x_0 = x_{-1} = 0
+      sig.samples.assign(std::size_t(samples), 0.0);
+      double* y = sig.samples.data();
       for (std::int64_t m = 0; m < samples; ++m) {
         const std::int64_t n = m * every;
         if (sig.quantity == "displacement") y[m] = at(n);
@@ -244,30 +216,6 @@ SuperposedRun superpose(const ImpulseResponses& h, const Scene& scene, double fr
   }
   out.convolution_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
-}
-
-SuperpositionError superposition_error(const std::vector<signal::Signal>& direct,
-                                       const std::vector<signal::Signal>& superposed) {
-  if (direct.size() != superposed.size())
-    throw InputError("superposition check: " + std::to_string(direct.size()) + " direct signals against " +
-                     std::to_string(superposed.size()) + " superposed");
-  SuperpositionError e;
-  for (std::size_t s = 0; s < direct.size(); ++s) {
-    const signal::Signal &d = direct[s], &p = superposed[s];
-    if (d.name != p.name || d.size() != p.size() || d.dt_s != p.dt_s || d.t0_s != p.t0_s)
-      throw InputError("superposition check: sensor " + d.name + " and " + p.name + " do not share a time base");
-    double peak = 0, diff = 0;
-    for (std::size_t i = 0; i < d.size(); ++i) {
-      peak = std::max(peak, std::abs(d.samples[i]));
-      diff = std::max(diff, std::abs(p.samples[i] - d.samples[i]));
-    }
-    e.sensors.push_back(d.name);
-    e.pcc.push_back(signal::pearson(d.samples, p.samples, "sensor " + d.name));
-    e.max_diff_over_peak.push_back(peak > 0 ? diff / peak : diff);
-    e.min_pcc = std::min(e.min_pcc, e.pcc.back());
-    e.max_diff_over_peak_all = std::max(e.max_diff_over_peak_all, e.max_diff_over_peak.back());
-  }
-  return e;
 }
 
 nlohmann::ordered_json to_json(const SuperpositionCheck& check) {
@@ -351,16 +299,7 @@ nlohmann::ordered_json superposition_summary(const ImpulseResponses& h, const Su
 
 SuperposedSet run_superposed(const Scene& scene, const Packing& packing, const SimulationOptions& options,
                              const std::vector<double>& frequencies_kHz, const std::vector<double>& check_kHz) {
-  if (frequencies_kHz.empty()) throw InputError("--frequencies-kHz names no frequency");
-  for (std::size_t i = 0; i < frequencies_kHz.size(); ++i) {
-    require_positive("--frequencies-kHz", frequencies_kHz[i], "kHz");
-    for (std::size_t j = 0; j < i; ++j)
-      if (frequencies_kHz[j] == frequencies_kHz[i])
-        throw InputError("--frequencies-kHz names " + format_number(frequencies_kHz[i]) + " kHz twice");
-  }
-  for (double c : check_kHz)
-    if (std::find(frequencies_kHz.begin(), frequencies_kHz.end(), c) == frequencies_kHz.end())
-      throw InputError("--check-kHz (" + format_number(c) + " kHz) must be one of --frequencies-kHz");
+  signal::check_frequencies(frequencies_kHz, check_kHz);
   SuperposedSet set;
   set.responses = impulse_responses(scene, packing, options);
   std::vector<SuperposedRun> runs;
@@ -408,19 +347,6 @@ SuperposedSet run_superposed(const Scene& scene, const Packing& packing, const S
   set.summary["peak_force_ratio"] = nullptr;  // one per frequency: "frequencies"
   for (auto& a : set.summary["actuator_loads"]) a["frequency_hz"] = nullptr;
   return set;
-}
-
-std::string frequency_text(double frequency_hz) { return format_number(frequency_hz / units::kHz); }
-
-std::filesystem::path frequency_path(const std::string& pattern, const std::string& option, double frequency_hz) {
-  const std::string key = "{f}";
-  if (pattern.find(key) == std::string::npos)
-    throw InputError(option + " (" + pattern + ") needs {f}, the frequency in kHz, or every frequency writes one file");
-  std::string path = pattern;
-  const std::string text = frequency_text(frequency_hz);
-  for (std::size_t at = path.find(key); at != std::string::npos; at = path.find(key, at + text.size()))
-    path.replace(at, key.size(), text);
-  return path;
 }
 
 }  // namespace mesowave::dem

@@ -35,7 +35,7 @@
 // in the run itself against one direct run).
 //
 // Cost: one run per actuator (the step loop, as a direct run), then per
-// frequency a direct convolution, (samples) x (burst steps) multiply-adds per
+// frequency a direct convolution (signal/superposition.hpp), (samples) x (burst steps) multiply-adds per
 // sensor and actuator: for the cube's 30,000 steps, 6 sensors and the 1,000-step
 // 100 kHz burst 1.8e8, about 0.1-0.2 s; direct summation in a fixed order keeps
 // it exact to round-off and the same bits for any thread count (an FFT would be
@@ -73,6 +73,7 @@
 #include "mesowave/dem/packing/packing.hpp"
 #include "mesowave/dem/scene/scene.hpp"
 #include "mesowave/signal/signal.hpp"
+#include "mesowave/signal/superposition.hpp"
 
 namespace mesowave::dem {
 
@@ -127,16 +128,12 @@ struct SuperposedRun {
 /// not prove the linear model valid unless a direct run there measures it).
 SuperposedRun superpose(const ImpulseResponses& responses, const Scene& scene, double frequency_hz);
 
-/// Superposed against direct signals, per sensor (matched by position in the lists).
-struct SuperpositionError {
-  std::vector<std::string> sensors;
-  std::vector<double> pcc;                 ///< Pearson r of the two records
-  std::vector<double> max_diff_over_peak;  ///< max |superposed - direct| / max |direct|
-  double min_pcc = 1, max_diff_over_peak_all = 0;
-};
-/// InputError if the signals do not share names and time bases.
-SuperpositionError superposition_error(const std::vector<signal::Signal>& direct,
-                                       const std::vector<signal::Signal>& superposed);
+/// The convolution, the error against a direct run and the file names are
+/// generic (signal/superposition.hpp, shared with the FEM's fem/superposition.hpp).
+using signal::SuperpositionError;
+using signal::superposition_error;
+using signal::frequency_text;
+using signal::frequency_path;
 
 /// A direct run's comparison with the superposed signals at its frequency.
 struct SuperpositionCheck {
@@ -172,11 +169,5 @@ struct SuperposedSet {
 /// frequency whose bound does not prove the linear model valid and is not checked.
 SuperposedSet run_superposed(const Scene& scene, const Packing& packing, const SimulationOptions& options,
                              const std::vector<double>& frequencies_kHz, const std::vector<double>& check_kHz = {});
-
-/// The frequency as file names and metric names write it: 100, 150, 212.5 (kHz).
-std::string frequency_text(double frequency_hz);
-/// `pattern` with every {f} replaced by frequency_text; InputError naming
-/// `option` if it has no {f} (every frequency would write the same file).
-std::filesystem::path frequency_path(const std::string& pattern, const std::string& option, double frequency_hz);
 
 }  // namespace mesowave::dem
