@@ -6,8 +6,9 @@
 #   j1-2t      make -j1, MESOWAVE_THREADS=2 (one run at a time on two threads)
 #   j2-policy  make -j2, each run's threads from the thread policy (what make reproduce does)
 #   j1-policy  make -j1, the same policy
-# PART: quick (make pipeline QUICK=1: the whole quick tree, the build left out) or rod (the full
-# tree's steel-rod study: make steel-rod-summary steel-rod-calibration).
+# PART: quick (make pipeline QUICK=1: the whole quick tree, the build left out) or rod-shock (the
+# full tree's steel-rod and shock-concrete studies: make steel-rod-summary steel-rod-calibration
+# shock-concrete-summary).
 # Per make: its wall time, the load average before it, the recorded runs' count and summed wall
 # time (the provenance database), and the threads and reason of every DEM and FEM record.
 #
@@ -23,8 +24,8 @@ schedules=("$@")
 [ ${#schedules[@]} -gt 0 ] || schedules=(j2-1t j1-2t j2-policy)
 case $part in
   quick) goals=(pipeline QUICK=1) out=results-quick ;;
-  rod) goals=(steel-rod-summary steel-rod-calibration QUICK=0) out=results ;;
-  *) echo "schedule_runs: PART ($part) must be quick or rod" >&2; exit 1 ;;
+  rod-shock) goals=(steel-rod-summary steel-rod-calibration shock-concrete-summary QUICK=0) out=results ;;
+  *) echo "schedule_runs: PART ($part) must be quick or rod-shock" >&2; exit 1 ;;
 esac
 work=$(realpath "$(mktemp -d)")
 trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
