@@ -67,6 +67,8 @@ concrete-cube-waves-summary: concrete-cube-waves
 	@echo
 	@echo "Table 3: mean PCC over sensors B-G. mesowave: DEM against the continuum reference (mw-fem box);"
 	@echo "paper: experiment against DEM (no measured cube signals ship$(if $(CC_MEASURED),; measured: $(CC_MEASURED_DIR)))."
+	@echo "DEM: every frequency from one superposed run with the viscous equivalent of Eq. (7), zeta = alpha_d / pi"
+	@echo "(direct runs of the two laws: 1 - PCC 3e-4 to 2.5e-3, docs/benchmarks.md; the run: $(CC_OUT)/dem-waves.json)."
 	@$(CC_PRINT_CSV) $(CC_OUT)/table3.csv
 	@echo
 	@echo "Speed against error ($(CC_SPEED_F) kHz; PCC against $(CC_SPEED_REFERENCE)):"

@@ -1,10 +1,14 @@
 // The thread policy (core/threads.hpp) on hand-worked machines and meshes.
 #include "mesowave/core/threads.hpp"
 
+#include "mesowave/core/error.hpp"
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
 #include <atomic>
+#include <cstdlib>
+#include <string>
 #include <thread>
 
 using namespace mesowave;
@@ -51,6 +55,35 @@ TEST(ThreadRule, AppliedToOpenMP) {
   EXPECT_GE(c.count, 1);
   EXPECT_LE(c.count, omp_get_num_procs());
   EXPECT_EQ(omp_get_max_threads(), c.count);
+  omp_set_num_threads(before);
+}
+
+// MESOWAVE_THREADS fixes the count of a run that does not request one (a benchmark's schedule, a
+// batch job's cores); --threads still wins, and a value that is not a count is refused in one line.
+TEST(ThreadRule, EnvironmentCountWhenNoneIsRequested) {
+  const int before = omp_get_max_threads();
+  ::setenv("MESOWAVE_THREADS", "1", 1);
+  const ThreadChoice from_env = use_threads(0);
+  EXPECT_EQ(from_env.count, 1);
+  EXPECT_EQ(from_env.reason, "requested (MESOWAVE_THREADS=1)");
+  EXPECT_EQ(omp_get_max_threads(), 1);
+  EXPECT_EQ(use_threads(3).reason, "requested (--threads 3)");
+  EXPECT_EQ(use_threads(0, {12000, 4000, "elements"}).count, 1);
+  ::setenv("MESOWAVE_THREADS", "3", 1);
+  EXPECT_EQ(use_threads(0, {8000, 4000, "elements"}).count, 2);  // the work cap applies to it too
+  for (const char* bad : {"0", "two", "-1", "1.5"}) {
+    ::setenv("MESOWAVE_THREADS", bad, 1);
+    try {
+      use_threads(0);
+      ADD_FAILURE() << bad << " was taken";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                std::string("MESOWAVE_THREADS (\"") + bad + "\") must be a whole number of threads, 1 or more");
+    }
+  }
+  ::setenv("MESOWAVE_THREADS", "", 1);  // empty: as unset
+  EXPECT_NE(use_threads(0).reason.find("other runnable threads"), std::string::npos);
+  ::unsetenv("MESOWAVE_THREADS");
   omp_set_num_threads(before);
 }
 

@@ -197,5 +197,10 @@ TEST(Superposition, RefusesScenesItDoesNotHoldFor) {
     const SuperposedSet checked = run_superposed(s, p, {}, {100}, {100});
     ASSERT_EQ(checked.checks.size(), 1u);
     EXPECT_LT(checked.checks[0].direct_peak_force_ratio, 1e-3);
+    // check_unproven finds the unproven frequency itself: the same direct run, the same measured peak.
+    const SuperposedSet found = run_superposed(s, p, {}, {100}, {}, true);
+    ASSERT_EQ(found.checks.size(), 1u);
+    EXPECT_EQ(found.checks[0].frequency_hz, 100e3);
+    EXPECT_EQ(found.checks[0].direct_peak_force_ratio, checked.checks[0].direct_peak_force_ratio);
   }
 }

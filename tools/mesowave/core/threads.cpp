@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 
 namespace mesowave {
@@ -21,11 +23,12 @@ int threads_for_work(int count, const ThreadWork& work) {
   return int(std::clamp<std::size_t>(by_work, 1, std::size_t(std::max(1, count))));
 }
 
-ThreadChoice thread_rule(int requested, int cores, double busy, const ThreadWork& work) {
+ThreadChoice thread_rule(int requested, int cores, double busy, const ThreadWork& work,
+                         const std::string& requested_by) {
   ThreadChoice c;
   if (requested > 0) {
     c.count = requested;
-    c.reason = "requested (--threads " + std::to_string(requested) + ")";
+    c.reason = "requested (" + (requested_by.empty() ? "--threads " + std::to_string(requested) : requested_by) + ")";
   } else {
     c.count = std::max(1, std::min(cores, int(std::lround(double(cores) - busy))));
     c.reason = std::to_string(c.count) + " of " + std::to_string(cores) + " cores (" +
@@ -61,9 +64,22 @@ double other_runnable_threads(int samples) {
   return n % 2 ? others[n / 2] : (others[n / 2 - 1] + others[n / 2]) / 2;
 }
 
+int environment_threads() {
+  const char* text = std::getenv("MESOWAVE_THREADS");
+  if (text == nullptr || *text == '\0') return 0;
+  const std::string value = text;
+  if (value.size() > 6 || value.find_first_not_of("0123456789") != std::string::npos || std::stoi(value) < 1)
+    throw InputError("MESOWAVE_THREADS (\"" + value + "\") must be a whole number of threads, 1 or more");
+  return std::stoi(value);
+}
+
 ThreadChoice use_threads(int requested, const ThreadWork& work) {
-  const double busy = requested > 0 ? 0 : other_runnable_threads();
-  const ThreadChoice c = thread_rule(requested, omp_get_num_procs(), busy, work);
+  const int from_environment = requested > 0 ? 0 : environment_threads();
+  const int asked = requested > 0 ? requested : from_environment;
+  const double busy = asked > 0 ? 0 : other_runnable_threads();
+  const ThreadChoice c =
+      thread_rule(asked, omp_get_num_procs(), busy, work,
+                  from_environment > 0 ? "MESOWAVE_THREADS=" + std::to_string(from_environment) : "");
   omp_set_num_threads(c.count);
   return c;
 }

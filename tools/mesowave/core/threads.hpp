@@ -4,7 +4,10 @@
 // other work a descheduled thread stalls the others at every barrier, and a
 // parallel region costs a few microseconds that a small model does not repay.
 // So the rule is:
-//   1. `requested` threads if > 0 (--threads N);
+//   1. `requested` threads if > 0 (--threads N), else MESOWAVE_THREADS=N from
+//      the environment if set (so a benchmark, or a scheduler that gives each
+//      job its cores, can fix the count of every tool a pipeline starts without
+//      editing a make rule; docs/benchmarks.md, "The schedule on 2 cores");
 //   2. else the cores the machine is not busy with: cores minus the threads
 //      of other work that want a core NOW, at least 1 (measured on 2 cores at
 //      load 8: two threads ran 2-3x slower than one). "Now" is the kernel's
@@ -39,7 +42,13 @@ struct ThreadWork {
 };
 
 /// The rule itself, for a machine with `cores` cores on which `busy` threads of other work are runnable.
-ThreadChoice thread_rule(int requested, int cores, double busy, const ThreadWork& work = {});
+/// `requested_by`: who asked for `requested` threads, for the reason ("" = "--threads N").
+ThreadChoice thread_rule(int requested, int cores, double busy, const ThreadWork& work = {},
+                         const std::string& requested_by = "");
+
+/// MESOWAVE_THREADS from the environment: 0 when unset or empty; InputError (one line) when it
+/// is not a whole number of 1 or more.
+int environment_threads();
 
 /// The runnable threads other than the caller, now: the median over `samples` readings 10 ms apart of
 /// procs_running - 1 from /proc/stat (0 where it cannot be read).
@@ -48,8 +57,8 @@ double other_runnable_threads(int samples = 5);
 /// At most `count` threads, and at most one per work.min_per_thread items (at least 1).
 int threads_for_work(int count, const ThreadWork& work);
 
-/// The rule on this machine (OpenMP's core count, other_runnable_threads), applied:
-/// OpenMP's next parallel regions use the chosen count.
+/// The rule on this machine (`requested`, else environment_threads(), else OpenMP's core count
+/// less other_runnable_threads), applied: OpenMP's next parallel regions use the chosen count.
 ThreadChoice use_threads(int requested, const ThreadWork& work = {});
 
 /// Threads for one parallel region over `items` units: OpenMP's current

@@ -42,6 +42,10 @@ void add_run_options(CLI::App& run_cmd, RunCommandLine& v) {
                      "superposition's PCC and largest difference / peak against each in the summaries")
       ->delimiter(',')
       ->needs(many);
+  run_cmd.add_flag("--check-unproven", v.check_unproven,
+                   "With --frequencies-kHz: also run directly each frequency whose bound on the peak bond force / "
+                   "strength does not prove the linear model valid (instead of refusing it); the records say which")
+      ->needs(many);
   run_cmd.add_option("--summary", v.summary_path, "Run summary (JSON; also printed)");
   run_cmd.add_option("--signals-csv", v.csv_path, "The signals also as CSV (t_s and one column per sensor)");
   run_cmd.add_option("--snapshots", v.snapshot_dir, "Folder for ParaView snapshots (.vtp per instant + snapshots.pvd)");
@@ -111,15 +115,18 @@ void run_superposed_set(const RunCommandLine& v, const Inputs& in, const Simulat
     throw InputError("--frequencies-kHz writes --signals-pattern files: --signals, --signals-csv, --snapshots, "
                      "--curves, --checkpoint and --restart are for one direct run");
   if (v.signals_pattern.empty()) throw InputError("--frequencies-kHz needs --signals-pattern (e.g. 'dem-{f}kHz.h5')");
-  const SuperposedSet set = run_superposed(in.scene, in.packing, options, v.frequencies_kHz, v.check_kHz);
+  const SuperposedSet set = run_superposed(in.scene, in.packing, options, v.frequencies_kHz, v.check_kHz, v.check_unproven);
   if (progress) progress->finish();
   for (const auto& f : set.frequencies) {
     const std::string kHz = frequency_text(f.run.frequency_hz);
     signal::write_signal_file(run.output(frequency_path(v.signals_pattern, "--signals-pattern", f.run.frequency_hz)),
                               f.run.signals, {{"scene", in.scene.name}, {"model", set.responses.report.choice.model},
                                               {"packing", in.scene.packing_file.string()}, {"method", "superposition"}});
-    if (!v.summary_pattern.empty())
-      run.write_text(frequency_path(v.summary_pattern, "--summary-pattern", f.run.frequency_hz), f.summary.dump(2) + "\n");
+    if (!v.summary_pattern.empty()) {
+      auto summary = f.summary;
+      summary["threads_reason"] = threads_reason;
+      run.write_text(frequency_path(v.summary_pattern, "--summary-pattern", f.run.frequency_hz), summary.dump(2) + "\n");
+    }
     run.metric("peak_force_ratio_bound_" + kHz + "kHz", f.run.peak_force_ratio_bound, "");
   }
   run.param("model_chosen", set.responses.report.choice.model);

@@ -24,7 +24,7 @@ struct RunCommandLine {
   std::filesystem::path checkpoint_path, restart_path;
   std::string model = "auto";
   SceneOverrides overrides;
-  bool quiet = false, static_solve = false;
+  bool quiet = false, static_solve = false, check_unproven = false;
   std::int64_t checkpoint_every = 0;
   std::vector<double> frequencies_kHz, check_kHz;
   std::string signals_pattern, summary_pattern;

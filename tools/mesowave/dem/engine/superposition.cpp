@@ -298,13 +298,22 @@ nlohmann::ordered_json superposition_summary(const ImpulseResponses& h, const Su
 }
 
 SuperposedSet run_superposed(const Scene& scene, const Packing& packing, const SimulationOptions& options,
-                             const std::vector<double>& frequencies_kHz, const std::vector<double>& check_kHz) {
+                             const std::vector<double>& frequencies_kHz, const std::vector<double>& check_kHz,
+                             bool check_unproven) {
   signal::check_frequencies(frequencies_kHz, check_kHz);
   SuperposedSet set;
   set.responses = impulse_responses(scene, packing, options);
   std::vector<SuperposedRun> runs;
   for (double f : frequencies_kHz) runs.push_back(superpose(set.responses, scene, f * units::kHz));
-  for (double c : check_kHz) {
+  // check_unproven: the frequencies whose bound does not prove the linear model join the checks, so a
+  // pipeline need not know beforehand which those are (they depend on the material and the packing).
+  std::vector<double> direct_kHz = check_kHz;
+  if (check_unproven)
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      if (!runs[i].bound_proves_validity &&
+          std::find(direct_kHz.begin(), direct_kHz.end(), frequencies_kHz[i]) == direct_kHz.end())
+        direct_kHz.push_back(frequencies_kHz[i]);
+  for (double c : direct_kHz) {
     Scene direct = scene;
     for (auto& a : direct.actuators) a.frequency_hz = c * units::kHz;
     SimulationOptions o = options;
@@ -327,7 +336,8 @@ SuperposedSet run_superposed(const Scene& scene, const Packing& packing, const S
                        "force / strength, " + format_number(run.peak_force_ratio_bound) + " (the lower of the "
                        "impulse's and the work's), does not prove it below the validity bound " +
                        format_number(run.validity_bound) + " (linear_validity_bound); add " +
-                       frequency_text(run.frequency_hz) + " to --check-kHz to measure it in a direct run");
+                       frequency_text(run.frequency_hz) + " to --check-kHz (or give --check-unproven) to measure "
+                       "it in a direct run");
   }
   nlohmann::ordered_json per = nlohmann::ordered_json::array();
   for (auto& run : runs) {

@@ -164,10 +164,14 @@ struct SuperposedSet {
   std::vector<SuperpositionCheck> checks;
   nlohmann::ordered_json summary;   ///< the whole run: the validity, each frequency's bound and cost
 };
-/// InputError for a frequency that is not positive or given twice, a
-/// check frequency not among them, whatever impulse_responses refuses, and a
-/// frequency whose bound does not prove the linear model valid and is not checked.
+/// `check_unproven`: also run directly every frequency whose bound does not prove the
+/// linear model valid (the bound depends on the material and packing, so a pipeline
+/// cannot list them beforehand); those checks measure the peak, and every record says
+/// which frequencies were checked. InputError for a frequency that is not positive or
+/// given twice, a check frequency not among them, whatever impulse_responses refuses,
+/// and a frequency whose bound does not prove the linear model valid and is not checked.
 SuperposedSet run_superposed(const Scene& scene, const Packing& packing, const SimulationOptions& options,
-                             const std::vector<double>& frequencies_kHz, const std::vector<double>& check_kHz = {});
+                             const std::vector<double>& frequencies_kHz, const std::vector<double>& check_kHz = {},
+                             bool check_unproven = false);
 
 }  // namespace mesowave::dem
