@@ -228,6 +228,7 @@ private:
   // every rank's reported slots in rank then slot order, and the per-slot values.
   Domain* domain_ = nullptr;
   std::size_t own_begin_ = 0, own_end_ = 0, own_block_begin_ = 0, own_block_end_ = 0, ghosts_ = 0;
+  std::size_t broken_ = 0;  ///< bonds broken on all ranks after the last step (shared with the motion)
   std::vector<int> sphere_counts_, sphere_displs_, block_counts_, block_displs_;
   std::vector<std::uint8_t> slot_needed_;
   std::vector<std::uint32_t> reported_, reported_all_;

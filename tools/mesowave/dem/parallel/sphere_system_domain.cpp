@@ -46,6 +46,7 @@ void SphereSystem::distribute(Domain& domain) {
     if (r == me) own_block_begin_ = b0, own_block_end_ = b1, own_begin_ = s0, own_end_ = s1;
   }
   lay_out_domain();
+  broken_ = std::size_t(domain.sum(kernel_->broken_bonds_in(reported_)));
 }
 
 // After every new slot layout: the contacts this rank computes and the reporters.
@@ -79,44 +80,73 @@ void SphereSystem::lay_out_domain() {
   slot_elastic_.assign(count, 0), slot_plastic_.assign(count, 0), slot_ratio2_.assign(count, 0);
 }
 
+// One message a step: each rank's part - its spheres' motion, its blocks' sums, its reported
+// contacts' plastic (and on energy steps elastic) parts, its largest strength ratio and its
+// broken bonds - gathered to every rank, which then adds the task sums in slot order, as
+// for_each_contact adds them in one process.
 void SphereSystem::share_step(bool evaluate_energy) {
-  const std::size_t n = spheres_.size(), count = first_.size();
+  const std::size_t count = first_.size();
   // Other ranks' spheres got this rank's share of their contacts: not theirs to keep.
   std::fill(f_acc_.begin(), f_acc_.begin() + std::ptrdiff_t(own_begin_), Vec3{});
   std::fill(t_acc_.begin(), t_acc_.begin() + std::ptrdiff_t(own_begin_), Vec3{});
   std::fill(f_acc_.begin() + std::ptrdiff_t(own_end_), f_acc_.end(), Vec3{});
   std::fill(t_acc_.begin() + std::ptrdiff_t(own_end_), t_acc_.end(), Vec3{});
 
-  // The motion each rank integrated, to every rank.
-  for (std::vector<Vec3>* a : {&x_, &v_, &w_, &a_, &a_undamped_, &theta_})
-    if (a->size() == n) domain_->share(&(*a)[0].x, sphere_counts_, sphere_displs_);
-  for (std::vector<double>* a : {&sphere_block_kinetic_, &sphere_block_damping_, &sphere_block_vmax2_})
-    domain_->share(a->data(), block_counts_, block_displs_);
-
-  // Each contact's plastic (and on energy steps elastic) part from its reporter, then the
-  // task sums in slot order, as for_each_contact adds them in one process.
-  const int ranks = domain_->size();
-  const int values = evaluate_energy ? 2 : 1;
-  send_.resize(std::size_t(values) * reported_.size());
-  for (std::size_t k = 0; k < reported_.size(); ++k) {
-    send_[k] = slot_plastic_[reported_[k]];
-    if (evaluate_energy) send_[reported_.size() + k] = slot_elastic_[reported_[k]];
-  }
+  std::vector<Vec3>* motion[] = {&x_, &v_, &w_, &a_, &a_undamped_, &theta_};
+  std::vector<double>* block_sums[] = {&sphere_block_kinetic_, &sphere_block_damping_, &sphere_block_vmax2_};
+  const std::size_t vectors = track_rotation_ ? 6 : 5, per_contact = evaluate_energy ? 2 : 1;
+  const int ranks = domain_->size(), me = domain_->rank();
+  // Rank r's part: `vectors` x its spheres (3 doubles each), 3 x its blocks, per_contact x its reported contacts, 2.
+  const auto part = [&](int r) {
+    const std::size_t i = std::size_t(r);
+    return vectors * std::size_t(sphere_counts_[i]) + 3 * std::size_t(block_counts_[i]) +
+           per_contact * std::size_t(reported_counts_[i]) + 2;
+  };
   std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
+  std::size_t total = 0;
   for (int r = 0; r < ranks; ++r) {
-    counts[std::size_t(r)] = values * reported_counts_[std::size_t(r)];
-    displs[std::size_t(r)] = values * reported_displs_[std::size_t(r)];
+    counts[std::size_t(r)] = int(part(r));
+    displs[std::size_t(r)] = int(total);
+    total += part(r);
   }
-  recv_.resize(std::size_t(values) * reported_all_.size());
+  if (total > std::size_t(0x7fffffff)) throw InputError("a distributed step's exchange exceeds MPI's int counts");
+  send_.resize(part(me));
+  {
+    double* o = send_.data();
+    const std::size_t s0 = own_begin_, s1 = own_end_;
+    for (std::size_t v = 0; v < vectors; ++v) o = std::copy(&(*motion[v])[s0].x, &(*motion[v])[s0].x + 3 * (s1 - s0), o);
+    for (auto* b : block_sums)
+      o = std::copy(b->begin() + std::ptrdiff_t(own_block_begin_), b->begin() + std::ptrdiff_t(own_block_end_), o);
+    double peak2 = 0;
+    for (const std::uint32_t s : reported_) *o++ = slot_plastic_[s], peak2 = std::max(peak2, slot_ratio2_[s]);
+    if (evaluate_energy)
+      for (const std::uint32_t s : reported_) *o++ = slot_elastic_[s];
+    *o++ = peak2;
+    *o++ = double(kernel_->broken_bonds_in(reported_));  // exact: a count below 2^53
+  }
+  recv_.resize(total);
   domain_->gather_all(send_.data(), int(send_.size()), recv_.data(), counts, displs);
+
+  double peak2 = 0;
+  std::size_t broken = 0;
   for (int r = 0; r < ranks; ++r) {
-    const std::size_t c = std::size_t(reported_counts_[std::size_t(r)]), d = std::size_t(reported_displs_[std::size_t(r)]);
-    for (std::size_t k = 0; k < c; ++k) {
-      const std::uint32_t s = reported_all_[d + k];
-      slot_plastic_[s] = recv_[std::size_t(values) * d + k];
-      if (evaluate_energy) slot_elastic_[s] = recv_[std::size_t(values) * d + c + k];
+    const std::size_t i = std::size_t(r);
+    const double* in = recv_.data() + displs[i];
+    const std::size_t s0 = std::size_t(sphere_displs_[i]) / 3, doubles = std::size_t(sphere_counts_[i]);
+    for (std::size_t v = 0; v < vectors; ++v, in += doubles) std::copy(in, in + doubles, &(*motion[v])[s0].x);
+    for (auto* b : block_sums) {
+      std::copy(in, in + block_counts_[i], b->begin() + block_displs_[i]);
+      in += block_counts_[i];
     }
+    const std::size_t c = std::size_t(reported_counts_[i]), d = std::size_t(reported_displs_[i]);
+    for (std::size_t k = 0; k < c; ++k) slot_plastic_[reported_all_[d + k]] = *in++;
+    if (evaluate_energy)
+      for (std::size_t k = 0; k < c; ++k) slot_elastic_[reported_all_[d + k]] = *in++;
+    peak2 = std::max(peak2, *in++);
+    broken += std::size_t(*in++);
   }
+  broken_ = broken;
+
   const std::size_t tasks = partitions_ + cross_blocks_;
   for (std::size_t task = 0; task < tasks; ++task) {
     const bool interior = task < partitions_;
@@ -131,15 +161,10 @@ void SphereSystem::share_step(bool evaluate_energy) {
     }
     task_peak2_[task] = 0;
   }
-  double peak2 = 0;
-  for (const std::uint32_t s : reported_) peak2 = std::max(peak2, slot_ratio2_[s]);
-  if (tasks > 0) task_peak2_[0] = domain_->max(peak2);
+  if (tasks > 0) task_peak2_[0] = peak2;  // a max: exact in any order
 }
 
-std::size_t SphereSystem::broken_bond_count() const {
-  if (!domain_) return kernel_->broken_bond_count();
-  return std::size_t(domain_->sum(kernel_->broken_bonds_in(reported_)));
-}
+std::size_t SphereSystem::broken_bond_count() const { return domain_ ? broken_ : kernel_->broken_bond_count(); }
 
 std::string SphereSystem::distribution() const {
   if (!domain_) return {};
