@@ -16,7 +16,7 @@ namespace {
 int launched_size() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "MPI_LOCALNRANKS"})
     if (const char* v = std::getenv(name)) return std::max(1, std::atoi(v));
-  return std::getenv("PMIX_RANK") ? 2 : 1;  // a PMIx launch: ask MPI itself
+  return std::getenv("PMIX_RANK") ? 2 : 1;  // a PMIx launch without a size: initialise and ask MPI
 }
 
 #ifdef MESOWAVE_HAVE_MPI
@@ -63,8 +63,8 @@ MpiSession::MpiSession(int& argc, char**& argv) {
   if (size_ > 1) domain_ = std::make_unique<MpiDomain>(rank_, size_);
 #else
   (void)argc, (void)argv;
-  throw InputError("started by an MPI launcher with " + std::to_string(launched_size()) +
-                   " ranks, but this build has no MPI (install libopenmpi-dev and configure again)");
+  throw InputError("started by an MPI launcher for several ranks, but this build has no MPI (install "
+                   "libopenmpi-dev and configure again)");
 #endif
 }
 
