@@ -23,7 +23,7 @@ namespace {
 const std::vector<std::string> kBuildPackages = {
     "build-essential", "cmake",        "pkg-config",   "libeigen3-dev", "libsqlite3-dev",      "libhdf5-dev",
     "libfftw3-dev",    "libcli11-dev", "libgtest-dev", "libpng-dev",    "libtomlplusplus-dev", "nlohmann-json3-dev",
-    "libtiff-dev",     "libssl-dev"};
+    "libtiff-dev",     "libssl-dev",   "libopenmpi-dev"};
 
 class Shims {
 public:

@@ -9,13 +9,26 @@
 //       --signals-pattern 'dem-{f}kHz.h5' --summary-pattern 'dem-{f}kHz.json'   (one run, every frequency)
 //   mw-dem run ... --checkpoint run.ckpt.h5 --checkpoint-every-steps 10000   (and on SIGTERM/SIGINT)
 //   mw-dem run ... --restart run.ckpt.h5      (the same options: continues to the same bits)
+//   mpirun -np 4 mw-dem run ...               (4 ranks, the same bits as one process: docs/mpi.md)
+#include <iostream>
+#include <optional>
+
 #include "mesowave/app/tool.hpp"
+#include "mesowave/core/error.hpp"
 #include "mesowave/core/threads.hpp"
 #include "mesowave/dem/command/run_command.hpp"
+#include "mesowave/dem/parallel/mpi_session.hpp"
 
 using namespace mesowave;
 
 int main(int argc, char** argv) {
+  std::optional<dem::MpiSession> mpi;  // MPI only under an MPI launcher (mpirun)
+  try {
+    mpi.emplace(argc, argv);
+  } catch (const InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
   app::Tool tool(
       "mw-dem",
       "Simulate a DEM scene (TOML: packing, material, time step, actuators, sensors) with Yade's cohesive-frictional "
@@ -39,6 +52,7 @@ int main(int argc, char** argv) {
       "(a virtual compression test: E_glob, nu_glob, peak stress)\n"
       "  mw-dem run pipeline/concrete-cube/scenes/cube-compression.toml --unbreakable-bonds --modulus-levels-MPa 5,16.67 "
       "--static --signals e.h5   (its elastic part as one static solve of the linearised network)");
+  if (!mpi->is_root()) tool.set_records_runs(false);  // one record of the run: rank 0's
   auto& cli = tool.cli();
   cli.require_subcommand(1);
 
@@ -60,6 +74,6 @@ int main(int argc, char** argv) {
   return tool.run(argc, argv, [&](app::Run& run) {
     const std::string threads_reason = use_threads(threads).reason;
     if (info->parsed()) return dem::run_info_command(values, run, threads_reason);
-    dem::run_run_command(values, run, threads_reason);
+    dem::run_run_command(values, run, threads_reason, mpi->domain());
   });
 }

@@ -12,6 +12,7 @@
 #include "mesowave/dem/engine/simulation.hpp"
 #include "mesowave/dem/engine/snapshot.hpp"
 #include "mesowave/dem/engine/superposition.hpp"
+#include "mesowave/dem/parallel/domain.hpp"
 #include "mesowave/dem/packing/packing_file.hpp"
 #include "mesowave/dem/scene/scene.hpp"
 #include "mesowave/signal/signal_file.hpp"
@@ -182,17 +183,24 @@ void run_info_command(RunCommandLine v, app::Run& run, const std::string& thread
   run.emit_json(j);
 }
 
-void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads_reason) {
+void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads_reason, Domain* domain) {
   const Inputs in = read_inputs(v, run);
+  const bool root = !domain || domain->rank() == 0;
+  if (domain && (v.static_solve || !v.frequencies_kHz.empty() || !v.checkpoint_path.empty() || !v.restart_path.empty()))
+    throw InputError("on several MPI ranks mw-dem runs the scene directly: --static, --frequencies-kHz, --checkpoint "
+                     "and --restart run on one process (docs/mpi.md)");
   if (v.static_solve) return run_static(v, in, run, threads_reason);
 
   SimulationOptions options;
   options.model = v.model;
+  options.domain = domain;
+  if (!root) v.quiet = true;  // rank 0 reports and writes
   std::vector<std::pair<double, std::string>> snapshots;
   if (!v.snapshot_dir.empty()) {
     if (!(in.scene.snapshot_interval_s > 0))
       throw InputError("--snapshots needs --snapshot-interval-us or [output] snapshot_interval_us");
-    options.on_snapshot = [&](const Model& m, double t, std::int64_t index) {
+    options.on_snapshot = [&, root](const Model& m, double t, std::int64_t index) {
+      if (!root) return;  // every rank holds the whole state; rank 0 writes it
       const std::string name = "snapshot-" + std::to_string(index) + ".vtp";
       write_vtp(run.output(v.snapshot_dir / name), m, t);
       snapshots.emplace_back(t, name);
@@ -227,6 +235,7 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
   const RunReport report = sim.run();
   if (progress && report.stop_reason.empty()) progress->finish();
   else if (progress) progress->finish_early(report.steps, report.stop_reason);
+  if (!root) return;
   write_direct_run(v, in.scene, report, snapshots, run, threads_reason);
 }
 

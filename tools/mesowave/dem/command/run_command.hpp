@@ -19,6 +19,8 @@
 
 namespace mesowave::dem {
 
+class Domain;
+
 struct RunCommandLine {
   std::filesystem::path scene_path, signals_path, summary_path, snapshot_dir, csv_path, curves_path;
   std::filesystem::path checkpoint_path, restart_path;
@@ -37,7 +39,9 @@ void add_run_options(CLI::App& run, RunCommandLine& values);
 
 /// `info`: counts, the critical step, the model it would choose, a memory estimate; printed as JSON.
 void run_info_command(RunCommandLine values, app::Run& run, const std::string& threads_reason);
-/// `run`: the direct, static or superposed run, its files, metrics and summary.
-void run_run_command(RunCommandLine values, app::Run& run, const std::string& threads_reason);
+/// `run`: the direct, static or superposed run, its files, metrics and summary. With `domain`
+/// (several MPI ranks, docs/mpi.md) a direct run only: every rank steps, rank 0 alone writes.
+void run_run_command(RunCommandLine values, app::Run& run, const std::string& threads_reason,
+                     Domain* domain = nullptr);
 
 }  // namespace mesowave::dem

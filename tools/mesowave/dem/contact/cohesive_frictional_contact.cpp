@@ -57,6 +57,12 @@ std::size_t CohesiveFrictionalContact::broken_bond_count() const {
   return broken;
 }
 
+std::size_t CohesiveFrictionalContact::broken_bonds_in(const std::vector<std::uint32_t>& slots) const {
+  std::size_t broken = 0;
+  for (const std::uint32_t s : slots) broken += bond_[s] != kNoBond && cohesive_[s] == 0;
+  return broken;
+}
+
 void CohesiveFrictionalContact::save_state(const SphereSystem& system, StateGroup& group) const {
   const std::size_t m = bond_.size();
   group.write("first", std::vector<std::uint32_t>(system.first(), system.first() + m));

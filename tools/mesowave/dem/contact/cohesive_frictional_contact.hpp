@@ -44,6 +44,7 @@ public:
   void after_step(SphereSystem& system, double dt) override;
   std::size_t contact_count() const override { return bond_.size(); }
   std::size_t broken_bond_count() const override;
+  std::size_t broken_bonds_in(const std::vector<std::uint32_t>& slots) const override;
   std::size_t memory_bytes() const override { return bond_.size() * (8 * sizeof(double) + sizeof(std::uint32_t)); }
   /// The contacts in slot order (pairs and per-slot state: normals, shear
   /// forces, u_0, bond, cohesion) and the detection's travel since its last

@@ -18,6 +18,8 @@
 
 namespace mesowave::dem {
 
+class Domain;
+
 /// Energies of the run. Kinetic energy is the leapfrog product
 /// 1/2 m v_{n-1/2} . v_{n+1/2} (plus its rotational part), which together
 /// with the spring energy at x_n is exactly conserved by leapfrog for a
@@ -96,6 +98,13 @@ public:
   virtual std::size_t memory_bytes() const = 0;
   /// Threads the step runs on (1 for small systems, where a parallel region costs more than it saves).
   virtual int threads() const = 0;
+  /// Splits the steps that follow over the ranks of `domain` (several; docs/mpi.md), to the
+  /// same bits as one process. Called once, before the first step. InputError for a model
+  /// that does not run distributed (the default).
+  virtual void distribute(Domain& domain);
+  /// What a distributed model tells of its split (empty for one process): ranks, spheres per
+  /// rank, ghosts (docs/mpi.md).
+  virtual std::string distribution() const { return {}; }
 };
 
 }  // namespace mesowave::dem

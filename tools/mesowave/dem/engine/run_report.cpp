@@ -26,6 +26,7 @@ nlohmann::ordered_json to_json(const RunReport& r) {
   j["contacts"] = r.contacts;
   j["degrees_of_freedom"] = r.degrees_of_freedom;
   j["threads"] = r.threads;
+  if (!r.distribution.empty()) j["mpi"] = r.distribution;  // one process: absent, so its summary is unchanged
   j["dt_s"] = r.dt_s;
   j["steps"] = r.steps;
   j["duration_s"] = r.duration_s;

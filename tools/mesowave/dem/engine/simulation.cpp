@@ -8,6 +8,7 @@
 #include "mesowave/core/format.hpp"
 #include "mesowave/dem/loading/force_actuator.hpp"
 #include "mesowave/dem/loading/sphere_selection.hpp"
+#include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
 namespace {
@@ -150,6 +151,11 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
   model_ = contact_laws()
                .get(scene_.contact_law, "[material].law")
                .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line});
+  if (options_.domain && options_.domain->size() > 1) {
+    if (options_.impulse_actuator >= 0)
+      throw InputError("--frequencies-kHz (superposition) runs on one process only, not on several MPI ranks");
+    model_->distribute(*options_.domain);
+  }
 
   const double ratio = scene_.duration_s / scene_.dt_s;
   steps_ = std::int64_t(std::ceil(ratio - 1e-9));
@@ -228,6 +234,7 @@ RunReport Simulation::describe() const {
   r.broken_bonds = model_->broken_bond_count();
   r.degrees_of_freedom = model_->degrees_of_freedom();
   r.threads = model_->threads();
+  r.distribution = model_->distribution();
   r.dt_s = scene_.dt_s;
   r.duration_s = double(steps_) * scene_.dt_s;
   r.steps = steps_;

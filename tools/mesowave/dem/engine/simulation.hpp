@@ -57,6 +57,9 @@ struct SimulationOptions {
   /// viscous damping windows, superposition.hpp). -1: the scene's loads.
   int impulse_actuator = -1;
   CheckpointOptions checkpoint;  ///< none unless checkpoint.file is set
+  /// Several MPI ranks (dem/parallel/domain.hpp, docs/mpi.md): the model is split over them
+  /// and every rank runs this Simulation, to the same bits as one process. nullptr: one process.
+  Domain* domain = nullptr;
 };
 
 struct RunReport {
@@ -68,6 +71,7 @@ struct RunReport {
   std::vector<Placement> actuator_placements, sensor_placements;
   std::size_t spheres = 0, bonds = 0, contacts = 0, broken_bonds = 0, degrees_of_freedom = 0;
   int threads = 1;
+  std::string distribution;  ///< a distributed run's split as rank 0 holds it (Model::distribution); empty for one process
   double dt_s = 0, duration_s = 0;
   std::int64_t steps = 0;
   CriticalTimeStep dt_cr;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesowave/core/error.hpp"
 #include "mesowave/core/kernel_clones.hpp"
 
 namespace mesowave::dem {
@@ -144,6 +145,7 @@ std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uin
   task_peak2_.assign(tasks, 0);
   // A parallel region costs a few microseconds: worth it only for big systems.
   parallel_ = threads_ > 1 && count >= 8 * kContactBlock && partitions_ > 1;
+  if (domain_) lay_out_domain();
   return order;
 }
 
@@ -184,6 +186,7 @@ void SphereSystem::step(double dt, bool evaluate_energy) {
     kernel_->contact_forces(*this, dt, evaluate_energy);  // ends with the implicit barrier of its omp for
     integrate(dt, evaluate_energy);
   }
+  if (domain_) share_step(evaluate_energy);
 
   for (std::size_t i = 0; i < forced_.size(); ++i) {
     const std::uint32_t k = forced_[i];
@@ -210,14 +213,16 @@ void SphereSystem::step(double dt, bool evaluate_energy) {
 
 void SphereSystem::integrate(double dt, bool evaluate_energy) {
   const std::size_t n = spheres_.size();
-  const std::size_t blocks = (n + kSphereBlock - 1) / kSphereBlock;
+  // Distributed: this rank's blocks only (the others move theirs; share_step brings them).
+  const std::size_t first_block = domain_ ? own_block_begin_ : 0;
+  const std::size_t blocks = domain_ ? own_block_end_ : (n + kSphereBlock - 1) / kSphereBlock;
   const std::uint32_t* offset = cross_incidence_.offset.data();
   const std::uint32_t* entry = cross_incidence_.entry.data();
   const ContactOut* out = out_.data();
   const Vec3* moment = out_moment_.empty() ? nullptr : out_moment_.data();
 
 #pragma omp for schedule(static)
-  for (std::size_t blk = 0; blk < blocks; ++blk) {
+  for (std::size_t blk = first_block; blk < blocks; ++blk) {
     const std::size_t begin = blk * kSphereBlock, end = std::min(n, begin + kSphereBlock);
     // Total force and torque, in a fixed order: contacts inside the partition
     // (summed in slot order by for_each_contact), those across partitions,
@@ -372,6 +377,7 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
 // the law's state. The law goes first: a new contact layout resets the per-task
 // plastic sums, which are then read over it.
 void SphereSystem::save_state(StateGroup& group) const {
+  if (domain_) throw InputError("checkpoints are not written by a run on several MPI ranks (docs/mpi.md): run it on one");
   group.write("x", x_);
   group.write("v", v_);
   group.write("w", w_);
@@ -390,6 +396,7 @@ void SphereSystem::save_state(StateGroup& group) const {
 }
 
 void SphereSystem::load_state(const StateGroup& group) {
+  if (domain_) throw InputError("a run on several MPI ranks does not restart from a checkpoint (docs/mpi.md): run it on one");
   kernel_->load_state(*this, group.open("law"));
   group.read_into("x", x_);
   group.read_into("v", v_);

@@ -15,6 +15,13 @@
 // leave a record that each sphere gathers, in a fixed order, in the pass that
 // also updates its motion. Sums over spheres or contacts (energies) are taken
 // per fixed task and added in task order, for the same reason.
+//
+// Distributed (distribute(), dem/parallel/sphere_system_domain.cpp, docs/mpi.md): each rank
+// owns a range of whole sphere blocks in Morton order - a compact piece of space - computes
+// every contact that touches one of its spheres (a contact across two ranks on both, from
+// the same inputs in the same orientation, first < second: the same bits) and moves only
+// its own spheres; the motion is then shared, and the task sums are redone from the
+// contacts' values gathered in slot order, so every rank holds the single-process state.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -52,6 +59,8 @@ public:
   /// Interactions evaluated each step (0: the bonds).
   virtual std::size_t contact_count() const { return 0; }
   virtual std::size_t broken_bond_count() const { return 0; }
+  /// The same over the given slots only (a distributed run counts each bond on one rank).
+  virtual std::size_t broken_bonds_in(const std::vector<std::uint32_t>& /*slots*/) const { return 0; }
   virtual std::size_t memory_bytes() const = 0;
   /// The law's state that changes from step to step (a checkpoint, state_group.hpp):
   /// bonds broken, shear forces, contacts detected and their layout. load_state
@@ -77,7 +86,7 @@ public:
     const std::size_t c = kernel_->contact_count();
     return c > 0 ? c : bond_count();
   }
-  std::size_t broken_bond_count() const override { return kernel_->broken_bond_count(); }
+  std::size_t broken_bond_count() const override;
   std::size_t sphere_count() const override { return spheres_.size(); }
   std::size_t bond_count() const override { return bonds_.size(); }
   std::size_t degrees_of_freedom() const override { return 6 * spheres_.size(); }
@@ -101,6 +110,8 @@ public:
   void save_state(StateGroup& group) const override;
   void load_state(const StateGroup& group) override;
   int threads() const override { return parallel_ ? threads_ : 1; }
+  void distribute(Domain& domain) override;
+  std::string distribution() const override;
 
   const SphereSet& spheres() const { return spheres_; }
   const BondNetwork& bonds() const { return bonds_; }
@@ -229,6 +240,21 @@ private:
   std::vector<std::uint32_t> forced_;  ///< spheres with an external force this step
   std::vector<Vec3> forced_v_before_;
   std::vector<std::uint8_t> is_forced_;
+
+  // A distributed run (dem/parallel/sphere_system_domain.cpp): this rank's spheres and
+  // blocks, the contacts it computes (slot_needed_: an end is its own) and those whose
+  // energies and strength ratio it reports (reporter: the rank owning the first sphere),
+  // every rank's reported slots in rank then slot order, and the per-slot values.
+  Domain* domain_ = nullptr;
+  std::size_t own_begin_ = 0, own_end_ = 0, own_block_begin_ = 0, own_block_end_ = 0, ghosts_ = 0;
+  std::size_t broken_ = 0;  ///< bonds broken on all ranks after the last step (shared with the motion)
+  std::vector<int> sphere_counts_, sphere_displs_, block_counts_, block_displs_;
+  std::vector<std::uint8_t> slot_needed_;
+  std::vector<std::uint32_t> reported_, reported_all_;
+  std::vector<int> reported_counts_, reported_displs_;
+  std::vector<double> slot_elastic_, slot_plastic_, slot_ratio2_, send_, recv_;
+  void lay_out_domain();
+  void share_step(bool evaluate_energy);
 };
 
 template <class Result, class Kernel>
@@ -236,6 +262,7 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel) {
   constexpr bool moments = std::is_same_v<Result, MomentContactResult>;
   const std::size_t tasks = partitions_ + cross_blocks_;
   const std::size_t count = first_.size();
+  const bool distributed = domain_ != nullptr;
 #pragma omp for schedule(dynamic, 1)
   for (std::size_t task = 0; task < tasks; ++task) {
     const bool interior = task < partitions_;
@@ -248,6 +275,9 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel) {
     ChunkResults<moments> results;
     for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
       const std::size_t m = std::min(kChunk, end - chunk);
+      // Distributed: a chunk without a contact of this rank's spheres is another rank's work.
+      if (distributed && std::find(&slot_needed_[chunk], &slot_needed_[chunk] + m, 1) == &slot_needed_[chunk] + m)
+        continue;
       // The law runs on a private Result per contact, stored component by component into the chunk's
       // arrays: only stores to separate arrays indexed by q let GCC vectorize this loop (a store of the
       // whole struct into an array of structs kept it scalar: issue 17 item 3, docs/benchmarks.md).
@@ -260,10 +290,16 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel) {
       for (std::size_t q = 0; q < m; ++q) {
         const Vec3 rf = results.force(q), rc = results.torque_factor(q);
         const double arm0 = results.arm[0][q], arm1 = results.arm[1][q];
-        elastic += results.elastic[q];
-        plastic += results.plastic[q];
-        peak2 = std::max(peak2, results.ratio2[q]);
         const std::size_t b = chunk + q;
+        if (distributed) {  // summed in slot order by share_step, over every rank's values
+          slot_elastic_[b] = results.elastic[q];
+          slot_plastic_[b] = results.plastic[q];
+          slot_ratio2_[b] = results.ratio2[q];
+        } else {
+          elastic += results.elastic[q];
+          plastic += results.plastic[q];
+          peak2 = std::max(peak2, results.ratio2[q]);
+        }
         if (interior) {
           const std::uint32_t i = first_[b], j = second_[b];
           f[i] -= rf;

@@ -1,0 +1,180 @@
+// mpirun -np N mw-dem run (docs/mpi.md): the same files, byte for byte, as one process, for
+// N = 1-4 ranks (oversubscribed on a small machine) - a wave in the linearised network and in
+// the full law, and a compression to failure (the same bonds broken, the same curve); the
+// options a distributed run does not take are refused in one line. The reference is the
+// single-process engine itself, run without any MPI launcher.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "dem/test_packings.hpp"
+#include "mesowave/dem/packing/packing_file.hpp"
+#include "mesowave/signal/signal_file.hpp"
+#include "support/run_tool.hpp"
+
+using namespace mesowave;
+using test::run_tool;
+
+namespace {
+
+// OpenMPI as the tests run it: as root (the containers' user), shared memory only (no
+// network probing), more ranks than cores.
+const std::vector<std::string> kMpiEnv = {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
+                                          "OMPI_MCA_btl=self,vader", "OMPI_MCA_btl_vader_single_copy_mechanism=none",
+                                          "OMPI_MCA_mpi_yield_when_idle=1"};
+
+test::ToolResult mpirun(int ranks, const std::vector<std::string>& args) {
+  std::vector<std::string> command = {"--oversubscribe", "-np", std::to_string(ranks), test::tool_path("mw-dem").string()};
+  command.insert(command.end(), args.begin(), args.end());
+  return test::run_command("/usr/bin/mpirun", command, kMpiEnv);
+}
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+// The 6-cell FCC block (864 spheres: four 256-sphere blocks, so four ranks each hold some).
+void write_block(const test::TempDir& dir) { dem::write_packing_file(dir / "block.h5", dem::testing::crushing_block(6)); }
+
+// A burst on face z- of the block, accelerations on the opposite face and a side face.
+std::string wave_scene(const std::filesystem::path& packing) {
+  return R"(
+[packing]
+file = ")" + packing.string() + R"("
+[material]
+E_dem_GPa = 23.31
+nu_dem = 0.32
+friction_angle_deg = 18.0
+T_MPa = 24.4
+C_MPa = 24.4
+damping = 0.01
+bond_factor = 1.1
+[time]
+dt_ns = 40
+duration_ms = 0.016
+[[actuator]]
+name = "A"
+kind = "force"
+face = "z-"
+centre_rel = [0.5, 0.5, 0]
+patch_mm = [3.0, 3.0]
+direction = "inward"
+amplitude_N = 0.01
+frequency_kHz = 250
+cycles = 3
+[[sensor]]
+name = "B"
+quantity = "acceleration"
+component = "normal"
+face = "z+"
+centre_rel = [0.5, 0.5, 1]
+patch_mm = [3.0, 3.0]
+[[sensor]]
+name = "C"
+quantity = "velocity"
+component = "normal"
+face = "x+"
+centre_rel = [1, 0.5, 0.5]
+patch_mm = [3.0, 3.0]
+)";
+}
+
+// The summary without what differs between any two runs (timings, the machine's thread
+// choice) and the distributed run's description of its split.
+nlohmann::json comparable(const std::filesystem::path& summary) {
+  auto j = nlohmann::json::parse(test::read_file(summary));
+  for (const char* key : {"wall_s", "setup_s", "steps_per_s", "ns_per_contact_step", "threads", "threads_reason", "mpi"})
+    j.erase(key);
+  return j;
+}
+
+// Runs `scene` on one process and on each of `ranks` and compares every output file byte for
+// byte (with `curves`, a [test]'s stress-strain curves too).
+void expect_same_files_on_ranks(const test::TempDir& dir, const std::string& scene, const std::vector<std::string>& extra,
+                                const std::vector<int>& ranks, bool curves = false) {
+  const auto outputs = [&](const std::string& tag) {
+    std::vector<std::string> o = {"--signals", (dir / (tag + ".h5")).string(), "--signals-csv",
+                                  (dir / (tag + ".csv")).string(), "--summary", (dir / (tag + ".json")).string()};
+    if (curves) o.insert(o.end(), {"--curves", (dir / (tag + "-curves.csv")).string()});
+    return o;
+  };
+  const std::vector<std::string> base = with({"run", (dir / scene).string(), "--quiet"}, extra);
+  const auto one = run_tool("mw-dem", with(with(base, outputs("one")), {"--threads", "1"}));
+  ASSERT_EQ(one.exit_status, 0) << one.err;
+  for (const int np : ranks) {
+    const std::string tag = "np" + std::to_string(np);
+    // Two threads per rank on one of them: neither count may change the bits.
+    const auto r = mpirun(np, with(with(base, outputs(tag)), {"--threads", np == 2 ? "2" : "1"}));
+    ASSERT_EQ(r.exit_status, 0) << tag << ": " << r.err;
+    EXPECT_EQ(test::read_file(dir / "one.h5"), test::read_file(dir / (tag + ".h5"))) << tag;  // cmp
+    EXPECT_EQ(test::read_file(dir / "one.csv"), test::read_file(dir / (tag + ".csv"))) << tag;
+    if (curves) {
+      EXPECT_EQ(test::read_file(dir / "one-curves.csv"), test::read_file(dir / (tag + "-curves.csv"))) << tag;
+    }
+    EXPECT_EQ(comparable(dir / "one.json"), comparable(dir / (tag + ".json"))) << tag;
+    if (np > 1) {
+      const auto j = nlohmann::json::parse(test::read_file(dir / (tag + ".json")));
+      EXPECT_NE(j.value("mpi", std::string()).find("rank 0 of " + std::to_string(np)), std::string::npos) << tag;
+    }
+  }
+}
+
+}  // namespace
+
+TEST(MwDemMpi, ALinearWaveOnOneToFourRanksWritesTheSameFilesAsOneProcess) {
+  test::TempDir dir;
+  write_block(dir);
+  test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
+  expect_same_files_on_ranks(dir, "wave.toml", {"--model", "linear"}, {1, 2, 3, 4});
+}
+
+TEST(MwDemMpi, AFullLawWaveOnTwoToFourRanksWritesTheSameFilesAsOneProcess) {
+  test::TempDir dir;
+  write_block(dir);
+  test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
+  expect_same_files_on_ranks(dir, "wave.toml", {"--model", "full"}, {2, 3, 4});
+}
+
+// Bonds break, contacts are detected and relaid out, friction dissipates: the same bits. The
+// shared crushing scene made shorter for the larger block (the wall 2.4 x faster, the stop
+// 20 % past the peak): about 2,700 steps.
+TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesTheSameCurve) {
+  test::TempDir dir;
+  write_block(dir);
+  std::string scene = dem::testing::crushing_scene_toml((dir / "block.h5").string());
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"velocity_mm_s = 500.0", "velocity_mm_s = 1200.0"},
+                                 {"ramp_us = 20", "ramp_us = 10"}, {"stop_drop_pct = 50.0", "stop_drop_pct = 20.0"}}) {
+    ASSERT_NE(scene.find(from), std::string::npos) << from;
+    scene.replace(scene.find(from), from.size(), to);
+  }
+  test::write_file(dir / "crush.toml", scene);
+  expect_same_files_on_ranks(dir, "crush.toml", {}, {2, 3, 4}, true);
+  const auto j = nlohmann::json::parse(test::read_file(dir / "one.json"));
+  EXPECT_GT(j["broken_bonds"].get<int>(), 100);
+  EXPECT_GT(j["energy"]["plastic_dissipated_J"].get<double>(), 0.0);
+  EXPECT_FALSE(j["stop_reason"].get<std::string>().empty());  // it ran to failure
+  for (const char* np : {"np2.json", "np3.json", "np4.json"})
+    EXPECT_EQ(j["broken_bonds"], nlohmann::json::parse(test::read_file(dir / np))["broken_bonds"]) << np;
+}
+
+// What a distributed run does not do: one line, exit 1, nothing written.
+TEST(MwDemMpi, CheckpointsAndMoreRanksThanSphereBlocksAreRefusedInOneLine) {
+  test::TempDir dir;
+  write_block(dir);
+  test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
+  const auto ckpt = mpirun(2, {"run", (dir / "wave.toml").string(), "--quiet", "--signals", (dir / "s.h5").string(),
+                               "--checkpoint", (dir / "c.h5").string()});
+  EXPECT_EQ(ckpt.exit_status, 1);
+  EXPECT_NE(ckpt.err.find("--checkpoint"), std::string::npos) << ckpt.err;
+  const auto many = mpirun(5, {"run", (dir / "wave.toml").string(), "--quiet", "--model", "linear", "--signals",
+                               (dir / "s.h5").string()});
+  EXPECT_EQ(many.exit_status, 1);
+  EXPECT_NE(many.err.find("5 MPI ranks for 864 spheres"), std::string::npos) << many.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.h5"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5"));
+}

@@ -1,0 +1,35 @@
+#pragma once
+// The ranks of a distributed DEM run as the engine sees them (docs/mpi.md): who
+// this process is and the few collective operations the step needs. The engine
+// holds a Domain only when there is more than one rank; it never includes MPI,
+// so a build without MPI and a plain run (np = 1) carry no MPI code at all.
+// The one implementation, over MPI_COMM_WORLD, is mpi_session.hpp.
+//
+// Every operation is collective: all ranks call it, in the same order, with
+// their own part. Sums are never taken by the communication layer (an MPI
+// reduction adds in an order of its own choosing): data is gathered and the
+// caller adds it in the serial order, so the bits match the single-process run.
+// The only reductions are max and the integer sum, which are exact in any order.
+#include <cstdint>
+#include <vector>
+
+namespace mesowave::dem {
+
+class Domain {
+public:
+  virtual ~Domain() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  /// In place: rank r's part data[displs[r] .. displs[r] + counts[r]) (doubles) is copied to
+  /// every rank; the parts must not overlap.
+  virtual void share(double* data, const std::vector<int>& counts, const std::vector<int>& displs) = 0;
+  /// recv gets every rank's `send` (counts[r] doubles each), in rank order at displs[r].
+  virtual void gather_all(const double* send, int count, double* recv, const std::vector<int>& counts,
+                          const std::vector<int>& displs) = 0;
+  /// The largest of every rank's value (exact in any order).
+  virtual double max(double value) = 0;
+  /// The sum of every rank's count (integers: exact in any order).
+  virtual std::uint64_t sum(std::uint64_t count) = 0;
+};
+
+}  // namespace mesowave::dem

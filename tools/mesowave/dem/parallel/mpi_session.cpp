@@ -1,0 +1,77 @@
+#include "mesowave/dem/parallel/mpi_session.hpp"
+
+#include <cstdlib>
+#include <string>
+
+#include "mesowave/core/error.hpp"
+
+#ifdef MESOWAVE_HAVE_MPI
+#include <mpi.h>  // the C API (OMPI_SKIP_MPICXX: no C++ bindings to link)
+#endif
+
+namespace mesowave::dem {
+namespace {
+
+// The world size a launcher announces (1 when none started this process).
+int launched_size() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "MPI_LOCALNRANKS"})
+    if (const char* v = std::getenv(name)) return std::max(1, std::atoi(v));
+  return std::getenv("PMIX_RANK") ? 2 : 1;  // a PMIx launch without a size: initialise and ask MPI
+}
+
+#ifdef MESOWAVE_HAVE_MPI
+// The collective operations over MPI_COMM_WORLD. MPI is called only from the
+// thread that initialised it, outside the step's OpenMP region (MPI_THREAD_FUNNELED).
+class MpiDomain final : public Domain {
+public:
+  MpiDomain(int rank, int size) : rank_(rank), size_(size) {}
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+  void share(double* data, const std::vector<int>& counts, const std::vector<int>& displs) override {
+    MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, data, counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  }
+  void gather_all(const double* send, int count, double* recv, const std::vector<int>& counts,
+                  const std::vector<int>& displs) override {
+    MPI_Allgatherv(send, count, MPI_DOUBLE, recv, counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  }
+  double max(double value) override {
+    double out = 0;
+    MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    return out;
+  }
+  std::uint64_t sum(std::uint64_t count) override {
+    unsigned long long in = count, out = 0;
+    MPI_Allreduce(&in, &out, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+    return out;
+  }
+
+private:
+  int rank_, size_;
+};
+#endif
+
+}  // namespace
+
+MpiSession::MpiSession(int& argc, char**& argv) {
+  if (launched_size() <= 1) return;
+#ifdef MESOWAVE_HAVE_MPI
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  initialised_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  if (size_ > 1) domain_ = std::make_unique<MpiDomain>(rank_, size_);
+#else
+  (void)argc, (void)argv;
+  throw InputError("started by an MPI launcher for several ranks, but this build has no MPI (install "
+                   "libopenmpi-dev and configure again)");
+#endif
+}
+
+MpiSession::~MpiSession() {
+#ifdef MESOWAVE_HAVE_MPI
+  if (initialised_) MPI_Finalize();
+#endif
+}
+
+}  // namespace mesowave::dem

@@ -1,0 +1,38 @@
+#pragma once
+// MPI for a tool's main (docs/mpi.md): `mpirun -np N mw-dem run ...` runs N ranks
+// of one simulation. MPI is initialised only when the process was started by an
+// MPI launcher (OpenMPI's mpirun sets OMPI_COMM_WORLD_SIZE; PMIx and PMI launchers
+// PMIX_RANK / PMI_SIZE); a plain run never touches MPI and is the single-process
+// engine, unchanged. Under a launcher with one rank the run is the plain one too.
+//
+// The session finalises MPI when it goes out of scope. A build without MPI
+// (MESOWAVE_HAVE_MPI unset: libopenmpi-dev missing at configure time) refuses a
+// launch with more than one rank in one line rather than running N copies.
+#include <memory>
+
+#include "mesowave/dem/parallel/domain.hpp"
+
+namespace mesowave::dem {
+
+class MpiSession {
+public:
+  /// InputError if started with several ranks by a build without MPI.
+  MpiSession(int& argc, char**& argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  /// Rank 0 writes the outputs and records the run; the others only compute.
+  bool is_root() const { return rank_ == 0; }
+  /// The ranks as the engine takes them (SimulationOptions::domain); nullptr for a single rank.
+  Domain* domain() { return domain_.get(); }
+
+private:
+  int rank_ = 0, size_ = 1;
+  bool initialised_ = false;
+  std::unique_ptr<Domain> domain_;
+};
+
+}  // namespace mesowave::dem
