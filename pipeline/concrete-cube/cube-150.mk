@@ -24,15 +24,17 @@ C150_MATERIAL.$(C150_CHOICE_DYNAMIC) := $(C150_OUT)/calibration-dynamic.json
 C150_MATERIAL.$(C150_CHOICE_STATIC) := $(CC_MATERIAL)
 C150_CHOICES := $(sort $(C150_CHOICE_STATIC) $(C150_CHOICE_DYNAMIC))
 # How mw-upv picks the DEM's records (docs/cube-150.md, "Picking a noise-free record"). The DEM
-# record has no pre-trigger: its first 3 us, before any motion can reach the far face at one bond
-# a step, are the noise window (all zeros). Without noise, Maeda's AIC finds the lattice's
+# record has no pre-trigger: its first 3 us (1 us on the 50 mm cube), before any motion can reach
+# the far face at one bond (at most 2.2 mm) a step of 50 ns, are the noise window (all zeros). Without noise, Maeda's AIC finds the lattice's
 # numerical precursor (1e-6 of the peak, long before the wave), so the P onset is the first
 # crossing of 2 % of the peak (threshold picker, as a pulse analyser's); the S onset is mw-upv's
 # S chain after that t_p (AIC up to the S envelope's peak, from 1.3 t_p), where the P wave's
 # coda sets the AIC's noise.
-C150_RECORD := --noise-window-us 0,3 --amplitude-column 'R [m/s]'
-C150_P_PICK := --picker threshold --locate-relative 0.02 $(C150_RECORD)
-C150_S_PICK := --picker aic $(C150_RECORD)
+C150_NOISE_US.150 := 0,3
+C150_NOISE_US.50 := 0,1
+c150_record = --noise-window-us $(C150_NOISE_US.$1) --amplitude-column 'R [m/s]'
+C150_P_PICK := --picker threshold --locate-relative 0.02
+C150_S_PICK := --picker aic
 
 $(C150_OUT)/packing.h5 $(C150_OUT)/packing.json &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
     $(CC_OUT)/density.json $(BIN)/mw-pack
@@ -48,40 +50,50 @@ $(C150_OUT)/calibration-dynamic.json $(C150_OUT)/calibration-dynamic-trials.csv 
 	@mkdir -p $(@D)
 	$(call cc_calibrate,dynamic,$(C150_OUT)/calibration-dynamic-trials,$(C150_OUT)/calibration-dynamic)
 
-# One wave run per transducer pair and calibration: upv-p-<choice>.h5/.csv/.json, upv-s-<choice>.*
+# One wave run per size, transducer pair and calibration: upv<size>-p-<choice>.h5/.csv/.json and
+# upv<size>-s-<choice>.*; size 150 is the lab's cube, 50 the same test scaled by 1/3 on step 5's
+# packing (scenes/upv50-*.toml: three times the frequency, the same wavelengths per path), a check
+# at 1/30 of the cost. $1 the choice, $2 p or s, $3 the size.
+C150_SIZES := 150 50
+C150_PACKING.150 := $(C150_OUT)/packing.h5
+C150_PACKING.50 := $(CC_OUT)/packing.h5
 define C150_RUNS
-$(C150_OUT)/upv-$2-$1.h5 $(C150_OUT)/upv-$2-$1.csv $(C150_OUT)/upv-$2-$1.json &: $(CC_NOTES)/scenes/upv150-$2.toml \
-    $(CC_LAB)/upv-experiment-$2.toml $(C150_OUT)/packing.h5 $(C150_MATERIAL.$1) $(BIN)/mw-dem
-	$(BIN)/mw-dem --from $(C150_MATERIAL.$1) run $(CC_NOTES)/scenes/upv150-$2.toml --packing $(C150_OUT)/packing.h5 \
-	  --quiet --signals $(C150_OUT)/upv-$2-$1.h5 --signals-csv $(C150_OUT)/upv-$2-$1.csv \
-	  --summary $(C150_OUT)/upv-$2-$1.json > /dev/null
+$(C150_OUT)/upv$3-$2-$1.h5 $(C150_OUT)/upv$3-$2-$1.csv $(C150_OUT)/upv$3-$2-$1.json &: $(CC_NOTES)/scenes/upv$3-$2.toml \
+    $(CC_LAB)/upv-experiment-$2$(if $(filter 50,$3),-50mm).toml $(C150_PACKING.$3) $(C150_MATERIAL.$1) $(BIN)/mw-dem
+	@mkdir -p $$(@D)
+	$(BIN)/mw-dem --from $(C150_MATERIAL.$1) run $(CC_NOTES)/scenes/upv$3-$2.toml --packing $(C150_PACKING.$3) \
+	  --quiet --signals $(C150_OUT)/upv$3-$2-$1.h5 --signals-csv $(C150_OUT)/upv$3-$2-$1.csv \
+	  --summary $(C150_OUT)/upv$3-$2-$1.json > /dev/null
 endef
+# The P pick first (threshold), then the S chain after it (AIC); the second run reads the first's t_p.
 define C150_PICKS
-$(C150_OUT)/upv-tp-$1.json $(C150_OUT)/upv-p-$1.png &: $(C150_OUT)/upv-p-$1.csv $(BIN)/mw-upv
-	$(BIN)/mw-upv --path-mm $(C150_SIDE_MM) --p-wave $(C150_OUT)/upv-p-$1.csv $(C150_P_PICK) \
-	  --plot $(C150_OUT)/upv-p-$1.png --title "150 mm DEM cube, calibration '$1': P transducers (54 kHz), the pick" \
-	  --out $(C150_OUT)/upv-tp-$1.json > /dev/null
-$(C150_OUT)/upv-picks-$1.json $(C150_OUT)/upv-s-$1.png &: $(C150_OUT)/upv-tp-$1.json $(C150_OUT)/upv-s-$1.csv \
+$(C150_OUT)/upv$2-tp-$1.json $(C150_OUT)/upv$2-p-$1.png &: $(C150_OUT)/upv$2-p-$1.csv $(BIN)/mw-upv
+	$(BIN)/mw-upv --path-mm $2 --p-wave $(C150_OUT)/upv$2-p-$1.csv $(C150_P_PICK) $(call c150_record,$2) \
+	  --plot $(C150_OUT)/upv$2-p-$1.png --title "$2 mm DEM cube, calibration '$1': P transducers, the pick" \
+	  --out $(C150_OUT)/upv$2-tp-$1.json > /dev/null
+$(C150_OUT)/upv$2-picks-$1.json $(C150_OUT)/upv$2-s-$1.png &: $(C150_OUT)/upv$2-tp-$1.json $(C150_OUT)/upv$2-s-$1.csv \
     $(CC_OUT)/density.json $(BIN)/mw-upv
-	$(BIN)/mw-upv --from $(C150_OUT)/upv-tp-$1.json --from $(CC_OUT)/density.json --s-wave $(C150_OUT)/upv-s-$1.csv \
-	  $(C150_S_PICK) --plot $(C150_OUT)/upv-s-$1.png \
-	  --title "150 mm DEM cube, calibration '$1': S transducers (40 kHz), the pick" --out $(C150_OUT)/upv-picks-$1.json > /dev/null
+	$(BIN)/mw-upv --from $(C150_OUT)/upv$2-tp-$1.json --from $(CC_OUT)/density.json --s-wave $(C150_OUT)/upv$2-s-$1.csv \
+	  $(C150_S_PICK) $(call c150_record,$2) --plot $(C150_OUT)/upv$2-s-$1.png \
+	  --title "$2 mm DEM cube, calibration '$1': S transducers, the pick" --out $(C150_OUT)/upv$2-picks-$1.json > /dev/null
 endef
-$(foreach c,$(C150_CHOICES),$(foreach k,p s,$(eval $(call C150_RUNS,$c,$k)))$(eval $(call C150_PICKS,$c)))
+$(foreach c,$(C150_CHOICES),$(foreach z,$(C150_SIZES),$(foreach k,p s,$(eval $(call C150_RUNS,$c,$k,$z)))$(eval $(call C150_PICKS,$c,$z))))
 
-# The picks beside the lab's (upv.toml: t_p, t_s; upv.json: v_p, v_s, E_d, nu_d of step 3).
-$(C150_OUT)/upv150.csv: $(CC_LAB)/upv.toml $(CC_OUT)/upv.json $(foreach c,$(C150_CHOICES),$(C150_OUT)/upv-picks-$c.json \
-    $(C150_MATERIAL.$c)) $(BIN)/mw-table
+# The picks beside the lab's (upv.toml: t_p, t_s; upv.json: v_p, v_s, E_d, nu_d of step 3); the
+# 50 mm rows' times are over 50 mm (x 3 for the 150 mm path), their velocities compare directly.
+$(C150_OUT)/upv150.csv: $(CC_LAB)/upv.toml $(CC_OUT)/upv.json $(foreach c,$(C150_CHOICES),$(foreach z,$(C150_SIZES),\
+    $(C150_OUT)/upv$z-picks-$c.json) $(C150_MATERIAL.$c)) $(BIN)/mw-table
 	$(BIN)/mw-table gather --key-name record --row "measured (upv.toml; step 3)=$(CC_LAB)/upv.toml,$(CC_OUT)/upv.json" \
-	  $(foreach c,$(C150_CHOICES),--row "DEM calibrated to $c=$(C150_OUT)/upv-picks-$c.json,$(C150_MATERIAL.$c)") \
-	  --column "t_p_us=t_p_us|t_p" --column "t_s_us=t_s_us|t_s" --column v_p_m_s --column v_s_m_s --column E_d_GPa \
-	  --column nu_d --column "E_glob_GPa=E_glob_GPa|E_d_GPa" --column "nu_glob=nu_glob|nu_d" \
+	  $(foreach c,$(C150_CHOICES),$(foreach z,$(C150_SIZES),--row "DEM $z mm; calibrated to $c=$(C150_OUT)/upv$z-picks-$c.json,$(C150_MATERIAL.$c)")) \
+	  --column path_mm --column "t_p_us=t_p_us|t_p" --column "t_s_us=t_s_us|t_s" --column v_p_m_s --column v_s_m_s \
+	  --column E_d_GPa --column nu_d --column "E_glob_GPa=E_glob_GPa|E_d_GPa" --column "nu_glob=nu_glob|nu_d" \
 	  --significant-digits 4 --csv $@ > /dev/null
 
 # What each wave run cost (wall time and peak memory of every run: mw-prov runs --tool mw-dem).
-$(C150_OUT)/upv150-cost.csv: $(foreach c,$(C150_CHOICES),$(foreach k,p s,$(C150_OUT)/upv-$k-$c.json)) $(BIN)/mw-table
+$(C150_OUT)/upv150-cost.csv: $(foreach c,$(C150_CHOICES),$(foreach z,$(C150_SIZES),$(foreach k,p s,$(C150_OUT)/upv$z-$k-$c.json))) \
+    $(BIN)/mw-table
 	$(BIN)/mw-table gather --key-name run \
-	  $(foreach c,$(C150_CHOICES),$(foreach k,p s,--row "$k, $c=$(C150_OUT)/upv-$k-$c.json")) \
+	  $(foreach c,$(C150_CHOICES),$(foreach z,$(C150_SIZES),$(foreach k,p s,--row "$z mm $k; $c=$(C150_OUT)/upv$z-$k-$c.json"))) \
 	  --column model --column spheres --column bonds --column threads --column steps --column setup_s --column wall_s \
 	  --column steps_per_s --column memory_estimate_MiB --column peak_force_ratio --significant-digits 4 --csv $@ > /dev/null
 
@@ -92,7 +104,7 @@ $(C150_OUT)/packing150.csv: $(C150_OUT)/packing.json $(CC_OUT)/packing.json $(BI
 	  --column wall_time_s --significant-digits 5 --csv $@ > /dev/null
 
 C150_RESULTS := $(C150_OUT)/packing150.csv $(C150_OUT)/upv150.csv $(C150_OUT)/upv150-cost.csv \
-  $(foreach c,$(C150_CHOICES),$(C150_OUT)/upv-p-$c.png $(C150_OUT)/upv-s-$c.png)
+  $(foreach c,$(C150_CHOICES),$(foreach z,$(C150_SIZES),$(C150_OUT)/upv$z-p-$c.png $(C150_OUT)/upv$z-s-$c.png))
 
 .PHONY: cube-150
 cube-150: $(C150_RESULTS)
