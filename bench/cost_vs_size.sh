@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # Cost against size (issue 17, item 5; docs/benchmarks.md "Cost against size"): for cubes of the
 # concrete paper's spheres (p = 7 %, d = 1.6-2.0 mm) from about 10k to 1.1M spheres,
-#  - the packing: mw-pack box --cube-side-mm SIDE (wall, peak RSS), or an existing packing's
-#    numbers when one is given (SIDE:FILE; its wall time from its summary, its memory not known);
-#  - the wave step: short mw-dem runs of the 50 mm cube's wave scene on that packing (sensors and
-#    actuator at the same fractions), linearised network and full law, one thread each (the
-#    machine is shared: the load average is printed before every run);
-# one row per run as CSV, then the exponent b of wall per step ~ spheres^b fitted on the rows
-# (least squares in log-log), per model; bench/cost_vs_size_plot.gp draws the CSV.
+#  - the packing: mw-pack box --cube-side-mm SIDE (wall, CPU, peak RSS), or an existing packing's
+#    wall time from its summary when one is given (SIDE:FILE);
+#  - the wave step: bench_dem's step benchmarks on that packing (MESOWAVE_BENCH_PACKING), the
+#    linearised network and the full law, one thread: wall and CPU per step (the machine is shared:
+#    CPU time is the steadier figure; the load average is printed before every run), and the
+#    benchmark process's peak RSS (the larger of the two models, built one after the other);
+# one row per size and model as CSV, then the exponent b of cost ~ spheres^b fitted on the rows
+# (least squares in log-log); bench/cost_vs_size.gp draws the CSV.
 #
 #   bench/cost_vs_size.sh OUT_DIR SIDE[:PACKING] ...    e.g. bench/cost_vs_size.sh /tmp/cvs 32 50:results/concrete-cube/packing.h5 75 150:big.h5
-# STEPS (default 200) steps a run, THREADS (default 1), BIN (default build/bin).
+# BIN (default build/bin).
 set -euo pipefail
 out=${1:?OUT_DIR}; shift
 BIN=${BIN:-build/bin}
@@ -21,41 +22,36 @@ mkdir -p "$out"
 csv=$out/cost-vs-size.csv
 load() { cut -d' ' -f1 /proc/loadavg; }
 echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u +%FT%TZ)" >&2
-echo "side_mm,spheres,bonds,pack_wall_s,pack_peak_rss_MiB,model,threads,steps,setup_s,run_wall_s,ms_per_step,ns_per_bond_step,peak_rss_MiB,bytes_per_sphere,load" > "$csv"
+echo "side_mm,spheres,bonds,pack_wall_s,pack_cpu_s,pack_peak_rss_MiB,model,wall_ms_per_step,cpu_ms_per_step,cpu_ns_per_bond_step,bench_peak_rss_MiB,bytes_per_sphere,load" > "$csv"
 for spec in "$@"; do
   side=${spec%%:*}; packing=${spec#*:}
+  pack_cpu=; pack_rss=
   if [ "$packing" = "$spec" ]; then
     packing=$out/packing-${side}mm.h5
     echo "# $(date -u +%T) load $(load): mw-pack box --cube-side-mm $side" >&2
-    /usr/bin/time -f '%e %M' -o "$out/pack-$side.time" "$BIN/mw-pack" box --threads "$THREADS" --cube-side-mm "$side" \
+    /usr/bin/time -f '%e %U %S %M' -o "$out/pack-$side.time" "$BIN/mw-pack" box --threads 1 --cube-side-mm "$side" \
       --porosity-pct 7 --d-min-mm 1.6 --d-max-mm 2 --density-kg-m3 2129.56 --detection-factor 1.1 --quiet \
-      --packing "$packing" --out "$out/pack-$side.json" > /dev/null
-    read -r pack_wall pack_rss < "$out/pack-$side.time"; pack_rss=$((pack_rss / 1024))
-  else
-    summary=${packing%.h5}.json
-    pack_wall=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1])).get('wall_time_s', ''))" "$summary" 2>/dev/null || true)
-    pack_rss=
+      --packing "$packing" --out "${packing%.h5}.json" > /dev/null
+    read -r pack_wall u sy pack_rss < "$out/pack-$side.time"
+    pack_cpu=$(awk -v u="$u" -v s="$sy" 'BEGIN { print u + s }'); pack_rss=$((pack_rss / 1024))
   fi
-  # STEPS steps of the scene's 50 ns.
-  duration_ms=$(awk -v n="$STEPS" 'BEGIN { printf "%.6g", n * 50e-9 * 1e3 }')
-  for model in linear full; do
-    l=$(load)
-    echo "# $(date -u +%T) load $l: mw-dem run --packing $packing --model $model ($STEPS steps)" >&2
-    /usr/bin/time -f '%e %M' -o "$out/run.time" "$BIN/mw-dem" run "$SCENE" --packing "$packing" --model "$model" \
-      --threads "$THREADS" --frequency-kHz 100 --duration-ms "$duration_ms" --quiet --signals "$out/run.h5" \
-      --summary "$out/run-$side-$model.json" > /dev/null
-    read -r _ rss < "$out/run.time"
-    python3 - "$out/run-$side-$model.json" "$side" "$pack_wall" "$pack_rss" "$rss" "$l" >> "$csv" <<'PY'
+  pack_wall=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1])).get('wall_time_s', ''))" "${packing%.h5}.json" 2>/dev/null || true)
+  l=$(load)
+  echo "# $(date -u +%T) load $l: bench_dem on $packing (1 thread)" >&2
+  MESOWAVE_BENCH_PACKING=$packing /usr/bin/time -f '%M' -o "$out/bench.time" "$BIN/bench_dem" \
+    --benchmark_filter='BM_(FullLaw|LinearNetwork)Step/1/' --benchmark_format=json > "$out/bench-$side.json"
+  python3 - "$out/bench-$side.json" "$side" "$pack_wall" "$pack_cpu" "$pack_rss" "$(cat "$out/bench.time")" "$l" >> "$csv" <<'PY'
 import json, sys
-s = json.load(open(sys.argv[1]))
-side, pack_wall, pack_rss, rss, load = sys.argv[2:]
+b = json.load(open(sys.argv[1]))["benchmarks"]
+side, pack_wall, pack_cpu, pack_rss, rss, load = sys.argv[2:]
 rss_mib = int(rss) / 1024
-ms = 1e3 * (s["wall_s"] - s["setup_s"]) / s["steps"]
-print(f"{side},{s['spheres']},{s['bonds']},{pack_wall},{pack_rss},{s['model']},{s['threads']},{s['steps']},"
-      f"{s['setup_s']:.3f},{s['wall_s']:.3f},{ms:.4g},{1e6 * ms / s['bonds']:.4g},{rss_mib:.0f},"
-      f"{rss_mib * 1048576 / s['spheres']:.0f},{load}")
+for r in b:
+    model = "full" if "FullLaw" in r["name"] else "linear"
+    scale = {"ms": 1.0, "us": 1e-3, "ns": 1e-6}[r["time_unit"]]
+    wall, cpu = r["real_time"] * scale, r["cpu_time"] * scale
+    print(f"{side},{int(r['spheres'])},{int(r['bonds'])},{pack_wall},{pack_cpu},{pack_rss},{model},{wall:.4g},{cpu:.4g},"
+          f"{1e6 * cpu / r['bonds']:.4g},{rss_mib:.0f},{rss_mib * 1048576 / r['spheres']:.0f},{load}")
 PY
-  done
 done
 cat "$csv"
 python3 - "$csv" <<'PY'
@@ -68,9 +64,15 @@ def fit(xs, ys):
 for model in ("linear", "full"):
     r = [x for x in rows if x["model"] == model]
     if len(r) >= 2:
-        print(f"exponent of ms/step against spheres, {model}: {fit([float(x['spheres']) for x in r], [float(x['ms_per_step']) for x in r]):.3f}")
-        print(f"exponent of peak RSS against spheres, {model}: {fit([float(x['spheres']) for x in r], [float(x['peak_rss_MiB']) for x in r]):.3f}")
-p = [x for x in rows if x["model"] == "linear" and x["pack_wall_s"]]
-if len(p) >= 2:
-    print(f"exponent of packing wall against spheres: {fit([float(x['spheres']) for x in p], [float(x['pack_wall_s']) for x in p]):.3f}")
+        n = [float(x["spheres"]) for x in r]
+        print(f"{model}: exponent of CPU per step against spheres {fit(n, [float(x['cpu_ms_per_step']) for x in r]):.3f}, "
+              f"of wall per step {fit(n, [float(x['wall_ms_per_step']) for x in r]):.3f}")
+r = [x for x in rows if x["model"] == "linear"]
+if len(r) >= 2:
+    n = [float(x["spheres"]) for x in r]
+    print(f"exponent of the benchmark's peak RSS against spheres: {fit(n, [float(x['bench_peak_rss_MiB']) for x in r]):.3f}")
+    p = [(a, float(x["pack_wall_s"])) for a, x in zip(n, r) if x["pack_wall_s"]]
+    if len(p) >= 2: print(f"exponent of the packing's wall against spheres: {fit([a for a, _ in p], [b for _, b in p]):.3f}")
+    p = [(a, float(x["pack_cpu_s"])) for a, x in zip(n, r) if x["pack_cpu_s"]]
+    if len(p) >= 2: print(f"exponent of the packing's CPU against spheres: {fit([a for a, _ in p], [b for _, b in p]):.3f}")
 PY
