@@ -10,7 +10,7 @@
 #   step-6-calibration.mk  step 6: calibration and Table 2
 #   waves.mk               the wave test at 100-500 kHz, its continuum reference, PCC (Table 3), figures
 #   speed.mk               speed against error
-#   cube-150.mk            the lab's 150 mm cube against its UPV test (make cube-150; not in make reproduce)
+#   cube-150.mk            the lab's 150 mm cube against its UPV test (make concrete-cube-150; not in make reproduce)
 
 # Study prefix: CC (make variables CC_*, functions cc_*; scripts/new-study renames them).
 PIPELINE_GOALS += concrete-cube-summary concrete-cube-raw-summary concrete-cube-calibration-summary \
