@@ -6,7 +6,7 @@
 # E_dem, nu_dem and T = C (friction angle 18 deg, given) from the paper's values
 # (the scene's material) until E_glob, nu_glob and the peak stress meet the
 # targets (CC_CALIBRATION_TARGETS below: the static tests, static-test.toml, or the lab's own step-4
-# results, raw-compress.json) within 1 % on E, 0.01 on nu and 2 % on strength
+# results, raw-compress.json; or the dynamic moduli, upv.json) within 1 % on E, 0.01 on nu and 2 % on strength
 # (docs/calibration.md). Every trial is a recorded mw-dem run; calibration.json
 # is the material of the wave runs (CC_MATERIAL, read by `mw-dem --from`).
 #
@@ -22,16 +22,30 @@ CC_CALIBRATION_TRIALS := $(CC_OUT)/calibration
 #   raw-step-4   the lab's own step 4: E_st_measured_GPa and sigma_max_MPa of raw-compress.json
 #                (mw-compress on the load-frame records, raw-steps-2-4.mk); nu_st stays static-test.toml's
 #                (the paper takes nu_d; the records have no lateral strain). The last --from file wins.
+#   dynamic      the dynamic moduli of step 3 (E_d_GPa and nu_d of upv.json, mw-upv on the UPV test;
+#                mw-calibrate --E-d-GPa/--nu-d), so that the model carries waves at the measured pulse
+#                velocities; the strength stays static-test.toml's sigma_max (docs/cube-150.md).
 #   make reproduce-quick CC_CALIBRATION_TARGETS=raw-step-4
 # calibration.json and calibration-targets.csv (the report, under Table 2) say which file, entry and
 # SHA-256 each target came from.
 CC_CALIBRATION_TARGETS := static-test
 CC_CALIBRATION_TARGET_FILES.static-test := $(CC_LAB)/static-test.toml
 CC_CALIBRATION_TARGET_FILES.raw-step-4 := $(CC_LAB)/static-test.toml $(CC_OUT)/raw-compress.json
+CC_CALIBRATION_TARGET_FILES.dynamic := $(CC_LAB)/static-test.toml $(CC_OUT)/upv.json
+# upv.json's density is a product for mw-estatic and mw-fem; the calibration takes the packing's.
+CC_CALIBRATION_TARGET_FLAGS.dynamic := --from-ignore density_kg_m3
 CC_CALIBRATION_TARGET_FILES := $(CC_CALIBRATION_TARGET_FILES.$(CC_CALIBRATION_TARGETS))
 ifeq ($(strip $(CC_CALIBRATION_TARGET_FILES)),)
-$(error CC_CALIBRATION_TARGETS = '$(CC_CALIBRATION_TARGETS)' is not a choice: static-test or raw-step-4)
+$(error CC_CALIBRATION_TARGETS = '$(CC_CALIBRATION_TARGETS)' is not a choice: static-test, raw-step-4 or dynamic)
 endif
+
+# mw-calibrate cube for one choice of targets: $1 the choice, $2 the trials' folder, $3 the output
+# prefix ($3.json, $3-trials.csv, $3-targets.csv, $3-trajectory.png, $3-stress-strain.png). The
+# pipeline's calibration is the chosen one; cube-150.mk runs a second choice beside it.
+cc_calibrate = rm -rf $2 && $(BIN)/mw-calibrate $(addprefix --from ,$(CC_CALIBRATION_TARGET_FILES.$1)) \
+  $(CC_CALIBRATION_TARGET_FLAGS.$1) cube --scene $(CC_COMPRESSION_SCENE) --packing $(CC_OUT)/packing.h5 --work-dir $2 \
+  --trials $3-trials.csv --targets-csv $3-targets.csv --plot-trajectory $3-trajectory.png \
+  --plot-curves $3-stress-strain.png --out $3.json > /dev/null
 
 # The choice as a file, rewritten only when it changes: switching re-runs the calibration and
 # what follows it, switching back re-runs it again, and a second make with the same choice runs nothing.
@@ -47,11 +61,7 @@ concrete-cube-calibration-choice-check:
 $(CC_OUT)/calibration.json $(CC_OUT)/calibration-trials.csv $(CC_OUT)/calibration-targets.csv \
     $(CC_OUT)/calibration-trajectory.png $(CC_OUT)/calibration-stress-strain.png &: $(CC_COMPRESSION_SCENE) \
     $(CC_OUT)/packing.h5 $(CC_CALIBRATION_TARGET_FILES) $(CC_CALIBRATION_CHOICE) $(BIN)/mw-calibrate $(BIN)/mw-dem
-	rm -rf $(CC_CALIBRATION_TRIALS)
-	$(BIN)/mw-calibrate $(addprefix --from ,$(CC_CALIBRATION_TARGET_FILES)) cube --scene $(CC_COMPRESSION_SCENE) \
-	  --packing $(CC_OUT)/packing.h5 --work-dir $(CC_CALIBRATION_TRIALS) --trials $(CC_OUT)/calibration-trials.csv \
-	  --targets-csv $(CC_OUT)/calibration-targets.csv --plot-trajectory $(CC_OUT)/calibration-trajectory.png \
-	  --plot-curves $(CC_OUT)/calibration-stress-strain.png --out $(CC_OUT)/calibration.json > /dev/null
+	$(call cc_calibrate,$(CC_CALIBRATION_TARGETS),$(CC_CALIBRATION_TRIALS),$(CC_OUT)/calibration)
 
 $(CC_OUT)/compression-paper-parameters.json $(CC_OUT)/compression-paper-parameters.csv \
     $(CC_OUT)/compression-paper-parameters.h5 &: $(CC_COMPRESSION_SCENE) $(CC_OUT)/packing.h5 \

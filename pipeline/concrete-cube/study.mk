@@ -10,6 +10,7 @@
 #   step-6-calibration.mk  step 6: calibration and Table 2
 #   waves.mk               the wave test at 100-500 kHz, its continuum reference, PCC (Table 3), figures
 #   speed.mk               speed against error
+#   cube-150.mk            the lab's 150 mm cube against its UPV test (make concrete-cube-150; not in make reproduce)
 
 # Study prefix: CC (make variables CC_*, functions cc_*; scripts/new-study renames them).
 PIPELINE_GOALS += concrete-cube-summary concrete-cube-raw-summary concrete-cube-calibration-summary \
@@ -30,3 +31,4 @@ include pipeline/concrete-cube/step-5-packing.mk
 include pipeline/concrete-cube/step-6-calibration.mk
 include pipeline/concrete-cube/waves.mk
 include pipeline/concrete-cube/speed.mk
+include pipeline/concrete-cube/cube-150.mk

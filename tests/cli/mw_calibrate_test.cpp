@@ -154,3 +154,26 @@ TEST(MwCalibrate, RefusesTargetsNoPackingReaches) {
     EXPECT_FALSE(fs::exists(dir / "out.json"));
   }
 }
+
+// The dynamic calibration (CC_CALIBRATION_TARGETS=dynamic): --E-d-GPa and --nu-d take the place of
+// E_st and nu_st, so a bad one is refused by its own name before any trial runs, even beside good
+// static targets (which they replace; the strength stays --sigma-max-MPa's).
+TEST(MwCalibrate, DynamicTargetsReplaceTheStaticOnesAndAreCheckedByTheirName) {
+  test::TempDir dir;
+  const fs::path cube = small_cube(dir);
+  auto calibrate = [&](const std::vector<std::string>& dynamic) {
+    std::vector<std::string> args = {"cube", "--scene", kCompression, "--packing", cube.string(), "--E-st-measured-GPa",
+                                     "27.42", "--nu-st", "0.16", "--sigma-max-MPa", "66", "--work-dir",
+                                     (dir / "w").string(), "--out", (dir / "out.json").string()};
+    args.insert(args.end(), dynamic.begin(), dynamic.end());
+    return run_tool("mw-calibrate", args);
+  };
+  const auto bad_E = calibrate({"--E-d-GPa", "-36.67", "--nu-d", "0.16"});
+  EXPECT_EQ(bad_E.exit_status, 1);
+  EXPECT_NE(bad_E.err.find("--E-d-GPa (-36.67 GPa) must be positive"), std::string::npos) << bad_E.err;
+  const auto bad_nu = calibrate({"--E-d-GPa", "36.67", "--nu-d", "0.55"});
+  EXPECT_EQ(bad_nu.exit_status, 1);
+  EXPECT_NE(bad_nu.err.find("must lie in (0, 0.5)"), std::string::npos) << bad_nu.err;
+  EXPECT_FALSE(fs::exists(dir / "out.json"));
+  EXPECT_FALSE(fs::exists(dir / "w" / "trial-01.json"));
+}

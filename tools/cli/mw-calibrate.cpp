@@ -27,11 +27,12 @@ int main(int argc, char** argv) {
       "cube: E_dem, nu_dem and T (C = T by default) so that the virtual compression test gives E_st, nu_st and "
       "sigma_max within tolerance, as options or --from the static tests (static-test.toml) or mw-compress's JSON of the "
       "lab's own records (E_st_measured_GPa, sigma_max_MPa; nu_st then from a second file: the records have no lateral "
-      "strain); the result records each target's origin (file, entry, SHA-256; --targets-csv). Elastic trials "
-      "(unbreakable bonds, to sigma_max / 3) fix E_dem (E_glob is proportional to it) and nu_dem (secant on nu_glob); failure trials (the full law) fix T (secant on the peak "
-      "stress) and correct E_dem and nu_dem from the same runs (their modulus: the secant from 10 % to 1/3 of the peak).\n"
-      "rod: the contact modulus E_dem (K_n = E_dem R) so that the chain's tension test gives the rod's E (E_DEM = K_n d / "
-      "(pi R^2), proportional to E_dem: one rescaled trial and a check); rho_p is the packing's (mw-pack line).\n\n"
+      "strain), or mw-upv's E_d and nu_d in their place (--E-d-GPa, --nu-d: the dynamic calibration); the result "
+      "records each target's origin (file, entry, SHA-256; --targets-csv). Elastic trials (unbreakable bonds, to "
+      "sigma_max / 3) fix E_dem (E_glob is proportional to it) and nu_dem (secant on nu_glob); failure trials (the full "
+      "law) fix T (secant on the peak stress) and correct E_dem and nu_dem from the same runs (their modulus: the secant from "
+      "10 % to 1/3 of the peak).\nrod: the contact modulus E_dem (K_n = E_dem R) so that the chain's tension test gives the "
+      "rod's E (E_DEM = K_n d / (pi R^2), proportional to E_dem: one rescaled trial and a check); rho_p is the packing's (mw-pack line).\n\n"
       "  mw-calibrate cube --scene pipeline/concrete-cube/scenes/cube-compression.toml --from "
       "lab-data/concrete-cube/static-test.toml --start-E-dem-GPa 10 --start-nu-dem 0.1 --start-T-MPa 10 --work-dir "
       "calib --out calibration.json --trials trials.csv --plot-trajectory trajectory.png --plot-curves curves.png\n"
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
 
   fs::path scene_path, packing_path, work_dir, out, trials_csv, targets_csv, plot_trajectory, plot_curves, mw_dem_path, experiment_path;
   int threads = 0, max_trials = 12;
+  std::string elastic_trials = "dynamic";
   auto common = [&](CLI::App* sub) {
     sub->add_option("--scene", scene_path, "The virtual test (TOML with a [test] table)")->required();
     sub->add_option("--packing", packing_path, "Packing instead of the scene's [packing] file");
@@ -56,12 +58,14 @@ int main(int argc, char** argv) {
   };
 
   double E_st_GPa = 0, nu_st = 0, sigma_MPa = 0, tol_E_pct = 1, tol_nu = 0.01, tol_sigma_pct = 2, c_over_t = 1, tol_rod_pct = 0.5;
-  std::optional<double> start_E, start_nu, start_T, friction_deg, E_rod_GPa;
+  std::optional<double> start_E, start_nu, start_T, friction_deg, E_rod_GPa, E_d_GPa, nu_d;
   auto* cube = cli.add_subcommand("cube", "Compression test of a packed specimen: E_dem, nu_dem, T = C");
   common(cube);
   cube->add_option("--E-st-measured-GPa", E_st_GPa, "Target: the static modulus E_st [GPa] (static-test.toml, mw-compress)")->required();
   cube->add_option("--nu-st", nu_st, "Target: the static Poisson ratio (the paper takes nu_d)")->required();
   cube->add_option("--sigma-max-MPa", sigma_MPa, "Target: the compressive strength [MPa]")->required();
+  cube->add_option("--E-d-GPa", E_d_GPa, "Target instead of E_st: the dynamic modulus E_d [GPa] (mw-upv's JSON)");
+  cube->add_option("--nu-d", nu_d, "Target instead of nu_st: the dynamic Poisson ratio (mw-upv's JSON)");
   cube->add_option("--start-E-dem-GPa", start_E, "First E_dem [GPa] (default: the scene's)");
   cube->add_option("--start-nu-dem", start_nu, "First nu_dem = K_s / K_n (default: the scene's)");
   cube->add_option("--start-T-MPa", start_T, "First T [MPa] (default: the scene's)");
@@ -73,7 +77,6 @@ int main(int argc, char** argv) {
   cube->add_option("--trials", trials_csv, "The trial log (CSV)");
   cube->add_option("--targets-csv", targets_csv, "CSV: each target, its tolerance, the calibrated value, where it was read from");
   cube->add_option("--plot-trajectory", plot_trajectory, "PNG: the trials against the targets");
-  std::string elastic_trials = "dynamic";
   cube->add_option("--elastic-trials", elastic_trials, "dynamic: step the elastic trials (the linearised network to "
                    "sigma_max / 3); static: one linear solve each (mw-dem run --static, docs/calibration.md); failure "
                    "trials stay dynamic")->check(CLI::IsMember({"dynamic", "static"}))->capture_default_str();
@@ -88,10 +91,9 @@ int main(int argc, char** argv) {
 
   return tool.run(argc, argv, [&](app::Run& run) {
     dem::Scene scene = dem::read_scene_file(scene_path);
-    run.input(scene_path);
     if (!scene.test.active()) throw InputError("--scene " + scene_path.string() + " has no [test] table: nothing to calibrate against");
     if (!packing_path.empty()) scene.packing_file = packing_path;
-    run.input(scene.packing_file);
+    run.input(scene_path), run.input(scene.packing_file);
     const dem::TrialCommand trial_command{mw_dem_path.empty() ? app::sibling_tool("mw-dem") : mw_dem_path, scene_path,
                                           packing_path, work_dir, tool.db_path(), threads};
     const auto run_trial = [&](int k, const std::vector<std::string>& options) {
@@ -108,14 +110,14 @@ int main(int argc, char** argv) {
                                       require_positive("--start-E-dem-GPa", start_E.value_or(m.E_dem_Pa / 1e9), "GPa"), max_trials);
       const dem::Packing chain = dem::read_packing_file(scene.packing_file);
       dem::run_trials(calibration, run_trial, std::cerr);
-      run.metric("E_DEM", calibration.result().E_DEM_GPa, "GPa");
-      run.metric("E_dem", calibration.result().E_dem_GPa, "GPa");
+      run.metric("E_DEM", calibration.result().E_DEM_GPa, "GPa"), run.metric("E_dem", calibration.result().E_dem_GPa, "GPa");
       run.emit_json(dem::rod_calibration_summary(calibration, chain, m), out);
       return;
     }
 
-    const dem::CalibrationTargets targets{require_positive("--E-st-measured-GPa", E_st_GPa, "GPa") * units::GPa, nu_st,
-                                          require_positive("--sigma-max-MPa", sigma_MPa, "MPa") * units::MPa};
+    const std::string E_option = E_d_GPa ? "--E-d-GPa" : "--E-st-measured-GPa", nu_option = nu_d ? "--nu-d" : "--nu-st";
+    const dem::CalibrationTargets targets{require_positive(E_option, E_d_GPa.value_or(E_st_GPa), "GPa") * units::GPa,
+                                          nu_d.value_or(nu_st), require_positive("--sigma-max-MPa", sigma_MPa, "MPa") * units::MPa};
     const dem::CalibrationTolerances tolerances{require_positive("--tolerance-E-pct", tol_E_pct, "%") / 100,
                                                 require_positive("--tolerance-nu", tol_nu),
                                                 require_positive("--tolerance-sigma-pct", tol_sigma_pct, "%") / 100};
@@ -127,10 +129,8 @@ int main(int argc, char** argv) {
     dem::CompressionCalibration calibration(targets, tolerances, start, max_trials);
     dem::run_trials(calibration, run_trial, mu_deg, std::cerr, elastic_trials == "static");
     const dem::CalibrationTrial& best = calibration.result();
-    run.metric("E_glob", best.E_glob_Pa / 1e9, "GPa");
-    run.metric("nu_glob", best.nu_glob, "");
-    run.metric("sigma_dem", best.peak_Pa / 1e6, "MPa");
-    run.metric("trials", double(calibration.trials().size()), "");
+    run.metric("E_glob", best.E_glob_Pa / 1e9, "GPa"), run.metric("nu_glob", best.nu_glob, "");
+    run.metric("sigma_dem", best.peak_Pa / 1e6, "MPa"), run.metric("trials", double(calibration.trials().size()), "");
     if (!trials_csv.empty()) run.write_text(trials_csv, dem::calibration_trials_csv(calibration.trials()));
     if (!plot_trajectory.empty())
       io::run_gnuplot(dem::calibration_trajectory_script(calibration, run.output(plot_trajectory),
@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
       io::run_gnuplot(dem::stress_strain_script(dem::read_trial_curve(best.summary_file), targets.E_Pa, targets.nu,
                                                 run.output(plot_curves), "Virtual compression test, calibrated parameters"));
     }
-    auto summary = dem::calibration_summary(calibration, mu_deg, {run.origin("--E-st-measured-GPa"), run.origin("--nu-st"),
+    auto summary = dem::calibration_summary(calibration, mu_deg, {run.origin(E_option), run.origin(nu_option),
                                             run.origin("--sigma-max-MPa")}, elastic_trials);
     if (!targets_csv.empty()) run.write_text(targets_csv, dem::calibration_targets_csv(summary));
     // The five values the wave runs take (mw-dem --from calibration.json); the rest is the record.

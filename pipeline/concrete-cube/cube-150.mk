@@ -1,0 +1,121 @@
+# Included by pipeline/concrete-cube/study.mk (its variables CC_*); not part of make reproduce
+# (its goals are not in PIPELINE_GOALS: about an hour on two quiet cores). docs/cube-150.md. The
+# target and the variables carry the study's name and prefix (CC_C150_*), so that a study copied by
+# `make new-study` gets its own.
+# ==== The lab's 150 mm cube against its own UPV test (issue 18, item 1) =========
+#   make concrete-cube-150   the packing, the dynamic calibration, four wave runs, the picks, the tables
+#
+# The lab measured t_p = 35.0 us and t_s = 55.1 us on 150 mm cubes (upv.toml), the only wave data
+# of this concrete; the paper modelled a 50 mm cube. Here:
+#  1. the 150 mm cube packed as step 5 packs the 50 mm one (mw-pack --cube-side-mm 150);
+#  2. two calibrations of the 50 mm cube (step 6): the pipeline's (CC_CALIBRATION_TARGETS, by
+#     default the static tests: the paper's method) and one to the dynamic moduli E_d, nu_d of
+#     step 3 (the `dynamic` choice of step-6-calibration.mk, run beside it);
+#  3. the UPV test on the 150 mm DEM cube with each calibration: the P transducers' run
+#     (scenes/upv150-p.toml: 54 kHz normal burst) and the S transducers' (upv150-s.toml: 40 kHz
+#     tangential burst), the receiver's record picked by mw-upv as a lab record (below), and the
+#     picks beside the measured ones.
+# Every tool run is recorded in $(MESOWAVE_DB); the runs' wall time and peak memory are there
+# (mw-prov runs), their spheres, bonds and steps in the summaries gathered in upv150-cost.csv.
+
+CC_C150_OUT := $(CC_OUT)/cube-150
+CC_C150_SIDE_MM := 150
+CC_C150_CHOICE_STATIC := $(CC_CALIBRATION_TARGETS)
+CC_C150_CHOICE_DYNAMIC := dynamic
+CC_C150_MATERIAL.$(CC_C150_CHOICE_DYNAMIC) := $(CC_C150_OUT)/calibration-dynamic.json
+CC_C150_MATERIAL.$(CC_C150_CHOICE_STATIC) := $(CC_MATERIAL)
+CC_C150_CHOICES := $(sort $(CC_C150_CHOICE_STATIC) $(CC_C150_CHOICE_DYNAMIC))
+# How mw-upv picks the DEM's records (docs/cube-150.md, "Picking a noise-free record"). The DEM
+# record has no pre-trigger: its first 3 us (1 us on the 50 mm cube), before any motion can reach
+# the far face at one bond (at most 2.2 mm) a step of 50 ns, are the noise window (all zeros).
+# Without noise, Maeda's AIC finds the lattice's numerical precursor (1e-6 of the peak, long before the wave), so the P onset is the first
+# crossing of 2 % of the peak (threshold picker, as a pulse analyser's); the S onset is mw-upv's
+# S chain after that t_p (AIC up to the S envelope's peak, from 1.3 t_p), where the P wave's
+# coda sets the AIC's noise.
+CC_C150_NOISE_US.150 := 0,3
+CC_C150_NOISE_US.50 := 0,1
+cc_c150_record = --noise-window-us $(CC_C150_NOISE_US.$1) --amplitude-column 'R [m/s]'
+CC_C150_P_PICK := --picker threshold --locate-relative 0.02
+CC_C150_S_PICK := --picker aic
+
+$(CC_C150_OUT)/packing.h5 $(CC_C150_OUT)/packing.json &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
+    $(CC_OUT)/density.json $(BIN)/mw-pack
+	@mkdir -p $(@D)
+	$(BIN)/mw-pack box --from $(CC_LAB)/porosity.toml --from $(CC_LAB)/dem-packing.toml --from $(CC_OUT)/density.json \
+	  --cube-side-mm $(CC_C150_SIDE_MM) --quiet --packing $(CC_C150_OUT)/packing.h5 --out $(CC_C150_OUT)/packing.json > /dev/null
+
+# The calibration to E_d and nu_d on the pipeline's 50 mm packing (the pipeline's own calibration
+# is this one when CC_CALIBRATION_TARGETS=dynamic; then the rule is not used).
+$(CC_C150_OUT)/calibration-dynamic.json $(CC_C150_OUT)/calibration-dynamic-trials.csv $(CC_C150_OUT)/calibration-dynamic-targets.csv \
+    $(CC_C150_OUT)/calibration-dynamic-trajectory.png $(CC_C150_OUT)/calibration-dynamic-stress-strain.png &: \
+    $(CC_COMPRESSION_SCENE) $(CC_OUT)/packing.h5 $(CC_CALIBRATION_TARGET_FILES.dynamic) $(BIN)/mw-calibrate $(BIN)/mw-dem
+	@mkdir -p $(@D)
+	$(call cc_calibrate,dynamic,$(CC_C150_OUT)/calibration-dynamic-trials,$(CC_C150_OUT)/calibration-dynamic)
+
+# One wave run per size, transducer pair and calibration: upv<size>-p-<choice>.h5/.csv/.json and
+# upv<size>-s-<choice>.*; size 150 is the lab's cube, 50 the same test scaled by 1/3 on step 5's
+# packing (scenes/upv50-*.toml: three times the frequency, the same wavelengths per path), a check
+# at 1/30 of the cost. $1 the choice, $2 p or s, $3 the size.
+CC_C150_SIZES := 150 50
+CC_C150_PACKING.150 := $(CC_C150_OUT)/packing.h5
+CC_C150_PACKING.50 := $(CC_OUT)/packing.h5
+define CC_C150_RUNS
+$(CC_C150_OUT)/upv$3-$2-$1.h5 $(CC_C150_OUT)/upv$3-$2-$1.csv $(CC_C150_OUT)/upv$3-$2-$1.json &: $(CC_NOTES)/scenes/upv$3-$2.toml \
+    $(CC_LAB)/upv-experiment-$2$(if $(filter 50,$3),-50mm).toml $(CC_C150_PACKING.$3) $(CC_C150_MATERIAL.$1) $(BIN)/mw-dem
+	@mkdir -p $$(@D)
+	$(BIN)/mw-dem --from $(CC_C150_MATERIAL.$1) run $(CC_NOTES)/scenes/upv$3-$2.toml --packing $(CC_C150_PACKING.$3) \
+	  --quiet --signals $(CC_C150_OUT)/upv$3-$2-$1.h5 --signals-csv $(CC_C150_OUT)/upv$3-$2-$1.csv \
+	  --summary $(CC_C150_OUT)/upv$3-$2-$1.json > /dev/null
+endef
+# The P pick first (threshold), then the S chain after it (AIC); the second run reads the first's t_p.
+define CC_C150_PICKS
+$(CC_C150_OUT)/upv$2-tp-$1.json $(CC_C150_OUT)/upv$2-p-$1.png &: $(CC_C150_OUT)/upv$2-p-$1.csv $(BIN)/mw-upv
+	$(BIN)/mw-upv --path-mm $2 --p-wave $(CC_C150_OUT)/upv$2-p-$1.csv $(CC_C150_P_PICK) $(call cc_c150_record,$2) \
+	  --plot $(CC_C150_OUT)/upv$2-p-$1.png --title "$2 mm DEM cube, calibration '$1': P transducers, the pick" \
+	  --out $(CC_C150_OUT)/upv$2-tp-$1.json > /dev/null
+$(CC_C150_OUT)/upv$2-picks-$1.json $(CC_C150_OUT)/upv$2-s-$1.png &: $(CC_C150_OUT)/upv$2-tp-$1.json $(CC_C150_OUT)/upv$2-s-$1.csv \
+    $(CC_OUT)/density.json $(BIN)/mw-upv
+	$(BIN)/mw-upv --from $(CC_C150_OUT)/upv$2-tp-$1.json --from $(CC_OUT)/density.json --s-wave $(CC_C150_OUT)/upv$2-s-$1.csv \
+	  $(CC_C150_S_PICK) $(call cc_c150_record,$2) --plot $(CC_C150_OUT)/upv$2-s-$1.png \
+	  --title "$2 mm DEM cube, calibration '$1': S transducers, the pick" --out $(CC_C150_OUT)/upv$2-picks-$1.json > /dev/null
+endef
+$(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,$(eval $(call CC_C150_RUNS,$c,$k,$z)))$(eval $(call CC_C150_PICKS,$c,$z))))
+
+# The picks beside the lab's (upv.toml: t_p, t_s; upv.json: v_p, v_s, E_d, nu_d of step 3); the
+# 50 mm rows' times are over 50 mm (x 3 for the 150 mm path), their velocities compare directly.
+$(CC_C150_OUT)/upv150.csv: $(CC_LAB)/upv.toml $(CC_OUT)/upv.json $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),\
+    $(CC_C150_OUT)/upv$z-picks-$c.json) $(CC_C150_MATERIAL.$c)) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name record --row "measured (upv.toml; step 3)=$(CC_LAB)/upv.toml,$(CC_OUT)/upv.json" \
+	  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),--row "DEM $z mm; calibrated to $c=$(CC_C150_OUT)/upv$z-picks-$c.json,$(CC_C150_MATERIAL.$c)")) \
+	  --column path_mm --column "t_p_us=t_p_us|t_p" --column "t_s_us=t_s_us|t_s" --column v_p_m_s --column v_s_m_s \
+	  --column E_d_GPa --column nu_d --column "E_glob_GPa=E_glob_GPa|E_d_GPa" --column "nu_glob=nu_glob|nu_d" \
+	  --significant-digits 4 --csv $@ > /dev/null
+
+# What each wave run cost (wall time and peak memory of every run: mw-prov runs --tool mw-dem).
+$(CC_C150_OUT)/upv150-cost.csv: $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,$(CC_C150_OUT)/upv$z-$k-$c.json))) \
+    $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name run \
+	  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,--row "$z mm $k; $c=$(CC_C150_OUT)/upv$z-$k-$c.json"))) \
+	  --column model --column spheres --column bonds --column threads --column steps --column setup_s --column wall_s \
+	  --column steps_per_s --column memory_estimate_MiB --column peak_force_ratio --significant-digits 4 --csv $@ > /dev/null
+
+$(CC_C150_OUT)/packing150.csv: $(CC_C150_OUT)/packing.json $(CC_OUT)/packing.json $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name packing --row "150 mm cube=$(CC_C150_OUT)/packing.json" \
+	  --row "50 mm cube (step 5)=$(CC_OUT)/packing.json" --column spheres --column bonds --column coordination \
+	  --column porosity_pct --column particle_density_kg_m3 --column relaxation_iterations --column threads \
+	  --column wall_time_s --significant-digits 5 --csv $@ > /dev/null
+
+CC_C150_RESULTS := $(CC_C150_OUT)/packing150.csv $(CC_C150_OUT)/upv150.csv $(CC_C150_OUT)/upv150-cost.csv \
+  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(CC_C150_OUT)/upv$z-p-$c.png $(CC_C150_OUT)/upv$z-s-$c.png))
+
+.PHONY: concrete-cube-150
+concrete-cube-150: $(CC_C150_RESULTS)
+	@echo
+	@echo "== The 150 mm cube ($(CC_C150_OUT)): packing (wall time and peak memory: mw-prov runs --tool mw-pack) =="
+	@$(CC_PRINT_CSV) $(CC_C150_OUT)/packing150.csv
+	@echo
+	@echo "== UPV on the 150 mm DEM cube against the lab's (P 54 kHz, S 40 kHz, 150 mm path) =="
+	@$(CC_PRINT_CSV) $(CC_C150_OUT)/upv150.csv
+	@echo
+	@echo "== The wave runs' cost (wall time and peak memory: mw-prov runs --tool mw-dem) =="
+	@$(CC_PRINT_CSV) $(CC_C150_OUT)/upv150-cost.csv
