@@ -83,9 +83,6 @@ $(CC_DEM_RECORDS) $(CC_OUT)/dem-waves.json &: $(CC_SCENE) $(CC_EXPERIMENT) $(CC_
 	  --summary $(CC_OUT)/dem-waves.json > /dev/null
 
 # One superposed mw-fem run: $1 the files' prefix, $2 the mesh [mm], $3 its frequencies, $4 the record options.
-cc_comma := ,
-cc_empty :=
-cc_space := $(cc_empty) $(cc_empty)
 define CC_FEM_RUN
 $(foreach f,$3,$(CC_OUT)/$1-$(f)kHz.h5 $(CC_OUT)/$1-$(f)kHz.json) &: $(CC_FEM_INPUTS)
 	$(BIN)/mw-fem --from $(CC_OUT)/upv.json box $(CC_FEM_EXPERIMENT) --mesh-mm $2 \
