@@ -2,6 +2,7 @@
 
 #include "mesowave/app/process_info.hpp"
 #include "mesowave/app/progress.hpp"
+#include "mesowave/app/superposition_options.hpp"
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/units.hpp"
@@ -24,21 +25,11 @@ void add_common_options(CLI::App& sub, FemCommandLine& v) {
   sub.add_option("--experiment", v.experiment_path, "The study's experiment (lab-data/<study>/experiment.toml): "
                  "specimen, transducers, burst and record; the options below beat its values");
   auto* one = sub.add_option("--frequency-kHz", v.f_kHz, "Centre frequency of the Hann burst [kHz] (100)");
-  auto* many = sub.add_option("--frequencies-kHz", v.frequencies_kHz,
-                              "Burst centre frequencies [kHz] (comma-separated) from one unit-impulse run of the mesh "
-                              "by superposition (fem/superposition.hpp: exact to round-off)")
-                   ->delimiter(',')
-                   ->excludes(one);
-  sub.add_option("--signals-pattern", v.signals_pattern,
-                 "With --frequencies-kHz: each frequency's signals, {f} the frequency in kHz ('fem-{f}kHz.h5')")
-      ->needs(many);
-  sub.add_option("--out-pattern", v.out_pattern, "With --frequencies-kHz: each frequency's JSON report, {f} as above")
-      ->needs(many);
-  sub.add_option("--check-kHz", v.check_kHz,
-                 "With --frequencies-kHz: also run these of them directly (comma-separated) and record the "
-                 "superposition's PCC and largest difference / peak against each in the reports")
-      ->delimiter(',')
-      ->needs(many);
+  app::add_superposition_options(sub, one,
+                                 {"unit-impulse run of the mesh by superposition (fem/superposition.hpp: exact to "
+                                  "round-off)",
+                                  "fem-{f}kHz.h5", "--out-pattern", "report"},
+                                 v.frequencies_kHz, v.signals_pattern, v.out_pattern, v.check_kHz);
   sub.add_option("--cycles", v.cycles, "Cycles in the burst (5)");
   sub.add_option("--force-N", v.force_N, "Peak force amplitude [N] (1)");
   sub.add_option("--alpha-damping", v.alpha, "Rayleigh mass-proportional damping alpha [1/s] (rod paper: 2000)")

@@ -6,6 +6,7 @@
 
 #include "mesowave/app/interrupt.hpp"
 #include "mesowave/app/progress.hpp"
+#include "mesowave/app/superposition_options.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/dem/calibration/static_elastic.hpp"
 #include "mesowave/dem/engine/run_report.hpp"
@@ -28,21 +29,11 @@ void add_scene_options(CLI::App& sub, RunCommandLine& v) {
 
 void add_run_options(CLI::App& run_cmd, RunCommandLine& v) {
   run_cmd.add_option("--signals", v.signals_path, "Sensor signals (HDF5, docs/formats.md); required without --frequencies-kHz");
-  auto* many = run_cmd.add_option("--frequencies-kHz", v.frequencies_kHz,
-                                  "Burst centre frequencies [kHz] (comma-separated) from one run by superposition "
-                                  "(dem/engine/superposition.hpp): linear model, force actuators, motion sensors")
-                   ->delimiter(',')
-                   ->excludes(run_cmd.get_option("--frequency-kHz"));
-  run_cmd.add_option("--signals-pattern", v.signals_pattern,
-                     "With --frequencies-kHz: each frequency's signals, {f} the frequency in kHz ('dem-{f}kHz.h5')")
-      ->needs(many);
-  run_cmd.add_option("--summary-pattern", v.summary_pattern, "With --frequencies-kHz: each frequency's summary (JSON), {f} as above")
-      ->needs(many);
-  run_cmd.add_option("--check-kHz", v.check_kHz,
-                     "With --frequencies-kHz: also run these of them directly (comma-separated) and record the "
-                     "superposition's PCC and largest difference / peak against each in the summaries")
-      ->delimiter(',')
-      ->needs(many);
+  auto* many = app::add_superposition_options(
+      run_cmd, run_cmd.get_option("--frequency-kHz"),
+      {"run by superposition (dem/engine/superposition.hpp): linear model, force actuators, motion sensors",
+       "dem-{f}kHz.h5", "--summary-pattern", "summary"},
+      v.frequencies_kHz, v.signals_pattern, v.summary_pattern, v.check_kHz);
   run_cmd.add_flag("--check-unproven", v.check_unproven,
                    "With --frequencies-kHz: also run directly each frequency whose bound on the peak bond force / "
                    "strength does not prove the linear model valid (instead of refusing it); the records say which")
