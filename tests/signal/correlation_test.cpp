@@ -145,6 +145,25 @@ TEST(Correlate, PerSensorTableAndMeanAsInTable3) {
   EXPECT_THROW(correlate_sensors(a, b, {}, {"A"}), InputError);  // not in the first set
 }
 
+TEST(Correlate, TheLoadsRecordIsLeftOutOfTheMeanUnlessNamed) {
+  // Two runs of one burst (FEM against FEM) both carry the load's record: it
+  // would correlate at 1 and lift the mean over sensors above Table 3's.
+  const std::size_t n = 3000;
+  std::vector<Signal> a{modulated("B", n, 0.0), modulated(kExcitationName, n, 0.0)};
+  std::vector<Signal> b{modulated(kExcitationName, n, 0.0), modulated("B", n, 1.0)};
+  const auto table = correlate_sensors(a, b);
+  ASSERT_EQ(table.sensors.size(), 1u);
+  EXPECT_EQ(table.sensors[0].sensor, "B");
+  EXPECT_NEAR(table.mean_pcc_signal, std::cos(1.0), 1e-12);
+  EXPECT_TRUE(table.excitation_left_out);
+  EXPECT_TRUE(table.only_in_a.empty() && table.only_in_b.empty());
+
+  const auto named = correlate_sensors(a, b, {}, {"B", kExcitationName});
+  ASSERT_EQ(named.sensors.size(), 2u);
+  EXPECT_NEAR(named.mean_pcc_signal, 0.5 * (std::cos(1.0) + 1.0), 1e-12);
+  EXPECT_FALSE(named.excitation_left_out);
+}
+
 TEST(Correlate, SpectraOfBothSetsComeWithTheTable) {
   std::vector<Signal> a{modulated("B", 3000, 0.0), modulated("C", 2999, 0.0)};
   std::vector<Signal> b{modulated("B", 3000, 0.3), modulated("C", 2999, 0.6)};

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   cli.add_option("files", q.files, "Two signal files (HDF5 .h5 or CSV .csv): the first set and the second");
   cli.add_option("--a", q.a, "The first set as one or more files (e.g. experiment)")->type_name("FILE ...");
   cli.add_option("--b", q.b, "The second set as one or more files (e.g. simulation)")->type_name("FILE ...");
-  cli.add_option("--sensors", q.sensors, "Compare only these sensors (comma separated; default: every shared name)")
+  cli.add_option("--sensors", q.sensors, "Compare only these sensors (comma separated; default: every shared name but the load's record, 'excitation')")
       ->delimiter(',');
   cli.add_option("--resample", q.resampling,
                  "linear | cubic: interpolate the second set onto the first's samples where they overlap "

@@ -331,7 +331,7 @@ void complete_fem_run(const FemSetup& setup, FemRun& run) {
   // The excitation, sampled like the signals, travels with them.
   const signal::HannBurst& burst = setup.load.burst;
   signal::Signal excitation;
-  excitation.name = "excitation";
+  excitation.name = signal::kExcitationName;
   excitation.quantity = "force";
   excitation.unit = "N";
   excitation.dt_s = stepping.sample_dt_s;

@@ -139,6 +139,10 @@ CorrelationTable correlate_sensors(std::span<const Signal> a, std::span<const Si
   } else {
     for (const auto& s : a) {
       auto ib = in_b.find(s.name);
+      if (s.name == kExcitationName && ib != in_b.end()) {
+        table.excitation_left_out = true;
+        continue;
+      }
       if (ib == in_b.end()) table.only_in_a.push_back(s.name);
       else pairs.emplace_back(in_a.at(s.name), ib->second);
     }

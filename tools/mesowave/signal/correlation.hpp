@@ -53,6 +53,7 @@ struct CorrelationTable {
   double mean_pcc_signal = 0;               ///< mean over sensors (Table 3)
   double mean_pcc_envelope = 0;
   std::vector<std::string> only_in_a, only_in_b;  ///< sensors without a partner (not compared)
+  bool excitation_left_out = false;         ///< both sets had a kExcitationName record, not compared
   std::string resampling;                   ///< "none (same time base)" or "b onto a by linear interpolation"
   std::string envelope_method;              ///< HilbertOptions::describe of the first sensor
 };
@@ -62,7 +63,9 @@ SensorCorrelation correlate(const Signal& a, const Signal& b, const CorrelationO
 
 /// Correlates sensors matched by name. `only` (if not empty) names the sensors
 /// to compare, each of which must be in both sets; otherwise the sensors in
-/// both sets are compared and the others listed. InputError if no sensor is
+/// both sets are compared and the others listed, and a record of the load
+/// (kExcitationName) is left out of the pairs and of the mean: the mean is over
+/// sensors (Table 3), and two runs of one burst correlate their loads at 1. InputError if no sensor is
 /// shared or a name appears twice in one set. Sensors run in parallel; the
 /// result does not depend on the thread count.
 CorrelationTable correlate_sensors(std::span<const Signal> a, std::span<const Signal> b,

@@ -137,6 +137,8 @@ PccReport pcc_report(const PccRequest& request) {
   std::string unmatched;
   for (const auto& n : table.only_in_a) unmatched += (unmatched.empty() ? "" : ", ") + n + " (only in a)";
   for (const auto& n : table.only_in_b) unmatched += (unmatched.empty() ? "" : ", ") + n + " (only in b)";
+  if (table.excitation_left_out)
+    unmatched += (unmatched.empty() ? "" : ", ") + std::string(kExcitationName) + " (the load, not a sensor; --sensors names it)";
   if (!unmatched.empty()) r.text += "not compared: " + unmatched + "\n";
   r.csv = io::to_csv(header, rows);
   if (q.spectra) r.spectra_csv = spectra_table(table, a, b, q.max_frequency_kHz);
@@ -188,6 +190,7 @@ PccReport pcc_report(const PccRequest& request) {
   j["envelope_method"] = table.envelope_method;
   j["only_in_a"] = table.only_in_a;
   j["only_in_b"] = table.only_in_b;
+  j["excitation_left_out"] = table.excitation_left_out;
   return r;
 }
 

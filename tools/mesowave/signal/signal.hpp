@@ -24,4 +24,9 @@ struct Signal {
   double duration_s() const { return double(samples.size()) * dt_s; }
 };
 
+/// The name of the record of the load itself (the actuator's force history) that
+/// a solver writes beside its sensors: a record of the input, not a measurement,
+/// so comparisons sensor by sensor leave it out unless it is named.
+inline constexpr const char* kExcitationName = "excitation";
+
 }  // namespace mesowave::signal

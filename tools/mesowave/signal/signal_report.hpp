@@ -23,7 +23,7 @@ struct BurstRequest {
   std::optional<double> duration_us;  ///< default: up to the end of the burst
   double noise_rms = 0;               ///< white Gaussian noise added (synthetic test data)
   std::uint64_t seed = 1;
-  std::string name = "excitation", quantity = "force", unit = "N";
+  std::string name = kExcitationName, quantity = "force", unit = "N";
   std::string output;  ///< the file it goes to, named in the summary
 };
 

@@ -212,7 +212,7 @@ GroupVelocityPoint measure_run(const std::vector<signal::Signal>& signals, doubl
   if (req.method == "source") {
     double t0 = burst / 2;
     for (const auto& x : signals)
-      if (x.name == "excitation") t0 = envelope_packets(x, kThreshold, burst).at(0).time_s;
+      if (x.name == signal::kExcitationName) t0 = envelope_packets(x, kThreshold, burst).at(0).time_s;
     return source_velocity(s, req.distance_m, t0, f, burst);
   }
   throw InputError("method " + req.method + " must be two-stations, echo or source");
