@@ -1,7 +1,10 @@
 #include "mesowave/dem/parallel/mpi_session.hpp"
 
+#include <chrono>
 #include <cstdlib>
+#include <iostream>
 #include <string>
+#include <thread>
 
 #include "mesowave/core/error.hpp"
 
@@ -75,6 +78,18 @@ MpiSession::MpiSession(int& argc, char**& argv) {
   throw InputError("started by an MPI launcher for several ranks, but this build has no MPI (install "
                    "libopenmpi-dev and configure again)");
 #endif
+}
+
+void MpiSession::report_error(const std::string& line, int status) {
+#ifdef MESOWAVE_HAVE_MPI
+  if (size_ > 1) {
+    if (rank_ != 0) std::this_thread::sleep_for(std::chrono::seconds(3));
+    std::cerr << "error: " << line << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, status);
+  }
+#endif
+  (void)status;
+  std::cerr << "error: " << line << "\n";
 }
 
 MpiSession::~MpiSession() {
