@@ -108,6 +108,9 @@ public:
   /// Distributed: makes every sphere's motion current on this rank (collective: every rank
   /// calls it), before a snapshot reads them all. A no-op in one process.
   virtual void collect_state() {}
+  /// Distributed: makes energy() whole on this rank after a step that did not evaluate the
+  /// energies (collective; the loop calls it once, after the last step). A no-op in one process.
+  virtual void collect_energy() {}
   /// What a distributed model tells of its split (empty for one process): ranks, spheres per
   /// rank, ghosts (docs/mpi.md).
   virtual std::string distribution() const { return {}; }

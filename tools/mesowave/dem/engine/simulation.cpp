@@ -351,6 +351,7 @@ RunReport Simulation::run() {
   r.wall_s = wall;
   r.steps_per_s = wall > 0 ? double(stepped) / wall : 0;
   r.ns_per_contact_step = stepped > 0 && r.contacts > 0 ? wall * 1e9 / (double(stepped) * double(r.contacts)) : 0;
+  model.collect_energy();  // a stop after a step without energies: the damping of every rank's blocks
   r.energy = model.energy();
   r.peak_stored_J = loop_.peak_stored_J;
   r.peak_force_ratio = model.peak_force_ratio();

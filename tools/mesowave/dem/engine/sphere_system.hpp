@@ -119,6 +119,7 @@ public:
   void distribute(Domain& domain, const std::vector<std::size_t>& observed) override;
   std::string distribution() const override;
   void collect_state() override;
+  void collect_energy() override;
   /// Distributed: makes every sphere's position current on every rank (collective; contact
   /// detection reads them all). A no-op in one process.
   void share_positions();
@@ -254,8 +255,7 @@ private:
   // A distributed run (dem/parallel/sphere_system_domain.cpp, docs/mpi.md): this rank's
   // spheres and blocks (per rank: sphere_counts_/displs_ in doubles, 3 a sphere), the contacts
   // it computes (slot_needed_: an end is its own) and those whose energies, strength ratio and
-  // breakage it reports (the rank owning the first sphere), every rank's reported slots in rank
-  // then slot order, the per-slot values, the ghost lists (per neighbour rank, sorted by id:
+  // breakage it reports (the rank owning the first sphere), the per-slot values, the ghost lists (per neighbour rank, sorted by id:
   // the spheres it sends there and those it receives from there) and the observed spheres
   // (those an actuator or sensor reads: every rank holds them, sorted by id, so by owner).
   Domain* domain_ = nullptr;
@@ -264,8 +264,7 @@ private:
   double vmax2_all_ = 0;    ///< the largest block bound of |v|^2 over all ranks after the last step
   std::vector<int> sphere_counts_, sphere_displs_, block_counts_, block_displs_;
   std::vector<std::uint8_t> slot_needed_;
-  std::vector<std::uint32_t> reported_, reported_all_;
-  std::vector<int> reported_counts_, reported_displs_;
+  std::vector<std::uint32_t> reported_;
   std::vector<double> slot_elastic_, slot_plastic_, slot_ratio2_, send_, recv_;
   struct GhostList {
     int rank;
@@ -275,6 +274,9 @@ private:
   std::vector<GhostList> ghost_sends_, ghost_receives_;
   std::vector<std::uint32_t> observed_;
   std::vector<int> observed_counts_, observed_displs_;
+  std::vector<GhostList> elastic_sends_, elastic_receives_;  ///< slots (not spheres) whose elastic part goes to the task's owner
+  std::vector<int> task_owner_, task_counts_;                ///< per task the rank adding its elastic sum; per rank its tasks
+  std::vector<std::uint32_t> owned_tasks_;
   bool ghosts_stale_ = false;  ///< a new layout brought new ghosts: exchange before the next step
   double ghost_layer_m_;       ///< a test's too-thin ghost layer (MESOWAVE_TEST_GHOST_LAYER_MM); infinite otherwise
   int ghost_layer_rank_ = -1;  ///< the rank it thins (-1: all)
@@ -284,6 +286,7 @@ private:
   void lay_out_domain();
   void exchange_ghosts();
   void share_step(bool evaluate_energy);
+  void share_elastic();
 };
 
 template <class Result, class Kernel>

@@ -108,13 +108,13 @@ void SphereSystem::lay_out_domain() {
   const bool thinned = ghost_layer_rank_ < 0 || ghost_layer_rank_ == me;
   const auto position = [&](std::uint32_t k) { return displacement_state_ ? spheres_.centre_m[k] + x_[k] : x_[k]; };
   slot_needed_.assign(count, 0);
-  std::vector<std::vector<std::uint32_t>> by_rank(static_cast<std::size_t>(ranks));
+  reported_.clear();
   std::vector<std::vector<std::uint32_t>> sends(static_cast<std::size_t>(ranks)), receives(static_cast<std::size_t>(ranks));
   for (std::size_t s = 0; s < count; ++s) {
     const std::uint32_t i = first_[s], j = second_[s];
     const int oi = owner(i), oj = owner(j);
     slot_needed_[s] = oi == me || oj == me;
-    by_rank[std::size_t(oi)].push_back(std::uint32_t(s));
+    if (oi == me) reported_.push_back(std::uint32_t(s));
     if (oi == oj || !slot_needed_[s]) continue;
     // A contact across two ranks: each needs the other's end. Both sides list it from the same layout.
     const std::uint32_t mine = oi == me ? i : j, theirs = oi == me ? j : i;
@@ -153,16 +153,76 @@ void SphereSystem::lay_out_domain() {
                      format_number(ghost_layer_m_ * 1e3) + " mm, the contact " + format_number(norm(position(j) - position(i)) * 1e3) +
                      " mm long): the layer must reach at least the longest bond plus the motion between exchanges");
   }
-  reported_ = by_rank[std::size_t(me)];
-  reported_all_.clear();
-  reported_counts_.assign(std::size_t(ranks), 0), reported_displs_.assign(std::size_t(ranks), 0);
-  for (int r = 0; r < ranks; ++r) {
-    reported_displs_[std::size_t(r)] = int(reported_all_.size());
-    reported_counts_[std::size_t(r)] = int(by_rank[std::size_t(r)].size());
-    reported_all_.insert(reported_all_.end(), by_rank[std::size_t(r)].begin(), by_rank[std::size_t(r)].end());
-  }
   slot_elastic_.assign(count, 0), slot_plastic_.assign(count, 0), slot_ratio2_.assign(count, 0);
+
+  // The elastic sum of each task is taken, in slot order, by the rank that reports most of its
+  // slots (ties: the lowest); the others send it their values of the task (point to point).
+  const std::size_t tasks = partitions_ + cross_blocks_;
+  task_owner_.assign(tasks, 0);
+  std::vector<std::size_t> tally(static_cast<std::size_t>(ranks));
+  std::vector<std::vector<std::uint32_t>> to(static_cast<std::size_t>(ranks)), from(static_cast<std::size_t>(ranks));
+  owned_tasks_.clear();
+  task_counts_.assign(std::size_t(ranks), 0);
+  for (std::size_t task = 0; task < tasks; ++task) {
+    const bool interior = task < partitions_;
+    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
+    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+    std::fill(tally.begin(), tally.end(), 0);
+    for (std::size_t s = begin; s < end; ++s) ++tally[std::size_t(owner(first_[s]))];
+    const int q = int(std::max_element(tally.begin(), tally.end()) - tally.begin());
+    task_owner_[task] = q;
+    ++task_counts_[std::size_t(q)];
+    if (q == me) owned_tasks_.push_back(std::uint32_t(task));
+    for (std::size_t s = begin; s < end; ++s) {
+      const int r = owner(first_[s]);
+      if (r == me && q != me) to[std::size_t(q)].push_back(std::uint32_t(s));
+      if (q == me && r != me) from[std::size_t(r)].push_back(std::uint32_t(s));
+    }
+  }
+  elastic_sends_.clear(), elastic_receives_.clear();
+  for (int r = 0; r < ranks; ++r) {
+    if (!to[std::size_t(r)].empty()) elastic_sends_.push_back({r, std::move(to[std::size_t(r)]), {}});
+    if (!from[std::size_t(r)].empty()) elastic_receives_.push_back({r, std::move(from[std::size_t(r)]), {}});
+  }
   ghosts_stale_ = true;
+}
+
+// Energy steps: the elastic parts to each task's owner, which adds them in slot order; the task
+// sums then to every rank (in owner then task order), so every rank holds every task's sum.
+void SphereSystem::share_elastic() {
+  std::vector<Domain::Message> sends, receives;
+  for (auto& g : elastic_sends_) {
+    g.buffer.resize(g.spheres.size());
+    for (std::size_t k = 0; k < g.spheres.size(); ++k) g.buffer[k] = slot_elastic_[g.spheres[k]];
+    sends.push_back({g.rank, g.buffer.data(), int(g.buffer.size())});
+  }
+  for (auto& g : elastic_receives_) {
+    g.buffer.resize(g.spheres.size());
+    receives.push_back({g.rank, g.buffer.data(), int(g.buffer.size())});
+    shared_doubles_ += g.buffer.size();
+  }
+  domain_->exchange(sends, receives);
+  for (const auto& g : elastic_receives_)
+    for (std::size_t k = 0; k < g.spheres.size(); ++k) slot_elastic_[g.spheres[k]] = g.buffer[k];
+  const std::size_t count = first_.size();
+  std::vector<double> mine;
+  for (const std::uint32_t task : owned_tasks_) {
+    const bool interior = task < partitions_;
+    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
+    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+    double elastic = 0;
+    for (std::size_t s = begin; s < end; ++s) elastic += slot_elastic_[s];
+    mine.push_back(elastic);
+  }
+  const int ranks = domain_->size();
+  std::vector<int> displs(static_cast<std::size_t>(ranks));
+  for (int r = 1; r < ranks; ++r) displs[std::size_t(r)] = displs[std::size_t(r - 1)] + task_counts_[std::size_t(r - 1)];
+  std::vector<double> all(task_owner_.size());
+  domain_->gather_all(mine.data(), int(mine.size()), all.data(), task_counts_, displs);
+  shared_doubles_ += all.size() - mine.size();
+  std::vector<int> next(displs);
+  for (std::size_t task = 0; task < task_owner_.size(); ++task)
+    task_elastic_[task] = all[std::size_t(next[std::size_t(task_owner_[task])]++)];
 }
 
 // Point to point: each neighbour gets the motion the contact law reads of the spheres it
@@ -207,11 +267,10 @@ void SphereSystem::exchange_ghosts() {
 // After every step: the ghosts (point to point), then one small fixed gather (each rank's
 // largest strength ratio and speed bound, broken bonds and count of sliding contacts) and one
 // gather of each rank's part of what every rank reads: the observed spheres' motion, its
-// blocks' damping (and on energy steps kinetic) sums, its reported contacts' nonzero plastic
-// parts as (slot, value) (and on energy steps every reported elastic part). Every rank then
-// adds the task sums in slot order, as for_each_contact adds them in one process.
+// reported contacts' nonzero plastic parts as (slot, value), on energy steps its blocks'
+// damping and kinetic sums. Every rank then adds the plastic task sums in slot order, as
+// for_each_contact adds them in one process; the elastic ones come from share_elastic.
 void SphereSystem::share_step(bool evaluate_energy) {
-  const std::size_t count = first_.size();
   // Other ranks' spheres got this rank's share of their contacts: not theirs to keep.
   std::fill(f_acc_.begin(), f_acc_.begin() + std::ptrdiff_t(own_begin_), Vec3{});
   std::fill(t_acc_.begin(), t_acc_.begin() + std::ptrdiff_t(own_begin_), Vec3{});
@@ -241,11 +300,12 @@ void SphereSystem::share_step(bool evaluate_energy) {
   }
   broken_ = broken, vmax2_all_ = vmax2;
 
-  // Rank r's part: 12 doubles an observed sphere (x, v, a, a undamped), 1 (2) a block, 2 a sliding contact (+1 a reported one).
-  const std::size_t per_block = evaluate_energy ? 2 : 1;
+  // Rank r's part: 12 doubles an observed sphere (x, v, a, a undamped), 2 a sliding contact; on
+  // energy steps also 2 a block (damping, kinetic). The blocks' damping sums are read only with
+  // the energies (energy steps, and collect_energy after the last step).
+  const std::size_t per_block = evaluate_energy ? 2 : 0;
   const auto part = [&](int r) {
-    return 12 * at(observed_counts_, r) + per_block * at(block_counts_, r) + 2 * sliding_on[std::size_t(r)] +
-           (evaluate_energy ? at(reported_counts_, r) : 0);
+    return 12 * at(observed_counts_, r) + per_block * at(block_counts_, r) + 2 * sliding_on[std::size_t(r)];
   };
   std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
   std::size_t total = 0;
@@ -264,15 +324,11 @@ void SphereSystem::share_step(bool evaluate_energy) {
         const Vec3& p = (*m)[observed_[q]];
         *o++ = p.x, *o++ = p.y, *o++ = p.z;
       }
-    o = std::copy(sphere_block_damping_.begin() + std::ptrdiff_t(own_block_begin_),
-                  sphere_block_damping_.begin() + std::ptrdiff_t(own_block_end_), o);
     if (evaluate_energy)
-      o = std::copy(sphere_block_kinetic_.begin() + std::ptrdiff_t(own_block_begin_),
-                    sphere_block_kinetic_.begin() + std::ptrdiff_t(own_block_end_), o);
+      for (auto* b : {&sphere_block_damping_, &sphere_block_kinetic_})
+        o = std::copy(b->begin() + std::ptrdiff_t(own_block_begin_), b->begin() + std::ptrdiff_t(own_block_end_), o);
     for (const std::uint32_t s : reported_)
       if (slot_plastic_[s] != 0) *o++ = double(s), *o++ = slot_plastic_[s];  // slot ids exact below 2^53
-    if (evaluate_energy)
-      for (const std::uint32_t s : reported_) *o++ = slot_elastic_[s];
   }
   recv_.resize(total);
   domain_->gather_all(send_.data(), int(send_.size()), recv_.data(), counts, displs);
@@ -289,17 +345,12 @@ void SphereSystem::share_step(bool evaluate_energy) {
         in += 3;
       }
     const std::size_t b0 = at(block_displs_, r), nb = at(block_counts_, r);
-    std::copy(in, in + nb, sphere_block_damping_.begin() + std::ptrdiff_t(b0));
-    in += nb;
-    if (evaluate_energy) {
-      std::copy(in, in + nb, sphere_block_kinetic_.begin() + std::ptrdiff_t(b0));
-      in += nb;
-    }
+    if (evaluate_energy)
+      for (auto* b : {&sphere_block_damping_, &sphere_block_kinetic_}) {
+        std::copy(in, in + nb, b->begin() + std::ptrdiff_t(b0));
+        in += nb;
+      }
     for (std::size_t k = 0; k < sliding_on[std::size_t(r)]; ++k, in += 2) plastic.emplace_back(std::uint32_t(in[0]), in[1]);
-    if (evaluate_energy) {
-      const std::size_t c = at(reported_counts_, r), d = at(reported_displs_, r);
-      for (std::size_t k = 0; k < c; ++k) slot_elastic_[reported_all_[d + k]] = *in++;
-    }
   }
 
   // The task sums in slot order. The plastic parts left out are zeros, and adding a zero
@@ -317,15 +368,7 @@ void SphereSystem::share_step(bool evaluate_energy) {
     for (; k < plastic.size() && task_of(plastic[k].first) == task; ++k) sum += plastic[k].second;
     task_plastic_[task] += sum;
   }
-  if (evaluate_energy)
-    for (std::size_t task = 0; task < tasks; ++task) {
-      const bool interior = task < partitions_;
-      const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
-      const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
-      double elastic = 0;
-      for (std::size_t s = begin; s < end; ++s) elastic += slot_elastic_[s];
-      task_elastic_[task] = elastic;
-    }
+  if (evaluate_energy) share_elastic();
   std::fill(task_peak2_.begin(), task_peak2_.end(), 0.0);
   if (tasks > 0) task_peak2_[0] = peak2;  // a max: exact in any order
 }
@@ -338,6 +381,10 @@ void SphereSystem::collect_state() {
   if (!domain_) return;
   for (std::vector<Vec3>* m : {&x_, &v_, &w_, &a_, &a_undamped_}) domain_->share(&(*m)[0].x, sphere_counts_, sphere_displs_);
   if (track_rotation_) domain_->share(&theta_[0].x, sphere_counts_, sphere_displs_);
+}
+
+void SphereSystem::collect_energy() {
+  if (domain_) domain_->share(sphere_block_damping_.data(), block_counts_, block_displs_);
 }
 
 std::size_t SphereSystem::broken_bond_count() const { return domain_ ? broken_ : kernel_->broken_bond_count(); }
