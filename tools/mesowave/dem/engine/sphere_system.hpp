@@ -255,9 +255,10 @@ private:
   // A distributed run (dem/parallel/sphere_system_domain.cpp, docs/mpi.md): this rank's
   // spheres and blocks (per rank: sphere_counts_/displs_ in doubles, 3 a sphere), the contacts
   // it computes (slot_needed_: an end is its own) and those whose energies, strength ratio and
-  // breakage it reports (the rank owning the first sphere), the per-slot values, the ghost lists (per neighbour rank, sorted by id:
-  // the spheres it sends there and those it receives from there) and the observed spheres
-  // (those an actuator or sensor reads: every rank holds them, sorted by id, so by owner).
+  // breakage it reports (the rank owning the first sphere), the per-slot values, the ghost
+  // lists (per neighbour rank, sorted by id: the spheres it sends there and those it receives
+  // from there) and the observed spheres (those an actuator or sensor reads: every rank holds
+  // them; sorted by id, so by owner).
   Domain* domain_ = nullptr;
   std::size_t own_begin_ = 0, own_end_ = 0, own_block_begin_ = 0, own_block_end_ = 0, ghosts_ = 0;
   std::size_t broken_ = 0;  ///< bonds broken on all ranks after the last step (shared with the motion)
@@ -278,8 +279,8 @@ private:
   std::vector<int> task_owner_, task_counts_;                ///< per task the rank adding its elastic sum; per rank its tasks
   std::vector<std::uint32_t> owned_tasks_;
   bool ghosts_stale_ = false;  ///< a new layout brought new ghosts: exchange before the next step
-  double ghost_layer_m_;       ///< a test's too-thin ghost layer (MESOWAVE_TEST_GHOST_LAYER_MM); infinite otherwise
-  int ghost_layer_rank_ = -1;  ///< the rank it thins (-1: all)
+  double ghost_layer_m_ = 0;   ///< a test's too-thin ghost layer (MESOWAVE_TEST_GHOST_LAYER_MM); infinite otherwise
+  int ghost_layer_rank_ = -1;   ///< the rank it thins (-1: all)
   // What the steps moved into this rank (docs/mpi.md's model): doubles received point to point
   // and by the collectives, and the exchanges counted.
   std::uint64_t ghost_doubles_ = 0, shared_doubles_ = 0, shared_steps_ = 0, ghost_messages_ = 0;

@@ -395,7 +395,7 @@ std::string SphereSystem::distribution() const {
   // What the stage-1 exchange (the whole motion of every sphere, each rank's blocks' sums, each
   // reported contact's plastic part, on every step) would have brought into this rank.
   const std::size_t replicated = ((track_rotation_ ? 18 : 15) * (spheres_.size() - (own_end_ - own_begin_)) +
-                                  3 * (spheres_.size() + kSphereBlock - 1) / kSphereBlock + first_.size() - reported_.size()) * 8;
+                                  3 * ((spheres_.size() + kSphereBlock - 1) / kSphereBlock) + first_.size() - reported_.size()) * 8;
   return "rank " + std::to_string(domain_->rank()) + " of " + std::to_string(domain_->size()) + ": spheres " +
          std::to_string(own_begin_) + "-" + std::to_string(own_end_) + " of " + std::to_string(spheres_.size()) +
          " (Morton order), " + std::to_string(ghosts_) + " ghosts from " + std::to_string(ghost_receives_.size()) +
