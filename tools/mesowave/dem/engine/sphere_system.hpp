@@ -274,6 +274,7 @@ private:
   };
   std::vector<GhostList> ghost_sends_, ghost_receives_;
   std::vector<std::uint32_t> observed_;
+  std::vector<std::uint32_t> touched_;  ///< other ranks' spheres this rank's computed chunks add forces to
   std::vector<int> observed_counts_, observed_displs_;
   std::vector<GhostList> elastic_sends_, elastic_receives_;  ///< slots (not spheres) whose elastic part goes to the task's owner
   std::vector<int> task_owner_, task_counts_;                ///< per task the rank adding its elastic sum; per rank its tasks

@@ -122,6 +122,22 @@ void SphereSystem::lay_out_domain() {
     sends[std::size_t(other)].push_back(mine);
     if (!thinned || norm(position(theirs) - position(mine)) <= ghost_layer_m_) receives[std::size_t(other)].push_back(theirs);
   }
+  // Other ranks' spheres this rank's computed chunks add forces to (for_each_contact's chunks:
+  // kChunk slots from each task's start), cleared after each step.
+  touched_.clear();
+  for (std::size_t task = 0, tasks = partitions_ + cross_blocks_; task < tasks; ++task) {
+    const bool interior = task < partitions_;
+    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
+    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+    for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
+      const std::size_t last = std::min(end, chunk + kChunk);
+      if (std::find(&slot_needed_[chunk], &slot_needed_[0] + last, 1) == &slot_needed_[0] + last) continue;
+      for (std::size_t s = chunk; s < last; ++s)
+        for (const std::uint32_t k : {first_[s], second_[s]})
+          if (owner(k) != me) touched_.push_back(k);
+    }
+  }
+  sort_unique(touched_);
   ghost_sends_.clear(), ghost_receives_.clear();
   ghosts_ = 0;
   std::vector<std::uint8_t> held(n, 0);
@@ -272,10 +288,7 @@ void SphereSystem::exchange_ghosts() {
 // for_each_contact adds them in one process; the elastic ones come from share_elastic.
 void SphereSystem::share_step(bool evaluate_energy) {
   // Other ranks' spheres got this rank's share of their contacts: not theirs to keep.
-  std::fill(f_acc_.begin(), f_acc_.begin() + std::ptrdiff_t(own_begin_), Vec3{});
-  std::fill(t_acc_.begin(), t_acc_.begin() + std::ptrdiff_t(own_begin_), Vec3{});
-  std::fill(f_acc_.begin() + std::ptrdiff_t(own_end_), f_acc_.end(), Vec3{});
-  std::fill(t_acc_.begin() + std::ptrdiff_t(own_end_), t_acc_.end(), Vec3{});
+  for (const std::uint32_t k : touched_) f_acc_[k] = {}, t_acc_[k] = {};
   exchange_ghosts();
 
   const int ranks = domain_->size(), me = domain_->rank();
