@@ -27,10 +27,21 @@ const std::vector<std::string> kMpiEnv = {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLO
                                           "OMPI_MCA_btl=self,vader", "OMPI_MCA_btl_vader_single_copy_mechanism=none",
                                           "OMPI_MCA_mpi_yield_when_idle=1"};
 
-test::ToolResult mpirun(int ranks, const std::vector<std::string>& args) {
-  std::vector<std::string> command = {"--oversubscribe", "-np", std::to_string(ranks), test::tool_path("mw-dem").string()};
+// `env`: more variables for the ranks. Under `timeout`, so that ranks left waiting by a failed
+// one end the test (exit 124) instead of hanging it.
+test::ToolResult mpirun(int ranks, const std::vector<std::string>& args, const std::vector<std::string>& env = {}) {
+  std::vector<std::string> command = {"120", "/usr/bin/mpirun", "--oversubscribe", "-np", std::to_string(ranks),
+                                      test::tool_path("mw-dem").string()};
   command.insert(command.end(), args.begin(), args.end());
-  return test::run_command("/usr/bin/mpirun", command, kMpiEnv);
+  std::vector<std::string> environment = kMpiEnv;
+  environment.insert(environment.end(), env.begin(), env.end());
+  return test::run_command("/usr/bin/timeout", command, environment);
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
 }
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
@@ -175,6 +186,27 @@ TEST(MwDemMpi, CheckpointsAndMoreRanksThanSphereBlocksAreRefusedInOneLine) {
                                (dir / "s.h5").string()});
   EXPECT_EQ(many.exit_status, 1);
   EXPECT_NE(many.err.find("5 MPI ranks for 864 spheres"), std::string::npos) << many.err;
+  EXPECT_EQ(occurrences(many.err, "error: "), 1u) << many.err;  // every rank fails alike: printed once
+  EXPECT_EQ(occurrences(ckpt.err, "error: "), 1u) << ckpt.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "s.h5"));
   EXPECT_FALSE(std::filesystem::exists(dir / "c.h5"));
+}
+
+// A contact whose other end is on another rank needs that end as a ghost; the test-only hook
+// keeps on rank 1 only ghosts closer than 1 um to their contact's own end (none: the spheres are
+// about a millimetre apart), so every cross-rank bond there loses its partner. Rank 1 alone fails,
+// at setup, while rank 0 waits in the first exchange: the run must still end at once, with one
+// line naming a bond and the rank, exit 1 and no output - never a run with bonds silently lost.
+TEST(MwDemMpi, ABondWhosePartnerIsNotAGhostEndsEveryRankWithOneLineNamingTheBondAndTheRank) {
+  test::TempDir dir;
+  write_block(dir);
+  test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
+  const auto r = mpirun(2, {"run", (dir / "wave.toml").string(), "--quiet", "--model", "linear", "--signals", (dir / "s.h5").string()},
+                        {"MESOWAVE_TEST_GHOST_LAYER_MM=0.001", "MESOWAVE_TEST_GHOST_LAYER_RANK=1"});
+  EXPECT_EQ(r.exit_status, 1) << r.err;  // not 124: rank 0 did not hang
+  EXPECT_NE(r.err.find("error: rank 1 of 2: bond "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("has lost its partner"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ghost layer 0.001 mm"), std::string::npos) << r.err;
+  EXPECT_EQ(occurrences(r.err, "error: "), 1u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.h5"));
 }

@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
       "  mw-dem run pipeline/concrete-cube/scenes/cube-compression.toml --unbreakable-bonds --modulus-levels-MPa 5,16.67 "
       "--static --signals e.h5   (its elastic part as one static solve of the linearised network)");
   if (!mpi->is_root()) tool.set_records_runs(false);  // one record of the run: rank 0's
+  tool.set_error_report([&](const std::string& line, int status) { mpi->report_error(line, status); });
   auto& cli = tool.cli();
   cli.require_subcommand(1);
 

@@ -292,10 +292,10 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
   } catch (const CLI::Success& e) {
     return app_.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "error: " << one_line(e.what()) << " (see " << name_ << " --help)\n";
+    report_error(one_line(e.what()) + " (see " + name_ + " --help)", 1);
     return 1;
   } catch (const InputError& e) {
-    std::cerr << "error: " << one_line(e.what()) << "\n";
+    report_error(one_line(e.what()), 1);
     return 1;
   }
 
@@ -314,7 +314,7 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
       else if (arg.rfind("--from=", 0) != 0) run.command_line_.push_back(arg);
     }
   } catch (const InputError& e) {
-    std::cerr << "error: " << one_line(e.what()) << "\n";
+    report_error(one_line(e.what()), 1);
     return 1;
   }
 
@@ -392,8 +392,13 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
   } else {
     run.stage_.discard();
   }
-  if (record.exit_status != 0) std::cerr << "error: " << record.error << "\n";
+  if (record.exit_status != 0) report_error(record.error, record.exit_status);
   return record.exit_status;
+}
+
+void Tool::report_error(const std::string& line, int status) const {
+  if (error_report_) error_report_(line, status);
+  else std::cerr << "error: " << line << "\n";
 }
 
 void declare_products(nlohmann::ordered_json& object, const std::vector<std::string>& products) {

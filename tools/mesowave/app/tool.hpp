@@ -88,6 +88,10 @@ public:
 
   /// Tools that only read the database (mw-prov) do not record themselves.
   void set_records_runs(bool records) { records_runs_ = records; }
+  /// Where the one-line error goes (default: "error: LINE" on stderr) with the exit status it
+  /// ends with. mw-dem on several MPI ranks hands it to the MPI session, which prints it once
+  /// and ends every rank (a failure on one rank must not leave the others waiting).
+  void set_error_report(std::function<void(const std::string& line, int status)> report) { error_report_ = std::move(report); }
   /// The database named by --db or MESOWAVE_DB ("" if none), after parsing.
   const std::string& db_path() const { return db_path_; }
 
@@ -101,6 +105,8 @@ private:
   std::string db_path_;
   std::vector<std::string> from_ignore_;
   bool records_runs_ = true;
+  std::function<void(const std::string&, int)> error_report_;
+  void report_error(const std::string& line, int status) const;
 };
 
 /// The --from contract on the producer's side: declares every entry of `object` but `products`

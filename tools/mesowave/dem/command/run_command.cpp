@@ -191,7 +191,7 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
     if (!(in.scene.snapshot_interval_s > 0))
       throw InputError("--snapshots needs --snapshot-interval-us or [output] snapshot_interval_us");
     options.on_snapshot = [&, root](const Model& m, double t, std::int64_t index) {
-      if (!root) return;  // every rank holds the whole state; rank 0 writes it
+      if (!root) return;  // the simulation collected every sphere on every rank; rank 0 writes them
       const std::string name = "snapshot-" + std::to_string(index) + ".vtp";
       write_vtp(run.output(v.snapshot_dir / name), m, t);
       snapshots.emplace_back(t, name);

@@ -136,6 +136,7 @@ void CohesiveFrictionalContact::after_step(SphereSystem& system, double dt) {
 void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   travelled_ = 0;
   ++detection_passes_;
+  system.share_positions();  // distributed: every rank detects from every sphere's position
   const SphereSet& spheres = system.spheres();
   const BondNetwork& bonds = system.bonds();
   const Vec3* x = system.positions();

@@ -55,6 +55,7 @@ public:
   std::string name() const override { return "linear"; }
   bool displacement_state() const override { return true; }
   bool track_rotation() const override { return true; }
+  bool reads_velocities() const override { return false; }  // d and theta only (kernel())
   void attach(SphereSystem& system) override;
   void contact_forces(SphereSystem& system, double dt, bool evaluate_energy) override;
   std::size_t memory_bytes() const override { return nx_.size() * 4 * sizeof(double); }

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "mesowave/dem/engine/state_group.hpp"
 #include "mesowave/dem/engine/vec3.hpp"
@@ -99,9 +100,17 @@ public:
   /// Threads the step runs on (1 for small systems, where a parallel region costs more than it saves).
   virtual int threads() const = 0;
   /// Splits the steps that follow over the ranks of `domain` (several; docs/mpi.md), to the
-  /// same bits as one process. Called once, before the first step. InputError for a model
-  /// that does not run distributed (the default).
-  virtual void distribute(Domain& domain);
+  /// same bits as one process. Called once, before the first step. `observed`: the spheres
+  /// the actuators and sensors read or load (every rank then holds their motion after each
+  /// step; the others only its own spheres' and its ghosts'). InputError for a model that
+  /// does not run distributed (the default).
+  virtual void distribute(Domain& domain, const std::vector<std::size_t>& observed);
+  /// Distributed: makes every sphere's motion current on this rank (collective: every rank
+  /// calls it), before a snapshot reads them all. A no-op in one process.
+  virtual void collect_state() {}
+  /// Distributed: makes energy() whole on this rank after a step that did not evaluate the
+  /// energies (collective; the loop calls it once, after the last step). A no-op in one process.
+  virtual void collect_energy() {}
   /// What a distributed model tells of its split (empty for one process): ranks, spheres per
   /// rank, ghosts (docs/mpi.md).
   virtual std::string distribution() const { return {}; }

@@ -151,11 +151,8 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
   model_ = contact_laws()
                .get(scene_.contact_law, "[material].law")
                .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line});
-  if (options_.domain && options_.domain->size() > 1) {
-    if (options_.impulse_actuator >= 0)
-      throw InputError("--frequencies-kHz (superposition) runs on one process only, not on several MPI ranks");
-    model_->distribute(*options_.domain);
-  }
+  if (options_.domain && options_.domain->size() > 1 && options_.impulse_actuator >= 0)
+    throw InputError("--frequencies-kHz (superposition) runs on one process only, not on several MPI ranks");
 
   const double ratio = scene_.duration_s / scene_.dt_s;
   steps_ = std::int64_t(std::ceil(ratio - 1e-9));
@@ -201,6 +198,14 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
       sensors_.push_back(sensor_kinds().get(twin.kind, "sensor " + twin.name)
                              .make(SensorSite{twin, *model_, sensor_groups[i], line, 1, actuators_}, unused));
     }
+  if (options_.domain && options_.domain->size() > 1) {
+    // Every rank runs the actuators and sensors, so every rank holds the spheres they read.
+    std::vector<std::size_t> observed;
+    for (const auto& a : actuators_) observed.insert(observed.end(), a->spheres().begin(), a->spheres().end());
+    for (const auto& groups : sensor_groups)
+      for (const auto& g : groups) observed.insert(observed.end(), g.begin(), g.end());
+    model_->distribute(*options_.domain, observed);
+  }
   double r_min = model_->radius(0);
   for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
   dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.E_dem_Pa, m.damping);
@@ -262,7 +267,12 @@ RunReport Simulation::run() {
   const std::int64_t first = loop_.done;  // 0, or the step a checkpoint restored
   // Snapshot k is at step k * snapshot_every; a restarted run takes up the numbering after its step.
   std::int64_t snapshot_index = first > 0 && snapshot_every > 0 ? first / snapshot_every + 1 : 0;
-  if (snapshot_every > 0 && first == 0) options_.on_snapshot(model, 0.0, snapshot_index++);
+  // A distributed model holds other ranks' spheres only as ghosts: a snapshot collects them first.
+  const auto snapshot = [&](double t_s) {
+    model.collect_state();
+    options_.on_snapshot(model, t_s, snapshot_index++);
+  };
+  if (snapshot_every > 0 && first == 0) snapshot(0.0);
 
   // A test's stop rule reads the load sensors whenever they have a new sample.
   std::optional<UniaxialTestMonitor> monitor;
@@ -305,7 +315,7 @@ RunReport Simulation::run() {
                          " is too large for this packing (stable limit " + ns_text(dt_cr_.limit_s) +
                          ") or the model is unstable; nothing was written");
     }
-    if (snapshot_every > 0 && (n + 1) % snapshot_every == 0) options_.on_snapshot(model, double(n + 1) * dt, snapshot_index++);
+    if (snapshot_every > 0 && (n + 1) % snapshot_every == 0) snapshot(double(n + 1) * dt);
     loop_.done = n + 1;
     if (monitor && loads.front()->samples().size() > seen) {
       seen = loads.front()->samples().size();
@@ -341,6 +351,7 @@ RunReport Simulation::run() {
   r.wall_s = wall;
   r.steps_per_s = wall > 0 ? double(stepped) / wall : 0;
   r.ns_per_contact_step = stepped > 0 && r.contacts > 0 ? wall * 1e9 / (double(stepped) * double(r.contacts)) : 0;
+  model.collect_energy();  // a stop after a step without energies: the damping of every rank's blocks
   r.energy = model.energy();
   r.peak_stored_J = loop_.peak_stored_J;
   r.peak_force_ratio = model.peak_force_ratio();

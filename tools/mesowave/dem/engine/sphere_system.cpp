@@ -7,6 +7,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/kernel_clones.hpp"
+#include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
 namespace {
@@ -199,6 +200,7 @@ void SphereSystem::step(double dt, bool evaluate_energy) {
   double peak2 = 0, vmax2 = 0;
   for (double p : task_peak2_) peak2 = std::max(peak2, p);
   for (double v2 : sphere_block_vmax2_) vmax2 = std::max(vmax2, v2);
+  if (domain_) vmax2 = vmax2_all_;  // other ranks' blocks are theirs: share_step brought the largest
   peak_ratio_ = std::max(peak_ratio_, std::sqrt(peak2));
   max_speed_ = std::sqrt(vmax2);
   if (evaluate_energy) {
@@ -209,6 +211,7 @@ void SphereSystem::step(double dt, bool evaluate_energy) {
     energy_.elastic_J = elastic;
   }
   kernel_->after_step(*this, dt);
+  if (domain_ && ghosts_stale_) exchange_ghosts();  // contact detection brought new ghosts
 }
 
 void SphereSystem::integrate(double dt, bool evaluate_energy) {
@@ -315,10 +318,12 @@ EnergyAccount SphereSystem::energy() const {
 }
 
 bool SphereSystem::has_non_finite_state() const {
-  for (std::size_t k = 0; k < x_.size(); ++k)
-    if (!std::isfinite(x_[k].x + x_[k].y + x_[k].z + v_[k].x + v_[k].y + v_[k].z + w_[k].x + w_[k].y + w_[k].z))
-      return true;
-  return false;
+  // Distributed: each rank checks its own spheres, and all agree (collective).
+  const std::size_t begin = domain_ ? own_begin_ : 0, end = domain_ ? own_end_ : x_.size();
+  std::uint64_t bad = 0;
+  for (std::size_t k = begin; k < end && !bad; ++k)
+    bad = !std::isfinite(x_[k].x + x_[k].y + x_[k].z + v_[k].x + v_[k].y + v_[k].z + w_[k].x + w_[k].y + w_[k].z);
+  return domain_ ? domain_->sum(bad) > 0 : bad != 0;
 }
 
 void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {

@@ -20,8 +20,11 @@
 // owns a range of whole sphere blocks in Morton order - a compact piece of space - computes
 // every contact that touches one of its spheres (a contact across two ranks on both, from
 // the same inputs in the same orientation, first < second: the same bits) and moves only
-// its own spheres; the motion is then shared, and the task sums are redone from the
-// contacts' values gathered in slot order, so every rank holds the single-process state.
+// its own spheres; after each step it sends its neighbour ranks the motion of the spheres
+// they hold as ghosts (the other ends of their contacts), every rank the spheres the
+// actuators and sensors read, and the task sums are redone from the contacts' values
+// gathered in slot order, so every rank holds what the single-process run holds of its
+// own spheres, its ghosts and the observed spheres, bit for bit.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -61,6 +64,9 @@ public:
   virtual std::size_t broken_bond_count() const { return 0; }
   /// The same over the given slots only (a distributed run counts each bond on one rank).
   virtual std::size_t broken_bonds_in(const std::vector<std::uint32_t>& /*slots*/) const { return 0; }
+  /// The kernel reads the velocities and angular velocities (false: positions and rotations
+  /// only), so a distributed run sends its ghosts only what the law reads.
+  virtual bool reads_velocities() const { return true; }
   virtual std::size_t memory_bytes() const = 0;
   /// The law's state that changes from step to step (a checkpoint, state_group.hpp):
   /// bonds broken, shear forces, contacts detected and their layout. load_state
@@ -110,8 +116,13 @@ public:
   void save_state(StateGroup& group) const override;
   void load_state(const StateGroup& group) override;
   int threads() const override { return parallel_ ? threads_ : 1; }
-  void distribute(Domain& domain) override;
+  void distribute(Domain& domain, const std::vector<std::size_t>& observed) override;
   std::string distribution() const override;
+  void collect_state() override;
+  void collect_energy() override;
+  /// Distributed: makes every sphere's position current on every rank (collective; contact
+  /// detection reads them all). A no-op in one process.
+  void share_positions();
 
   const SphereSet& spheres() const { return spheres_; }
   const BondNetwork& bonds() const { return bonds_; }
@@ -241,20 +252,43 @@ private:
   std::vector<Vec3> forced_v_before_;
   std::vector<std::uint8_t> is_forced_;
 
-  // A distributed run (dem/parallel/sphere_system_domain.cpp): this rank's spheres and
-  // blocks, the contacts it computes (slot_needed_: an end is its own) and those whose
-  // energies and strength ratio it reports (reporter: the rank owning the first sphere),
-  // every rank's reported slots in rank then slot order, and the per-slot values.
+  // A distributed run (dem/parallel/sphere_system_domain.cpp, docs/mpi.md): this rank's
+  // spheres and blocks (per rank: sphere_counts_/displs_ in doubles, 3 a sphere), the contacts
+  // it computes (slot_needed_: an end is its own) and those whose energies, strength ratio and
+  // breakage it reports (the rank owning the first sphere), the per-slot values, the ghost
+  // lists (per neighbour rank, sorted by id: the spheres it sends there and those it receives
+  // from there) and the observed spheres (those an actuator or sensor reads: every rank holds
+  // them; sorted by id, so by owner).
   Domain* domain_ = nullptr;
   std::size_t own_begin_ = 0, own_end_ = 0, own_block_begin_ = 0, own_block_end_ = 0, ghosts_ = 0;
   std::size_t broken_ = 0;  ///< bonds broken on all ranks after the last step (shared with the motion)
+  double vmax2_all_ = 0;    ///< the largest block bound of |v|^2 over all ranks after the last step
   std::vector<int> sphere_counts_, sphere_displs_, block_counts_, block_displs_;
   std::vector<std::uint8_t> slot_needed_;
-  std::vector<std::uint32_t> reported_, reported_all_;
-  std::vector<int> reported_counts_, reported_displs_;
+  std::vector<std::uint32_t> reported_;
   std::vector<double> slot_elastic_, slot_plastic_, slot_ratio2_, send_, recv_;
+  struct GhostList {
+    int rank;
+    std::vector<std::uint32_t> spheres;
+    std::vector<double> buffer;
+  };
+  std::vector<GhostList> ghost_sends_, ghost_receives_;
+  std::vector<std::uint32_t> observed_;
+  std::vector<std::uint32_t> touched_;  ///< other ranks' spheres this rank's computed chunks add forces to
+  std::vector<int> observed_counts_, observed_displs_;
+  std::vector<GhostList> elastic_sends_, elastic_receives_;  ///< slots (not spheres) whose elastic part goes to the task's owner
+  std::vector<int> task_owner_, task_counts_;                ///< per task the rank adding its elastic sum; per rank its tasks
+  std::vector<std::uint32_t> owned_tasks_;
+  bool ghosts_stale_ = false;  ///< a new layout brought new ghosts: exchange before the next step
+  double ghost_layer_m_ = 0;   ///< a test's too-thin ghost layer (MESOWAVE_TEST_GHOST_LAYER_MM); infinite otherwise
+  int ghost_layer_rank_ = -1;   ///< the rank it thins (-1: all)
+  // What the steps moved into this rank (docs/mpi.md's model): doubles received point to point
+  // and by the collectives, and the exchanges counted.
+  std::uint64_t ghost_doubles_ = 0, shared_doubles_ = 0, shared_steps_ = 0, ghost_messages_ = 0;
   void lay_out_domain();
+  void exchange_ghosts();
   void share_step(bool evaluate_energy);
+  void share_elastic();
 };
 
 template <class Result, class Kernel>

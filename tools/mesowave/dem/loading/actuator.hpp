@@ -18,7 +18,8 @@ public:
   virtual const std::string& name() const = 0;
   virtual void before_step(Model& /*model*/, double /*t_s*/, double /*dt_s*/) {}
   virtual void after_step(Model& /*model*/, double /*t_s*/, double /*dt_s*/) {}
-  /// The spheres it acts on (model numbering).
+  /// The spheres it acts on (model numbering): every sphere it reads or loads, since on several
+  /// MPI ranks every rank holds these and not the others (docs/mpi.md).
   virtual const std::vector<std::size_t>& spheres() const = 0;
   /// One line for the run summary ("force 1 N, 100 kHz 5-cycle Hann burst along +x on 4 spheres").
   virtual std::string description() const = 0;

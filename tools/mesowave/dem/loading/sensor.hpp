@@ -34,7 +34,9 @@ public:
   virtual void load_state(const StateGroup& group) { samples_ = group.read_doubles("samples"); }
 
 protected:
-  /// One sample of the model as it is after a step.
+  /// One sample of the model as it is after a step. It reads only the spheres of its
+  /// groups (SensorSite::groups): on several MPI ranks every rank holds those, not the
+  /// others (docs/mpi.md).
   virtual double sample(const Model& model) const = 0;
   std::int64_t interval() const { return interval_; }
   /// The recorded signal: this sensor's name and samples, one every interval steps from t0.

@@ -10,6 +10,8 @@
 // reduction adds in an order of its own choosing): data is gathered and the
 // caller adds it in the serial order, so the bits match the single-process run.
 // The only reductions are max and the integer sum, which are exact in any order.
+// exchange() is the point-to-point part: each rank sends its neighbours the motion of
+// the spheres they hold as ghosts (stage 2, docs/mpi.md), nothing to anyone else.
 #include <cstdint>
 #include <vector>
 
@@ -17,6 +19,12 @@ namespace mesowave::dem {
 
 class Domain {
 public:
+  /// One point-to-point message of `count` doubles to or from `rank`.
+  struct Message {
+    int rank;
+    double* data;
+    int count;
+  };
   virtual ~Domain() = default;
   virtual int rank() const = 0;
   virtual int size() const = 0;
@@ -26,6 +34,10 @@ public:
   /// recv gets every rank's `send` (counts[r] doubles each), in rank order at displs[r].
   virtual void gather_all(const double* send, int count, double* recv, const std::vector<int>& counts,
                           const std::vector<int>& displs) = 0;
+  /// Every send goes to its rank, every receive is filled from its rank; both sides know
+  /// the counts (the ghost lists are built on both from the same layout). Not collective:
+  /// only the ranks named take part. Returns when all have completed.
+  virtual void exchange(const std::vector<Message>& sends, const std::vector<Message>& receives) = 0;
   /// The largest of every rank's value (exact in any order).
   virtual double max(double value) = 0;
   /// The sum of every rank's count (integers: exact in any order).

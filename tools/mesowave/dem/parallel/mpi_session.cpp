@@ -1,7 +1,10 @@
 #include "mesowave/dem/parallel/mpi_session.hpp"
 
+#include <chrono>
 #include <cstdlib>
+#include <iostream>
 #include <string>
+#include <thread>
 
 #include "mesowave/core/error.hpp"
 
@@ -34,6 +37,13 @@ public:
                   const std::vector<int>& displs) override {
     MPI_Allgatherv(send, count, MPI_DOUBLE, recv, counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
   }
+  void exchange(const std::vector<Message>& sends, const std::vector<Message>& receives) override {
+    requests_.resize(sends.size() + receives.size());
+    std::size_t k = 0;
+    for (const Message& m : receives) MPI_Irecv(m.data, m.count, MPI_DOUBLE, m.rank, kGhostTag, MPI_COMM_WORLD, &requests_[k++]);
+    for (const Message& m : sends) MPI_Isend(m.data, m.count, MPI_DOUBLE, m.rank, kGhostTag, MPI_COMM_WORLD, &requests_[k++]);
+    MPI_Waitall(int(k), requests_.data(), MPI_STATUSES_IGNORE);
+  }
   double max(double value) override {
     double out = 0;
     MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
@@ -46,7 +56,9 @@ public:
   }
 
 private:
+  static constexpr int kGhostTag = 18;
   int rank_, size_;
+  std::vector<MPI_Request> requests_;
 };
 #endif
 
@@ -66,6 +78,18 @@ MpiSession::MpiSession(int& argc, char**& argv) {
   throw InputError("started by an MPI launcher for several ranks, but this build has no MPI (install "
                    "libopenmpi-dev and configure again)");
 #endif
+}
+
+void MpiSession::report_error(const std::string& line, int status) {
+#ifdef MESOWAVE_HAVE_MPI
+  if (size_ > 1) {
+    if (rank_ != 0) std::this_thread::sleep_for(std::chrono::seconds(3));
+    std::cerr << "error: " << line << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, status);
+  }
+#endif
+  (void)status;
+  std::cerr << "error: " << line << "\n";
 }
 
 MpiSession::~MpiSession() {

@@ -9,6 +9,7 @@
 // (MESOWAVE_HAVE_MPI unset: libopenmpi-dev missing at configure time) refuses a
 // launch with more than one rank in one line rather than running N copies.
 #include <memory>
+#include <string>
 
 #include "mesowave/dem/parallel/domain.hpp"
 
@@ -26,6 +27,12 @@ public:
   int size() const { return size_; }
   /// Rank 0 writes the outputs and records the run; the others only compute.
   bool is_root() const { return rank_ == 0; }
+  /// A run's one-line error: on one rank (or no launcher) printed as "error: LINE". On several
+  /// ranks it ends them all (MPI_Abort with `status`: a failure on some ranks must not leave the
+  /// others waiting in an exchange), printed once: rank 0 prints at once; another rank first
+  /// waits a moment, so that a failure every rank meets (a bad input) is printed by rank 0,
+  /// whose abort ends the others before they print, and one of its own is still printed.
+  void report_error(const std::string& line, int status);
   /// The ranks as the engine takes them (SimulationOptions::domain); nullptr for a single rank.
   Domain* domain() { return domain_.get(); }
 

@@ -1,32 +1,66 @@
 // SphereSystem's distributed step (sphere_system.hpp, docs/mpi.md): the split of the
-// spheres over the ranks, which contacts each rank computes, and what the ranks share
-// after each step so that every one holds the single-process state, bit for bit.
+// spheres over the ranks, which contacts each rank computes, the ghosts it receives, and
+// what the ranks share after each step so that each holds the single-process state of its
+// own spheres, its ghosts and the observed spheres, bit for bit.
 //
 // Why the bits match. A sphere's force is the sum, in a fixed order, of its contacts'
 // results (interior contacts in slot order, then the cross-partition records in slot
 // order, then the external load): the order is set by the slot layout, which every rank
-// builds identically from the same (shared) positions, and a contact's result depends
-// only on its two spheres' state and its own history, which the ranks holding it compute
-// identically. A rank computes every contact with an end of its own (and so keeps those
-// contacts' history itself), so its own spheres get every term in the serial order.
-// The sums over contacts (elastic energy, plastic dissipation) are redone after the
-// gather, per task in slot order as the single process adds them; the strength ratio is
-// a max, exact in any order; the sums over spheres are kept per 256-sphere block, and a
-// block is never split between ranks.
+// builds identically (contact detection runs on every rank from the same positions,
+// share_positions), and a contact's result depends only on its two spheres' state and its
+// own history. A rank computes every contact with an end of its own (and so keeps those
+// contacts' history itself); the other end is its own or a ghost, received from its owner
+// after every step (stage 2: only the ghosts, point to point, instead of the whole state).
+// So its own spheres get every term in the serial order from the serial inputs.
+// The sums over contacts (elastic energy, plastic dissipation) are redone from the
+// reporters' per-slot values, per task in slot order as the single process adds them; the
+// strength ratio and the speed bound are maxima, exact in any order; the sums over spheres
+// are kept per 256-sphere block, and a block is never split between ranks. The actuators and
+// sensors run on every rank, as in one process, on the observed spheres, which every rank
+// holds: their sums (sensor averages, wall forces, external work) keep the serial order.
+//
+// A contact with no end of this rank that shares a 32-contact chunk with one of its own is
+// computed too (a chunk is one vector loop), from whatever this rank holds of its spheres;
+// its forces land on other ranks' spheres, which are cleared, and its energies come from
+// its reporter, so nothing of it is kept.
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/format.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
 #include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
+namespace {
 
-void Model::distribute(Domain& /*domain*/) {
+// Test-only (tests/cli/mw_dem_mpi_test.cpp): MESOWAVE_TEST_GHOST_LAYER_MM keeps as ghosts only
+// the partners closer than that to their contact's own end, on the rank
+// MESOWAVE_TEST_GHOST_LAYER_RANK (all if unset), so that the missing-partner check is seen to fire.
+double test_ghost_layer_m() {
+  const char* v = std::getenv("MESOWAVE_TEST_GHOST_LAYER_MM");
+  return v ? std::atof(v) * 1e-3 : std::numeric_limits<double>::infinity();
+}
+int test_ghost_layer_rank() {
+  const char* v = std::getenv("MESOWAVE_TEST_GHOST_LAYER_RANK");
+  return v ? std::atoi(v) : -1;
+}
+
+void sort_unique(std::vector<std::uint32_t>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+}  // namespace
+
+void Model::distribute(Domain& /*domain*/, const std::vector<std::size_t>& /*observed*/) {
   throw InputError("the " + name() + " model runs on one process only; on several MPI ranks run --model linear or full");
 }
 
-void SphereSystem::distribute(Domain& domain) {
+void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& observed) {
   const std::size_t n = spheres_.size(), blocks = (n + kSphereBlock - 1) / kSphereBlock;
   const int ranks = domain.size(), me = domain.rank();
   if (std::size_t(ranks) > blocks)
@@ -35,6 +69,7 @@ void SphereSystem::distribute(Domain& domain) {
   if (3 * n > std::size_t(0x7fffffff))
     throw InputError(std::to_string(n) + " spheres: more than MPI's int counts address in one exchange");
   domain_ = &domain;
+  ghost_layer_m_ = test_ghost_layer_m(), ghost_layer_rank_ = test_ghost_layer_rank();
   // Whole blocks in Morton order: rank r holds blocks [B r / N, B (r + 1) / N).
   sphere_counts_.assign(std::size_t(ranks), 0), sphere_displs_.assign(std::size_t(ranks), 0);
   block_counts_.assign(std::size_t(ranks), 0), block_displs_.assign(std::size_t(ranks), 0);
@@ -45,62 +80,245 @@ void SphereSystem::distribute(Domain& domain) {
     sphere_displs_[std::size_t(r)] = int(3 * s0), sphere_counts_[std::size_t(r)] = int(3 * (s1 - s0));
     if (r == me) own_block_begin_ = b0, own_block_end_ = b1, own_begin_ = s0, own_end_ = s1;
   }
+  // The observed spheres, sorted by id: each rank's are one contiguous run of the list.
+  observed_.assign(observed.begin(), observed.end());
+  sort_unique(observed_);
+  observed_counts_.assign(std::size_t(ranks), 0), observed_displs_.assign(std::size_t(ranks), 0);
+  for (int r = 0, k = 0; r < ranks; ++r) {
+    observed_displs_[std::size_t(r)] = k;
+    const std::uint32_t end = std::uint32_t((sphere_displs_[std::size_t(r)] + sphere_counts_[std::size_t(r)]) / 3);
+    while (std::size_t(k) < observed_.size() && observed_[std::size_t(k)] < end) ++k;
+    observed_counts_[std::size_t(r)] = k - observed_displs_[std::size_t(r)];
+  }
   lay_out_domain();
+  ghosts_stale_ = false;  // at step 0 every rank holds the same (initial) state of every sphere
   broken_ = std::size_t(domain.sum(kernel_->broken_bonds_in(reported_)));
 }
 
-// After every new slot layout: the contacts this rank computes and the reporters.
+// After every new slot layout: the contacts this rank computes, the reporters, the ghost lists.
 void SphereSystem::lay_out_domain() {
   const std::size_t count = first_.size(), n = spheres_.size();
   const int ranks = domain_->size(), me = domain_->rank();
-  const auto own = [&](std::uint32_t k) { return k >= own_begin_ && k < own_end_; };
   // The rank owning sphere k: the block's, by the same rule as distribute().
   const std::size_t blocks = (n + kSphereBlock - 1) / kSphereBlock;
   std::vector<int> block_owner(blocks);
   for (int r = 0; r < ranks; ++r)
     for (int b = 0; b < block_counts_[std::size_t(r)]; ++b) block_owner[std::size_t(block_displs_[std::size_t(r)] + b)] = r;
+  const auto owner = [&](std::uint32_t k) { return block_owner[k / kSphereBlock]; };
+  const bool thinned = ghost_layer_rank_ < 0 || ghost_layer_rank_ == me;
+  const auto position = [&](std::uint32_t k) { return displacement_state_ ? spheres_.centre_m[k] + x_[k] : x_[k]; };
   slot_needed_.assign(count, 0);
-  std::vector<std::uint8_t> ghost(n, 0);
-  std::vector<std::vector<std::uint32_t>> by_rank(static_cast<std::size_t>(ranks));
+  reported_.clear();
+  std::vector<std::vector<std::uint32_t>> sends(static_cast<std::size_t>(ranks)), receives(static_cast<std::size_t>(ranks));
   for (std::size_t s = 0; s < count; ++s) {
     const std::uint32_t i = first_[s], j = second_[s];
-    slot_needed_[s] = own(i) || own(j);
-    if (slot_needed_[s]) ghost[own(i) ? j : i] |= !own(own(i) ? j : i);
-    by_rank[std::size_t(block_owner[i / kSphereBlock])].push_back(std::uint32_t(s));
+    const int oi = owner(i), oj = owner(j);
+    slot_needed_[s] = oi == me || oj == me;
+    if (oi == me) reported_.push_back(std::uint32_t(s));
+    if (oi == oj || !slot_needed_[s]) continue;
+    // A contact across two ranks: each needs the other's end. Both sides list it from the same layout.
+    const std::uint32_t mine = oi == me ? i : j, theirs = oi == me ? j : i;
+    const int other = oi == me ? oj : oi;
+    sends[std::size_t(other)].push_back(mine);
+    if (!thinned || norm(position(theirs) - position(mine)) <= ghost_layer_m_) receives[std::size_t(other)].push_back(theirs);
   }
-  ghosts_ = std::size_t(std::count(ghost.begin(), ghost.end(), 1));
-  reported_ = by_rank[std::size_t(me)];
-  reported_all_.clear();
-  reported_counts_.assign(std::size_t(ranks), 0), reported_displs_.assign(std::size_t(ranks), 0);
+  // Other ranks' spheres this rank's computed chunks add forces to (for_each_contact's chunks:
+  // kChunk slots from each task's start), cleared after each step.
+  touched_.clear();
+  for (std::size_t task = 0, tasks = partitions_ + cross_blocks_; task < tasks; ++task) {
+    const bool interior = task < partitions_;
+    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
+    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+    for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
+      const std::size_t last = std::min(end, chunk + kChunk);
+      if (std::find(&slot_needed_[chunk], &slot_needed_[0] + last, 1) == &slot_needed_[0] + last) continue;
+      for (std::size_t s = chunk; s < last; ++s)
+        for (const std::uint32_t k : {first_[s], second_[s]})
+          if (owner(k) != me) touched_.push_back(k);
+    }
+  }
+  sort_unique(touched_);
+  ghost_sends_.clear(), ghost_receives_.clear();
+  ghosts_ = 0;
+  std::vector<std::uint8_t> held(n, 0);
+  std::fill(held.begin() + std::ptrdiff_t(own_begin_), held.begin() + std::ptrdiff_t(own_end_), std::uint8_t(1));
   for (int r = 0; r < ranks; ++r) {
-    reported_displs_[std::size_t(r)] = int(reported_all_.size());
-    reported_counts_[std::size_t(r)] = int(by_rank[std::size_t(r)].size());
-    reported_all_.insert(reported_all_.end(), by_rank[std::size_t(r)].begin(), by_rank[std::size_t(r)].end());
+    auto& out = sends[std::size_t(r)];
+    auto& in = receives[std::size_t(r)];
+    sort_unique(out), sort_unique(in);
+    if (!out.empty()) ghost_sends_.push_back({r, std::move(out), {}});
+    if (!in.empty()) {
+      for (const std::uint32_t k : in) held[k] = 1;
+      ghosts_ += in.size();
+      ghost_receives_.push_back({r, std::move(in), {}});
+    }
+  }
+  // Never silently lost: every contact of this rank's spheres must find its other end here.
+  for (std::size_t s = 0; s < count; ++s) {
+    if (!slot_needed_[s] || (held[first_[s]] && held[second_[s]])) continue;
+    const std::uint32_t i = first_[s], j = second_[s], missing = held[i] ? j : i;
+    const auto at = std::lower_bound(bonds_.first.begin(), bonds_.first.end(), i);
+    std::size_t bond = bonds_.size();
+    for (auto b = std::size_t(at - bonds_.first.begin()); b < bonds_.size() && bonds_.first[b] == i; ++b)
+      if (bonds_.second[b] == j) bond = b;
+    throw InputError("rank " + std::to_string(me) + " of " + std::to_string(ranks) + ": " +
+                     (bond < bonds_.size() ? "bond " + std::to_string(bond) : std::string("the contact")) +
+                     " between spheres " + std::to_string(spheres_.packing_index[i]) + " and " +
+                     std::to_string(spheres_.packing_index[j]) + " (packing ids) has lost its partner: sphere " +
+                     std::to_string(spheres_.packing_index[missing]) + " is neither held nor a ghost on this rank (ghost layer " +
+                     format_number(ghost_layer_m_ * 1e3) + " mm, the contact " + format_number(norm(position(j) - position(i)) * 1e3) +
+                     " mm long): the layer must reach at least the longest bond plus the motion between exchanges");
   }
   slot_elastic_.assign(count, 0), slot_plastic_.assign(count, 0), slot_ratio2_.assign(count, 0);
+
+  // The elastic sum of each task is taken, in slot order, by the rank that reports most of its
+  // slots (ties: the lowest); the others send it their values of the task (point to point).
+  const std::size_t tasks = partitions_ + cross_blocks_;
+  task_owner_.assign(tasks, 0);
+  std::vector<std::size_t> tally(static_cast<std::size_t>(ranks));
+  std::vector<std::vector<std::uint32_t>> to(static_cast<std::size_t>(ranks)), from(static_cast<std::size_t>(ranks));
+  owned_tasks_.clear();
+  task_counts_.assign(std::size_t(ranks), 0);
+  for (std::size_t task = 0; task < tasks; ++task) {
+    const bool interior = task < partitions_;
+    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
+    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+    std::fill(tally.begin(), tally.end(), 0);
+    for (std::size_t s = begin; s < end; ++s) ++tally[std::size_t(owner(first_[s]))];
+    const int q = int(std::max_element(tally.begin(), tally.end()) - tally.begin());
+    task_owner_[task] = q;
+    ++task_counts_[std::size_t(q)];
+    if (q == me) owned_tasks_.push_back(std::uint32_t(task));
+    for (std::size_t s = begin; s < end; ++s) {
+      const int r = owner(first_[s]);
+      if (r == me && q != me) to[std::size_t(q)].push_back(std::uint32_t(s));
+      if (q == me && r != me) from[std::size_t(r)].push_back(std::uint32_t(s));
+    }
+  }
+  elastic_sends_.clear(), elastic_receives_.clear();
+  for (int r = 0; r < ranks; ++r) {
+    if (!to[std::size_t(r)].empty()) elastic_sends_.push_back({r, std::move(to[std::size_t(r)]), {}});
+    if (!from[std::size_t(r)].empty()) elastic_receives_.push_back({r, std::move(from[std::size_t(r)]), {}});
+  }
+  ghosts_stale_ = true;
 }
 
-// One message a step: each rank's part - its spheres' motion, its blocks' sums, its reported
-// contacts' plastic (and on energy steps elastic) parts, its largest strength ratio and its
-// broken bonds - gathered to every rank, which then adds the task sums in slot order, as
-// for_each_contact adds them in one process.
-void SphereSystem::share_step(bool evaluate_energy) {
+// Energy steps: the elastic parts to each task's owner, which adds them in slot order; the task
+// sums then to every rank (in owner then task order), so every rank holds every task's sum.
+void SphereSystem::share_elastic() {
+  std::vector<Domain::Message> sends, receives;
+  for (auto& g : elastic_sends_) {
+    g.buffer.resize(g.spheres.size());
+    for (std::size_t k = 0; k < g.spheres.size(); ++k) g.buffer[k] = slot_elastic_[g.spheres[k]];
+    sends.push_back({g.rank, g.buffer.data(), int(g.buffer.size())});
+  }
+  for (auto& g : elastic_receives_) {
+    g.buffer.resize(g.spheres.size());
+    receives.push_back({g.rank, g.buffer.data(), int(g.buffer.size())});
+    shared_doubles_ += g.buffer.size();
+  }
+  domain_->exchange(sends, receives);
+  for (const auto& g : elastic_receives_)
+    for (std::size_t k = 0; k < g.spheres.size(); ++k) slot_elastic_[g.spheres[k]] = g.buffer[k];
   const std::size_t count = first_.size();
-  // Other ranks' spheres got this rank's share of their contacts: not theirs to keep.
-  std::fill(f_acc_.begin(), f_acc_.begin() + std::ptrdiff_t(own_begin_), Vec3{});
-  std::fill(t_acc_.begin(), t_acc_.begin() + std::ptrdiff_t(own_begin_), Vec3{});
-  std::fill(f_acc_.begin() + std::ptrdiff_t(own_end_), f_acc_.end(), Vec3{});
-  std::fill(t_acc_.begin() + std::ptrdiff_t(own_end_), t_acc_.end(), Vec3{});
+  std::vector<double> mine;
+  for (const std::uint32_t task : owned_tasks_) {
+    const bool interior = task < partitions_;
+    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
+    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+    double elastic = 0;
+    for (std::size_t s = begin; s < end; ++s) elastic += slot_elastic_[s];
+    mine.push_back(elastic);
+  }
+  const int ranks = domain_->size();
+  std::vector<int> displs(static_cast<std::size_t>(ranks));
+  for (int r = 1; r < ranks; ++r) displs[std::size_t(r)] = displs[std::size_t(r - 1)] + task_counts_[std::size_t(r - 1)];
+  std::vector<double> all(task_owner_.size());
+  domain_->gather_all(mine.data(), int(mine.size()), all.data(), task_counts_, displs);
+  shared_doubles_ += all.size() - mine.size();
+  std::vector<int> next(displs);
+  for (std::size_t task = 0; task < task_owner_.size(); ++task)
+    task_elastic_[task] = all[std::size_t(next[std::size_t(task_owner_[task])]++)];
+}
 
-  std::vector<Vec3>* motion[] = {&x_, &v_, &w_, &a_, &a_undamped_, &theta_};
-  std::vector<double>* block_sums[] = {&sphere_block_kinetic_, &sphere_block_damping_, &sphere_block_vmax2_};
-  const std::size_t vectors = track_rotation_ ? 6 : 5, per_contact = evaluate_energy ? 2 : 1;
+// Point to point: each neighbour gets the motion the contact law reads of the spheres it
+// holds as ghosts (positions; velocities and angular velocities unless the law reads none;
+// rotations where they are integrated).
+void SphereSystem::exchange_ghosts() {
+  std::vector<Vec3>* motion[4];
+  std::size_t vectors = 0;
+  motion[vectors++] = &x_;
+  if (kernel_->reads_velocities()) motion[vectors++] = &v_, motion[vectors++] = &w_;
+  if (track_rotation_) motion[vectors++] = &theta_;
+  std::vector<Domain::Message> sends, receives;
+  for (auto& g : ghost_sends_) {
+    g.buffer.resize(3 * vectors * g.spheres.size());
+    double* o = g.buffer.data();
+    for (const std::uint32_t k : g.spheres)
+      for (std::size_t v = 0; v < vectors; ++v) {
+        const Vec3& q = (*motion[v])[k];
+        *o++ = q.x, *o++ = q.y, *o++ = q.z;
+      }
+    sends.push_back({g.rank, g.buffer.data(), int(g.buffer.size())});
+  }
+  for (auto& g : ghost_receives_) {
+    g.buffer.resize(3 * vectors * g.spheres.size());
+    receives.push_back({g.rank, g.buffer.data(), int(g.buffer.size())});
+    ghost_doubles_ += g.buffer.size();
+  }
+  ghost_messages_ += receives.size();
+  domain_->exchange(sends, receives);
+  for (const auto& g : ghost_receives_) {
+    const double* in = g.buffer.data();
+    for (const std::uint32_t k : g.spheres)
+      for (std::size_t v = 0; v < vectors; ++v) {
+        Vec3& q = (*motion[v])[k];
+        q.x = in[0], q.y = in[1], q.z = in[2];
+        in += 3;
+      }
+  }
+  ghosts_stale_ = false;
+}
+
+// After every step: the ghosts (point to point), then one small fixed gather (each rank's
+// largest strength ratio and speed bound, broken bonds and count of sliding contacts) and one
+// gather of each rank's part of what every rank reads: the observed spheres' motion, its
+// reported contacts' nonzero plastic parts as (slot, value), on energy steps its blocks'
+// damping and kinetic sums. Every rank then adds the plastic task sums in slot order, as
+// for_each_contact adds them in one process; the elastic ones come from share_elastic.
+void SphereSystem::share_step(bool evaluate_energy) {
+  // Other ranks' spheres got this rank's share of their contacts: not theirs to keep.
+  for (const std::uint32_t k : touched_) f_acc_[k] = {}, t_acc_[k] = {};
+  exchange_ghosts();
+
   const int ranks = domain_->size(), me = domain_->rank();
-  // Rank r's part: `vectors` x its spheres (3 doubles each), 3 x its blocks, per_contact x its reported contacts, 2.
+  const auto at = [](const std::vector<int>& v, int r) { return std::size_t(v[std::size_t(r)]); };
+  double peak2 = 0, vmax2 = 0;
+  std::size_t sliding = 0;
+  for (const std::uint32_t s : reported_) peak2 = std::max(peak2, slot_ratio2_[s]), sliding += slot_plastic_[s] != 0;
+  for (std::size_t b = own_block_begin_; b < own_block_end_; ++b) vmax2 = std::max(vmax2, sphere_block_vmax2_[b]);
+  constexpr int kFixed = 4;
+  const double fixed[kFixed] = {peak2, vmax2, double(kernel_->broken_bonds_in(reported_)), double(sliding)};  // counts exact below 2^53
+  std::vector<double> all_fixed(static_cast<std::size_t>(kFixed * ranks));
+  std::vector<int> fixed_counts(static_cast<std::size_t>(ranks), kFixed), fixed_displs(static_cast<std::size_t>(ranks));
+  for (int r = 0; r < ranks; ++r) fixed_displs[std::size_t(r)] = kFixed * r;
+  domain_->gather_all(fixed, kFixed, all_fixed.data(), fixed_counts, fixed_displs);
+  peak2 = 0, vmax2 = 0;
+  std::size_t broken = 0;
+  std::vector<std::size_t> sliding_on(static_cast<std::size_t>(ranks));
+  for (int r = 0; r < ranks; ++r) {
+    const double* f = &all_fixed[std::size_t(kFixed * r)];
+    peak2 = std::max(peak2, f[0]), vmax2 = std::max(vmax2, f[1]);
+    broken += std::size_t(f[2]), sliding_on[std::size_t(r)] = std::size_t(f[3]);
+  }
+  broken_ = broken, vmax2_all_ = vmax2;
+
+  // Rank r's part: 12 doubles an observed sphere (x, v, a, a undamped), 2 a sliding contact; on
+  // energy steps also 2 a block (damping, kinetic). The blocks' damping sums are read only with
+  // the energies (energy steps, and collect_energy after the last step).
+  const std::size_t per_block = evaluate_energy ? 2 : 0;
   const auto part = [&](int r) {
-    const std::size_t i = std::size_t(r);
-    return vectors * std::size_t(sphere_counts_[i]) + 3 * std::size_t(block_counts_[i]) +
-           per_contact * std::size_t(reported_counts_[i]) + 2;
+    return 12 * at(observed_counts_, r) + per_block * at(block_counts_, r) + 2 * sliding_on[std::size_t(r)];
   };
   std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
   std::size_t total = 0;
@@ -110,69 +328,96 @@ void SphereSystem::share_step(bool evaluate_energy) {
     total += part(r);
   }
   if (total > std::size_t(0x7fffffff)) throw InputError("a distributed step's exchange exceeds MPI's int counts");
+  std::vector<Vec3>* observed_motion[] = {&x_, &v_, &a_, &a_undamped_};
   send_.resize(part(me));
   {
     double* o = send_.data();
-    const std::size_t s0 = own_begin_, s1 = own_end_;
-    for (std::size_t v = 0; v < vectors; ++v) o = std::copy(&(*motion[v])[s0].x, &(*motion[v])[s0].x + 3 * (s1 - s0), o);
-    for (auto* b : block_sums)
-      o = std::copy(b->begin() + std::ptrdiff_t(own_block_begin_), b->begin() + std::ptrdiff_t(own_block_end_), o);
-    double peak2 = 0;
-    for (const std::uint32_t s : reported_) *o++ = slot_plastic_[s], peak2 = std::max(peak2, slot_ratio2_[s]);
+    for (std::size_t q = at(observed_displs_, me), e = q + at(observed_counts_, me); q < e; ++q)
+      for (auto* m : observed_motion) {
+        const Vec3& p = (*m)[observed_[q]];
+        *o++ = p.x, *o++ = p.y, *o++ = p.z;
+      }
     if (evaluate_energy)
-      for (const std::uint32_t s : reported_) *o++ = slot_elastic_[s];
-    *o++ = peak2;
-    *o++ = double(kernel_->broken_bonds_in(reported_));  // exact: a count below 2^53
+      for (auto* b : {&sphere_block_damping_, &sphere_block_kinetic_})
+        o = std::copy(b->begin() + std::ptrdiff_t(own_block_begin_), b->begin() + std::ptrdiff_t(own_block_end_), o);
+    for (const std::uint32_t s : reported_)
+      if (slot_plastic_[s] != 0) *o++ = double(s), *o++ = slot_plastic_[s];  // slot ids exact below 2^53
   }
   recv_.resize(total);
   domain_->gather_all(send_.data(), int(send_.size()), recv_.data(), counts, displs);
+  shared_doubles_ += total - send_.size() + std::size_t(kFixed * (ranks - 1));
+  ++shared_steps_;
 
-  double peak2 = 0;
-  std::size_t broken = 0;
+  std::vector<std::pair<std::uint32_t, double>> plastic;  // (slot, value), every rank's
   for (int r = 0; r < ranks; ++r) {
-    const std::size_t i = std::size_t(r);
-    const double* in = recv_.data() + displs[i];
-    const std::size_t s0 = std::size_t(sphere_displs_[i]) / 3, doubles = std::size_t(sphere_counts_[i]);
-    for (std::size_t v = 0; v < vectors; ++v, in += doubles) std::copy(in, in + doubles, &(*motion[v])[s0].x);
-    for (auto* b : block_sums) {
-      std::copy(in, in + block_counts_[i], b->begin() + block_displs_[i]);
-      in += block_counts_[i];
-    }
-    const std::size_t c = std::size_t(reported_counts_[i]), d = std::size_t(reported_displs_[i]);
-    for (std::size_t k = 0; k < c; ++k) slot_plastic_[reported_all_[d + k]] = *in++;
+    const double* in = recv_.data() + displs[std::size_t(r)];
+    const bool mine = r == me;
+    for (std::size_t q = at(observed_displs_, r), e = q + at(observed_counts_, r); q < e; ++q)
+      for (auto* m : observed_motion) {
+        if (!mine) (*m)[observed_[q]] = {in[0], in[1], in[2]};
+        in += 3;
+      }
+    const std::size_t b0 = at(block_displs_, r), nb = at(block_counts_, r);
     if (evaluate_energy)
-      for (std::size_t k = 0; k < c; ++k) slot_elastic_[reported_all_[d + k]] = *in++;
-    peak2 = std::max(peak2, *in++);
-    broken += std::size_t(*in++);
+      for (auto* b : {&sphere_block_damping_, &sphere_block_kinetic_}) {
+        std::copy(in, in + nb, b->begin() + std::ptrdiff_t(b0));
+        in += nb;
+      }
+    for (std::size_t k = 0; k < sliding_on[std::size_t(r)]; ++k, in += 2) plastic.emplace_back(std::uint32_t(in[0]), in[1]);
   }
-  broken_ = broken;
 
+  // The task sums in slot order. The plastic parts left out are zeros, and adding a zero
+  // changes no sum that starts at +0, so these are the bits of the sum over every slot.
+  std::sort(plastic.begin(), plastic.end());
   const std::size_t tasks = partitions_ + cross_blocks_;
-  for (std::size_t task = 0; task < tasks; ++task) {
-    const bool interior = task < partitions_;
-    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
-    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
-    double elastic = 0, plastic = 0;
-    for (std::size_t s = begin; s < end; ++s) plastic += slot_plastic_[s];
-    task_plastic_[task] += plastic;
-    if (evaluate_energy) {
-      for (std::size_t s = begin; s < end; ++s) elastic += slot_elastic_[s];
-      task_elastic_[task] = elastic;
-    }
-    task_peak2_[task] = 0;
+  const auto task_of = [&](std::size_t s) {
+    if (s >= cross_begin_) return partitions_ + (s - cross_begin_) / kContactBlock;
+    return std::size_t(std::upper_bound(interior_start_.begin(), interior_start_.end(), std::uint32_t(s)) -
+                       interior_start_.begin()) - 1;
+  };
+  for (std::size_t k = 0; k < plastic.size();) {
+    const std::size_t task = task_of(plastic[k].first);
+    double sum = 0;
+    for (; k < plastic.size() && task_of(plastic[k].first) == task; ++k) sum += plastic[k].second;
+    task_plastic_[task] += sum;
   }
+  if (evaluate_energy) share_elastic();
+  std::fill(task_peak2_.begin(), task_peak2_.end(), 0.0);
   if (tasks > 0) task_peak2_[0] = peak2;  // a max: exact in any order
+}
+
+void SphereSystem::share_positions() {
+  if (domain_) domain_->share(&x_[0].x, sphere_counts_, sphere_displs_);
+}
+
+void SphereSystem::collect_state() {
+  if (!domain_) return;
+  for (std::vector<Vec3>* m : {&x_, &v_, &w_, &a_, &a_undamped_}) domain_->share(&(*m)[0].x, sphere_counts_, sphere_displs_);
+  if (track_rotation_) domain_->share(&theta_[0].x, sphere_counts_, sphere_displs_);
+}
+
+void SphereSystem::collect_energy() {
+  if (domain_) domain_->share(sphere_block_damping_.data(), block_counts_, block_displs_);
 }
 
 std::size_t SphereSystem::broken_bond_count() const { return domain_ ? broken_ : kernel_->broken_bond_count(); }
 
 std::string SphereSystem::distribution() const {
   if (!domain_) return {};
+  const std::size_t steps = std::max<std::uint64_t>(shared_steps_, 1);
+  // What the stage-1 exchange (the whole motion of every sphere, each rank's blocks' sums, each
+  // reported contact's plastic part, on every step) would have brought into this rank.
+  const std::size_t replicated = ((track_rotation_ ? 18 : 15) * (spheres_.size() - (own_end_ - own_begin_)) +
+                                  3 * ((spheres_.size() + kSphereBlock - 1) / kSphereBlock) + first_.size() - reported_.size()) * 8;
   return "rank " + std::to_string(domain_->rank()) + " of " + std::to_string(domain_->size()) + ": spheres " +
          std::to_string(own_begin_) + "-" + std::to_string(own_end_) + " of " + std::to_string(spheres_.size()) +
-         " (Morton order), " + std::to_string(ghosts_) + " ghosts, " +
-         std::to_string(std::count(slot_needed_.begin(), slot_needed_.end(), 1)) + " of " +
-         std::to_string(first_.size()) + " contacts computed here";
+         " (Morton order), " + std::to_string(ghosts_) + " ghosts from " + std::to_string(ghost_receives_.size()) +
+         " ranks, " + std::to_string(observed_.size()) + " observed spheres, " +
+         std::to_string(std::count(slot_needed_.begin(), slot_needed_.end(), 1)) + " of " + std::to_string(first_.size()) +
+         " contacts computed here; received per step: " + std::to_string(ghost_doubles_ * 8 / steps) + " B of ghosts in " +
+         format_number(double(ghost_messages_) / double(steps)) + " messages, " +
+         std::to_string(shared_doubles_ * 8 / steps) + " B gathered (the replicated state of stage 1: " +
+         std::to_string(replicated) + " B)";
 }
 
 }  // namespace mesowave::dem
