@@ -160,7 +160,8 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
       {"compacted", {{"threshold_pressure_MPa", r.threshold_pressure_Pa * 1e-6}, {"points", r.compacted_points},
                      {"depth_mm", r.compacted_depth_m * 1e3}, {"width_mm", r.compacted_width_m * 1e3},
                      {"x_min_mm", r.compacted_x_min_m * 1e3}, {"x_max_mm", r.compacted_x_max_m * 1e3},
-                     {"max_compression_eps_v", r.max_compression_eps_v}}},
+                     {"max_compression_eps_v", r.max_compression_eps_v}, {"area_cm2", r.compacted_area_m2 * 1e4},
+                     {"joined_depth_mm", r.compacted_joined_depth_m * 1e3}, {"joined_area_cm2", r.compacted_joined_area_m2 * 1e4}}},
       {"crater", {{"definition", "crushed points (|min eps_v| >= crushing_eps_v) joined to the loaded face, and the loose pieces "
                                  "that fully opened crack segments cut off at the loaded face (efg/crater.hpp)"},
                   {"crushing_eps_v", r.crushing_eps_v},

@@ -272,6 +272,17 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
     r.compacted_width_m = x_max - x_min;
     r.compacted_depth_m = o.thickness_m - y_min;
   }
+  // the compacted zone's area, and its part joined to the loaded face through compacted points (the crater's
+  // flood fill of efg/crater with e_v,th for eps_crush and no cuts): a deep point that a crack's cut marked
+  // compacted (docs/efg.md) moves the depth above, not this one
+  CraterInput joined{body, g.x, {}, g.min_eps_v, {}, o.spacing_m, o.hugoniot.e_v_th};
+  for (const GaussPoint& p : disc.points) joined.area_m2.push_back(p.weight_m2);
+  for (std::size_t k = 0; k < g.x.size(); ++k)
+    if (g.min_eps_v[k] < -o.hugoniot.e_v_th) r.compacted_area_m2 += joined.area_m2[k];
+  if (o.hugoniot.e_v_th > 0) {
+    const CraterMeasure m = measure_crater(joined);
+    r.compacted_joined_depth_m = m.depth_m, r.compacted_joined_area_m2 = m.area_m2;
+  }
 
   // the run's energy samples and the hook's, taken at the same steps
   const auto& s = recorded.samples();

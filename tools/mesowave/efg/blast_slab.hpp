@@ -41,7 +41,9 @@
 //
 // Compacted zone: the Gauss points whose most compressive volumetric strain passed -e_v,th (they left
 // Y = 1 onto the Y-function's loading branch, Eq. (25); PointState::min_eps_v); its depth below the top
-// face and its width. The threshold surface pressure p_th = M P(e_v,th) = M e_v,th (M = E (1 - nu) /
+// face and its width, its area (the points' Gauss weights), and the depth and area of its part joined to the
+// loaded face through compacted points (a point a crack's cut marked compacted deep in the slab, docs/efg.md,
+// moves the first depth, not the joined one). The threshold surface pressure p_th = M P(e_v,th) = M e_v,th (M = E (1 - nu) /
 // ((1 + nu)(1 - 2 nu)); uniaxial strain, the state right under a wide charge) is the pressure below which
 // no point can pass it in a linear elastic, non-overshooting response (the closed-form check of the tests).
 //
@@ -167,6 +169,10 @@ struct BlastSlabResult {
   std::size_t compacted_points = 0;
   double compacted_depth_m = 0, compacted_width_m = 0, compacted_x_min_m = 0, compacted_x_max_m = 0;
   double max_compression_eps_v = 0;               ///< the largest |min_eps_v|
+  double compacted_area_m2 = 0;                   ///< the compacted points' Gauss weights
+  /// the compacted points joined to the loaded face through compacted points (measure_crater's flood fill):
+  /// the depth and area of that part
+  double compacted_joined_depth_m = 0, compacted_joined_area_m2 = 0;
   double crushing_eps_v = 0;                      ///< eps_crush in force
   CraterMeasure crater;                           ///< of the final state (labels in final_points.crater)
   std::size_t open_segments = 0;                  ///< face segments past w_max at the end (the crater's cuts)
