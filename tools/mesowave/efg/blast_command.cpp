@@ -172,7 +172,7 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
                   {"fragments", r.crater.crater_fragments}, {"fragment_points", r.crater.crater_fragment_points},
                   {"pieces", r.crater.pieces}, {"spall_fragments", r.crater.spall_fragments},
                   {"spall_area_cm2", r.crater.spall_area_m2 * 1e4}, {"spall_depth_mm", r.crater.spall_depth_m * 1e3},
-                  {"loose_inside_points", r.crater.loose_inside_points}, {"open_segments", r.open_segments}}},
+                  {"loose_inside_points", r.crater.loose_inside_points}, {"open_segments", r.open_segments.size()}}},
       {"energy", {{"external_work_J", last.external_work_J}, {"kinetic_J", last.kinetic_J},
                   {"internal_work_J", last.internal_work_J}, {"bulk_work_J", last.bulk_work_J()},
                   {"faces_work_J", last.faces_work_J}, {"dissipated_J", last.dissipated_J}, {"stored_J", last.stored_J},
@@ -210,7 +210,7 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
   io::PlotSpec& f = w.figure;
   const double L = o.span_m * 1e3, H = o.thickness_m * 1e3;
   f.title = "Contact detonation, plane strain, h = " + format_number(o.spacing_m * 1e3) + " mm, t = " +
-            format_number(std::round(d.t_end_s * 1e7) / 10) + " us: cracks over the compacted zone (cf. the paper's Fig. 12)";
+            format_number(std::round(d.t_end_s * 1e7) / 10) + " us: cracks over the compacted zone and the crater (cf. the paper's Fig. 12)";
   f.x_label = "x [mm]";
   f.y_label = "y [mm]";
   f.x_range = {{-5, L + 5}};
@@ -229,7 +229,7 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
   if (compacted.x.empty()) compacted.label = "compacted: none", compacted.x = {NAN}, compacted.y = {NAN};
   f.series.push_back(compacted);
   io::PlotSeries crater{"crater: crushed and cut-loose points (depth " + format_number(std::round(r.crater.depth_m * 1e4) / 10) + " mm)",
-                        {}, {}, "points pt 5 ps 0.6 lc rgb '#d55e00'"};
+                        {}, {}, "points pt 5 ps 0.9 lc rgb '#d55e00'"};
   io::PlotSeries spall{"spall (cut loose at the far face)", {}, {}, "points pt 5 ps 0.6 lc rgb '#009e73'"};
   for (std::size_t k = 0; k < g.x.size() && k < g.crater.size(); ++k) {
     const CraterLabel l = g.crater[k];
@@ -247,6 +247,16 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
   }
   if (lines.x.empty()) lines.x = {NAN}, lines.y = {NAN};
   f.series.push_back(lines);
+  io::PlotSeries open{"fully open faces, past w_max (" + std::to_string(r.open_segments.size()) + ")", {}, {},
+                      "lines lw 4 lc rgb '#cc79a7'"};
+  const Rect body{0, 0, o.span_m, o.thickness_m};
+  for (const Segment& s : r.open_segments) {
+    Vec2 a = s.a, b = s.b;
+    if (!clip_segment_to(body, a, b)) continue;
+    open.x.insert(open.x.end(), {a.x() * 1e3, b.x() * 1e3, NAN}), open.y.insert(open.y.end(), {a.y() * 1e3, b.y() * 1e3, NAN});
+  }
+  if (open.x.empty()) open.label = "fully open faces: none", open.x = {NAN}, open.y = {NAN};
+  f.series.push_back(open);
   return w;
 }
 

@@ -147,6 +147,8 @@ class RecordedCracks final : public DynamicsCracks {
 
 }  // namespace
 
+bool clip_segment_to(const Rect& r, Vec2& a, Vec2& b) { return clip_to(r, a, b); }
+
 double ContactCharge::cj_pressure_Pa() const { return density_kg_m3 * detonation_velocity_m_s * detonation_velocity_m_s / (gamma + 1); }
 
 void BlastSlabOptions::validate() const {
@@ -258,7 +260,7 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
 
   r.final_points = recorded.final_points();
   r.crater = recorded.final_crater();
-  r.open_segments = dc.open_segments().size();
+  r.open_segments = dc.open_segments();
   const GaussPointSnapshot& g = r.final_points;
   double x_min = INFINITY, x_max = -INFINITY, y_min = INFINITY;
   for (std::size_t k = 0; k < g.x.size(); ++k) {

@@ -175,7 +175,7 @@ struct BlastSlabResult {
   double compacted_joined_depth_m = 0, compacted_joined_area_m2 = 0;
   double crushing_eps_v = 0;                      ///< eps_crush in force
   CraterMeasure crater;                           ///< of the final state (labels in final_points.crater)
-  std::size_t open_segments = 0;                  ///< face segments past w_max at the end (the crater's cuts)
+  std::vector<Segment> open_segments;             ///< face segments past w_max at the end (the crater's cuts)
   GaussPointSnapshot final_points;
   std::vector<BlastEnergySample> energy;
   std::vector<BlastSnapshot> snapshots;
@@ -184,6 +184,9 @@ struct BlastSlabResult {
   DynamicsResult run;  ///< steps, dt, stable step, wall, threads (sensors none)
   double setup_s = 0, wall_s = 0;
 };
+
+/// The part of a -> b inside the rectangle (Liang-Barsky); false when none (the figures' crack lines).
+bool clip_segment_to(const Rect& r, Vec2& a, Vec2& b);
 
 /// Builds the slab and runs it. InputError: bad options (one line each), a blow-up (explicit_dynamics).
 BlastSlabResult run_blast_slab(const BlastSlabOptions& o);
