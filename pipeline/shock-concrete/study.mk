@@ -23,19 +23,20 @@
 #   projection stays off (none).
 # - the blasted slab (Section 4.3, Fig. 12): `mw-efg blast`, a line charge on a 400 x 100 mm plain
 #   concrete slab in plane strain (lab-data/shock-concrete/blast-slab.toml), every part of the paper's
-#   list at once; the crack pattern over the compacted zone, and a node-spacing series (crack count,
-#   longest crack, compacted depth, wall time).
+#   list at once; the crack pattern over the compacted zone and the crater (efg/crater.hpp), and a
+#   node-spacing series (crack count and length, compacted depth, crater depth, width and area, wall time).
 #
 # Sizes (QUICK=0; the runs' own wall times on the 2-core development machine at load 9-11, one run
 # after the other; docs/efg.md, "The shock-concrete study"): the beams on the 5 mm grid (1932 nodes,
 # 23-26 s a law for the complete curve; the 2.5 mm grid would take about 10 min a law), the linear
 # strips at 10, 5 and 2.5 mm (13 s in all), the shock strips at 2, 1 and 0.5 mm (116 s in all, 100 s
 # of it the two 0.5 mm runs). The quick tree: the 10 mm beam (about 1.5 s a law), strips at 20 and
-# 10 mm, shock strips at 4 and 2 mm - about 4 s of tool time. The slab (one thread, with the viscosity, load
-# 18): 0.5 s at 20 mm, 1.6 s at 15 mm, 9 s at 10 mm, 91 s at 7.5 mm (every crack change re-evaluates all shape
-# functions and runs Lanczos, so the cost follows the number of changes more than the steps; docs/efg.md "The
-# slab's time step, its spacing and its cost"); the quick tree runs 20 and 15 mm (its figure 15 mm), the full
-# one 15, 10 and 7.5 mm (its figure 7.5 mm), at the default step (0.9 of the stable one: not time-resolved).
+# 10 mm, shock strips at 4 and 2 mm - about 4 s of tool time. The slab runs at the resolved step (--dt-us 0.25)
+# with the crack spacing and radius limits as lengths (30 mm, 15 mm: lab-data/shock-concrete/blast-slab.toml;
+# docs/efg.md "The crater, and the slab against node spacing"): one thread, with the viscosity, load 12: 0.7 s
+# at 20 mm, 3 s at 15 mm, 10 s at 10 mm, 10 s at 7.5 mm, 45 s at 5 mm (the cost follows the crack changes: with
+# a 2 h spacing the 7.5 mm run took 136 s, the 5 mm one 40 min); the quick tree runs 20 and 15 mm (its figure
+# 15 mm), the full one 15, 10, 7.5 and 5 mm (its figure 7.5 mm, with the ParaView snapshots).
 
 # Study prefix: SC (make variables SC_*, functions sc_*; scripts/new-study renames them).
 PIPELINE_GOALS += shock-concrete-summary
@@ -68,7 +69,7 @@ SC_LINEAR_MM := 5
 SC_SHOCK_SPACINGS := 2 1 0.5
 SC_SHOCK_MM := 1
 SC_SLAB_MM := 7.5
-SC_SLAB_SPACINGS := 15 10 7.5
+SC_SLAB_SPACINGS := 15 10 7.5 5
 endif
 
 # --- Three-point bending: the complete curve (ligament interface) to 1e-4 of the peak, the Q4 FEM
@@ -225,7 +226,8 @@ $(eval $(call SC_PROFILE_FIGURE,hugoniot,Y-function without Eq. (27)))
 # from the free bottom), one thread (the runs' wall times are a column). The study's spacing gets the
 # crack and energy CSVs, the figure and the ParaView series; the others only their summaries.
 SC_SLAB := $(SC_LAB)/blast-slab.toml
-SC_SLAB_ARGS := --from $(SC_SLAB) --from $(SC_HUGONIOT) --duration-us 60 --threads 1 $(SC_VISCOSITY)
+# the resolved step: 0.25 us holds the 17 us pulse in 70 steps (docs/efg.md, "The slab's time step, its spacing and its cost")
+SC_SLAB_ARGS := --from $(SC_SLAB) --from $(SC_HUGONIOT) --duration-us 60 --dt-us 0.25 --threads 1 $(SC_VISCOSITY)
 $(SC_OUT)/slab.json $(SC_OUT)/slab-cracks.csv $(SC_OUT)/slab-energy.csv $(SC_OUT)/slab.png &: $(SC_SLAB) $(SC_HUGONIOT) $(BIN)/mw-efg
 	@mkdir -p $(@D)
 	$(BIN)/mw-efg blast $(SC_SLAB_ARGS) --spacing-mm $(SC_SLAB_MM) --cracks $(SC_OUT)/slab-cracks.csv \
@@ -241,12 +243,16 @@ $(SC_OUT)/slab-spacing.csv: $(foreach h,$(SC_SLAB_SPACINGS),$(SC_OUT)/slab-$(h)m
 	$(BIN)/mw-table gather --key-name spacing_mm $(foreach h,$(SC_SLAB_SPACINGS),--row $h=$(SC_OUT)/slab-$(h)mm.json) \
 	  --column nodes --column gauss_points --column crack_count --column longest_crack_mm --column total_crack_length_mm \
 	  --column max_crack_speed_m_s --column refused_changes --column compacted_depth_mm=compacted.depth_mm \
-	  --column compacted_width_mm=compacted.width_mm --column max_compression_eps_v=compacted.max_compression_eps_v \
+	  --column compacted_width_mm=compacted.width_mm --column compacted_joined_depth_mm=compacted.joined_depth_mm \
+	  --column compacted_points=compacted.points \
+	  --column max_compression_eps_v=compacted.max_compression_eps_v \
+	  --column crater_depth_mm=crater.depth_mm --column crater_width_mm=crater.width_mm --column crater_area_cm2=crater.area_cm2 \
+	  --column crater_fragments=crater.fragments --column spall_fragments=crater.spall_fragments --column open_segments=crater.open_segments \
 	  --column balance_over_W_ext=energy.balance_over_W_ext --column energy_jump_J=energy.energy_jump_J \
 	  --column external_work_J=energy.external_work_J --column viscous_work_J=energy.viscous_J --column run_drift=energy.run_drift --column steps \
 	  --column wall_s=cost.wall_s \
-	  --round longest_crack_mm=1 --round total_crack_length_mm=1 --round max_crack_speed_m_s=1 --round compacted_depth_mm=1 \
-	  --round compacted_width_mm=1 --round max_compression_eps_v=4 --round balance_over_W_ext=3 --round energy_jump_J=0 \
+	  --round longest_crack_mm=1 --round total_crack_length_mm=1 --round max_crack_speed_m_s=1 --round compacted_depth_mm=1 --round compacted_joined_depth_mm=1 \
+	  --round compacted_width_mm=1 --round crater_depth_mm=1 --round crater_width_mm=1 --round crater_area_cm2=2 --round max_compression_eps_v=4 --round balance_over_W_ext=3 --round energy_jump_J=0 \
 	  --round external_work_J=0 --round viscous_work_J=0 --round wall_s=2 --csv $@ > /dev/null
 
 SC_TABLES := bending strip-linear strip-fem shock slab-spacing

@@ -250,6 +250,9 @@ TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
       {{"wave", "--pulse", "hann", "--frequency-kHz", "0"}, "--frequency-kHz"},
       {{"wave", "--viscosity-quadratic", "-1"}, "C_0 (quadratic, -1)"},
       {{"wave", "--viscosity-linear", "-0.5"}, "C_1 (linear, -0.5)"},
+      {{"blast", "--min-crack-spacing-mm", "-30"}, "minimum crack spacing (-0.03 m)"},
+      {{"blast", "--min-crack-radius-mm", "-15"}, "minimum crack radius (-0.015 m)"},
+      {{"blast", "--crushing-eps-v", "-0.05"}, "crushing volumetric strain (-0.05)"},
   };
   for (const auto& c : cases) {
     TempDir dir;
@@ -257,6 +260,7 @@ TEST(MwEfg, BadInputIsOneLineNamingTheValueAndWritesNothing) {
     args.insert(args.end(), {"--out", (dir / "o.json").string()});
     if (c.args[0] == "cantilever") args.insert(args.end(), {"--table", (dir / "t.csv").string()});
     else if (c.args[0] == "wave") args.insert(args.end(), {"--history", (dir / "h.csv").string(), "--snapshots", (dir / "vtk").string()});
+    else if (c.args[0] == "blast") args.insert(args.end(), {"--cracks", (dir / "c.csv").string(), "--snapshots", (dir / "vtk").string()});
     else args.insert(args.end(), {"--curve", (dir / "c.csv").string(), "--snapshots", (dir / "vtk").string()});
     const auto r = run_tool("mw-efg", args);
     EXPECT_EQ(r.exit_status, 1) << c.args[1] << ": " << r.err;
@@ -292,6 +296,7 @@ TEST(MwEfg, ViscosityOptionsReachWaveAndBlast) {
   ASSERT_EQ(b.exit_status, 0) << b.err;
   const json j = json::parse(read_file(dir / "b.json"));
   EXPECT_GT(j["energy"]["viscous_J"].get<double>(), 0.0);
+  EXPECT_NEAR(j["crater"]["crushing_eps_v"].get<double>(), 0.0475, 5e-5);  // the crater block, its default eps_crush
   EXPECT_LT(j["energy"]["run_drift"].get<double>(), 1e-12);
   const std::string e = read_file(dir / "e.csv");
   EXPECT_NE(e.substr(0, e.find('\n')).find(",viscous_J"), std::string::npos);

@@ -127,6 +127,21 @@ TEST(BlastSlab, CompactedZoneLiesUnderTheChargeAndIsEmptyBelowTheThresholdPressu
   EXPECT_GE(above.compacted_x_min_m, 0.085 - above.compacted_depth_m);
   EXPECT_LE(above.compacted_x_max_m, 0.115 + above.compacted_depth_m);
   EXPECT_LT(above.compacted_depth_m, o.thickness_m);
+  // the crater (efg/crater): none below the threshold; above, crushed points (past the Y-function's minimum,
+  // 0.0475 > e_v,th) under the charge, inside the compacted zone, every one of them past eps_crush
+  EXPECT_EQ(below.crater.area_m2, 0.0);
+  EXPECT_NEAR(above.crushing_eps_v, 0.0475, 5e-5);
+  std::printf("crater: %zu crushed points, depth %.1f mm, width %.1f mm, %zu loose pieces\n", above.crater.crushed_points,
+              above.crater.depth_m * 1e3, above.crater.width_m * 1e3, above.crater.pieces - 1);
+  ASSERT_GT(above.crater.crushed_points, 0u);
+  ASSERT_EQ(above.final_points.crater.size(), above.points);
+  for (std::size_t k = 0; k < above.points; ++k)
+    if (above.final_points.crater[k] == CraterLabel::crushed) EXPECT_LE(above.final_points.min_eps_v[k], -above.crushing_eps_v) << k;
+  if (above.crater.crater_fragments == 0) {
+    EXPECT_LE(above.crater.depth_m, above.compacted_depth_m);
+    EXPECT_GE(above.crater.x_min_m, above.compacted_x_min_m);
+    EXPECT_LE(above.crater.x_max_m, above.compacted_x_max_m);
+  }
 }
 
 // Energy: the run's identity KE + W_int + W_damp = W_ext (faces' forces inside W_int) to round-off
@@ -173,6 +188,9 @@ TEST(BlastSlab, BadInputIsOneLineNamingTheValue) {
   o.cracks.crack_speed_limit_m_s = 0;
   EXPECT_NE(input_error_of([&] { o.validate(); }).find("crack speed limit"), std::string::npos);
   for (const std::string& m : {input_error_of([&] { o.validate(); })}) EXPECT_EQ(m.find('\n'), std::string::npos);
+  o = small_slab();
+  o.crushing_eps_v = -0.05;
+  EXPECT_NE(input_error_of([&] { o.validate(); }).find("crushing volumetric strain (-0.05)"), std::string::npos);
   o = small_slab();
   o.dt_s = -1e-6;
   EXPECT_NE(input_error_of([&] { o.validate(); }).find("time step (-1e-06 s)"), std::string::npos);

@@ -50,6 +50,7 @@ BlastSlabOptions BlastCommandLine::resolve() const {
   o.dt_fraction = dt_fraction;
   o.dt_s = dt_us * 1e-6;
   o.viscosity = {viscosity_quadratic, viscosity_linear};
+  o.crushing_eps_v = crushing_eps_v;
   o.sample_stride = sample_stride;
   o.snapshot_stride = snapshot_stride == 0 && !snapshots.empty() ? 20 : snapshot_stride;
   o.validate();
@@ -104,6 +105,9 @@ void add_blast_options(CLI::App& app, BlastCommandLine& v) {
                  "Time step (0: --dt-fraction x the stable step; above the stable step: refused; shrunk as the law stiffens and cracks form)")
       ->capture_default_str();
   add_viscosity_options(app, v.viscosity_quadratic, v.viscosity_linear);
+  app.add_option("--crushing-eps-v", v.crushing_eps_v,
+                 "Crater: crushed where |eps_v| reached this (efg/crater.hpp; 0: the Y-function's minimum, 0.0475 by Eq. 26)")
+      ->capture_default_str();
   app.add_option("--sample-stride", v.sample_stride, "Steps between the energy CSV's rows")->capture_default_str();
   app.add_option("--cracks", v.cracks_csv, "Crack events CSV: t_us, crack, initiation, from_x_mm, from_y_mm, to_x_mm, to_y_mm, length_mm, speed_m_s, ...");
   app.add_option("--energy", v.energy_csv, "Energies over time CSV [J per metre of charge]: KE, W_int, W_ext, W_damp, faces' work, dissipated, stored, jump, balances");
@@ -156,7 +160,19 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
       {"compacted", {{"threshold_pressure_MPa", r.threshold_pressure_Pa * 1e-6}, {"points", r.compacted_points},
                      {"depth_mm", r.compacted_depth_m * 1e3}, {"width_mm", r.compacted_width_m * 1e3},
                      {"x_min_mm", r.compacted_x_min_m * 1e3}, {"x_max_mm", r.compacted_x_max_m * 1e3},
-                     {"max_compression_eps_v", r.max_compression_eps_v}}},
+                     {"max_compression_eps_v", r.max_compression_eps_v}, {"area_cm2", r.compacted_area_m2 * 1e4},
+                     {"joined_depth_mm", r.compacted_joined_depth_m * 1e3}, {"joined_area_cm2", r.compacted_joined_area_m2 * 1e4}}},
+      {"crater", {{"definition", "crushed points (|min eps_v| >= crushing_eps_v) joined to the loaded face, and the loose pieces "
+                                 "that fully opened crack segments cut off at the loaded face (efg/crater.hpp)"},
+                  {"crushing_eps_v", r.crushing_eps_v},
+                  {"depth_mm", r.crater.depth_m * 1e3}, {"width_mm", r.crater.width_m * 1e3},
+                  {"x_min_mm", r.crater.x_min_m * 1e3}, {"x_max_mm", r.crater.x_max_m * 1e3},
+                  {"area_cm2", r.crater.area_m2 * 1e4}, {"crushed_area_cm2", r.crater.crushed_area_m2 * 1e4},
+                  {"fragment_area_cm2", r.crater.fragment_area_m2 * 1e4}, {"crushed_points", r.crater.crushed_points},
+                  {"fragments", r.crater.crater_fragments}, {"fragment_points", r.crater.crater_fragment_points},
+                  {"pieces", r.crater.pieces}, {"spall_fragments", r.crater.spall_fragments},
+                  {"spall_area_cm2", r.crater.spall_area_m2 * 1e4}, {"spall_depth_mm", r.crater.spall_depth_m * 1e3},
+                  {"loose_inside_points", r.crater.loose_inside_points}, {"open_segments", r.open_segments.size()}}},
       {"energy", {{"external_work_J", last.external_work_J}, {"kinetic_J", last.kinetic_J},
                   {"internal_work_J", last.internal_work_J}, {"bulk_work_J", last.bulk_work_J()},
                   {"faces_work_J", last.faces_work_J}, {"dissipated_J", last.dissipated_J}, {"stored_J", last.stored_J},
@@ -194,7 +210,7 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
   io::PlotSpec& f = w.figure;
   const double L = o.span_m * 1e3, H = o.thickness_m * 1e3;
   f.title = "Contact detonation, plane strain, h = " + format_number(o.spacing_m * 1e3) + " mm, t = " +
-            format_number(std::round(d.t_end_s * 1e7) / 10) + " us: cracks over the compacted zone (cf. the paper's Fig. 12)";
+            format_number(std::round(d.t_end_s * 1e7) / 10) + " us: cracks over the compacted zone and the crater (cf. the paper's Fig. 12)";
   f.x_label = "x [mm]";
   f.y_label = "y [mm]";
   f.x_range = {{-5, L + 5}};
@@ -212,6 +228,18 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
     if (g.min_eps_v[k] < -o.hugoniot.e_v_th) compacted.x.push_back(g.x[k].x() * 1e3), compacted.y.push_back(g.x[k].y() * 1e3);
   if (compacted.x.empty()) compacted.label = "compacted: none", compacted.x = {NAN}, compacted.y = {NAN};
   f.series.push_back(compacted);
+  io::PlotSeries crater{"crater: crushed and cut-loose points (depth " + format_number(std::round(r.crater.depth_m * 1e4) / 10) + " mm)",
+                        {}, {}, "points pt 5 ps 0.9 lc rgb '#d55e00'"};
+  io::PlotSeries spall{"spall (cut loose at the far face)", {}, {}, "points pt 5 ps 0.6 lc rgb '#009e73'"};
+  for (std::size_t k = 0; k < g.x.size() && k < g.crater.size(); ++k) {
+    const CraterLabel l = g.crater[k];
+    if (l == CraterLabel::crushed || l == CraterLabel::crater_fragment) crater.x.push_back(g.x[k].x() * 1e3), crater.y.push_back(g.x[k].y() * 1e3);
+    if (l == CraterLabel::spall) spall.x.push_back(g.x[k].x() * 1e3), spall.y.push_back(g.x[k].y() * 1e3);
+  }
+  if (crater.x.empty()) crater.label = "crater: none", crater.x = {NAN}, crater.y = {NAN};
+  if (spall.x.empty()) spall.label = "spall: none", spall.x = {NAN}, spall.y = {NAN};
+  f.series.push_back(crater);
+  f.series.push_back(spall);
   io::PlotSeries lines{"cracks (" + std::to_string(r.crack_polylines.size()) + ")", {}, {}, "lines lw 2 lc rgb '#0072b2'"};
   for (const auto& p : r.crack_polylines) {
     for (const Vec2& x : p) lines.x.push_back(x.x() * 1e3), lines.y.push_back(x.y() * 1e3);
@@ -219,6 +247,16 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
   }
   if (lines.x.empty()) lines.x = {NAN}, lines.y = {NAN};
   f.series.push_back(lines);
+  io::PlotSeries open{"fully open faces, past w_max (" + std::to_string(r.open_segments.size()) + ")", {}, {},
+                      "lines lw 4 lc rgb '#cc79a7'"};
+  const Rect body{0, 0, o.span_m, o.thickness_m};
+  for (const Segment& s : r.open_segments) {
+    Vec2 a = s.a, b = s.b;
+    if (!clip_segment_to(body, a, b)) continue;
+    open.x.insert(open.x.end(), {a.x() * 1e3, b.x() * 1e3, NAN}), open.y.insert(open.y.end(), {a.y() * 1e3, b.y() * 1e3, NAN});
+  }
+  if (open.x.empty()) open.label = "fully open faces: none", open.x = {NAN}, open.y = {NAN};
+  f.series.push_back(open);
   return w;
 }
 
@@ -230,6 +268,7 @@ void run_blast_command(const BlastCommandLine& cl, app::Run& run, const nlohmann
   run.metric("crack_count", double(r.crack_length_m.size()), "");
   run.metric("max_crack_speed", r.max_crack_speed_m_s, "m/s");
   run.metric("compacted_depth", r.compacted_depth_m * 1e3, "mm");
+  run.metric("crater_depth", r.crater.depth_m * 1e3, "mm");
   run.metric("wall", r.wall_s, "s");
   if (!cl.cracks_csv.empty()) run.write_text(cl.cracks_csv, io::to_csv(w.crack_header, w.crack_rows));
   if (!cl.energy_csv.empty()) run.write_text(cl.energy_csv, io::to_csv(w.energy_header, w.energy_rows));
@@ -238,12 +277,15 @@ void run_blast_command(const BlastCommandLine& cl, app::Run& run, const nlohmann
     VtkSeries series(cl.snapshots, "blast", [&](const std::filesystem::path& p) { return run.output(p); });
     for (const BlastSnapshot& s : r.snapshots) {
       PointCloudSnapshot points;
-      std::vector<double> compacted;
+      std::vector<double> compacted, crater;
       for (std::size_t k = 0; k < s.points.x.size(); ++k) {
         points.positions_m.push_back(s.points.x[k]);
         compacted.push_back(s.points.min_eps_v[k] < -o.hugoniot.e_v_th ? 1.0 : 0.0);
+        crater.push_back(k < s.points.crater.size() ? double(int(s.points.crater[k])) : 0.0);
       }
-      points.scalars = {{"eps_v", s.points.eps_v}, {"min_eps_v", s.points.min_eps_v}, {"compacted", compacted}, {"max_Y", s.points.max_Y}};
+      // crater: 0 intact, 1 crushed, 2 a cut-loose crater fragment, 3 spall, 4 loose inside (efg/crater.hpp)
+      points.scalars = {{"eps_v", s.points.eps_v}, {"min_eps_v", s.points.min_eps_v}, {"compacted", compacted},
+                        {"max_Y", s.points.max_Y}, {"crater", crater}};
       series.add(s.t_s * 1e6, s.nodes, s.cracks, &points);
     }
     series.finish();

@@ -35,6 +35,7 @@ struct BlastCommandLine {
   double charge_width_mm = 30, charge_thickness_mm = 40, explosive_density_kg_m3 = 1630, detonation_velocity_m_s = 6930;
   double gamma = 3, fall_transits = 2, peak_MPa = 0;
   double duration_us = 100, dt_fraction = 0.9, dt_us = 0;
+  double crushing_eps_v = 0;  ///< the crater's eps_crush (efg/crater.hpp); 0: the Y-function's minimum
   double viscosity_quadratic = 0, viscosity_linear = 0;  ///< C_0, C_1 of the shock viscosity (0, 0: off)
   std::int64_t sample_stride = 10, snapshot_stride = 0;
   std::filesystem::path cracks_csv, energy_csv, snapshots, plot, out;

@@ -54,8 +54,9 @@ std::vector<Vec2> clip_polyline(const Rect& r, const std::vector<Vec2>& line) {
 // and the Gauss points' volumetric strains at the run's snapshots, the points' final states.
 class RecordedCracks final : public DynamicsCracks {
  public:
-  RecordedCracks(DynamicCracks& cracks, const ElasticModel& model, const BlastSlabOptions& o, const Rect& body)
-      : c_(cracks), model_(model), o_(o), body_(body) {}
+  RecordedCracks(DynamicCracks& cracks, const ElasticModel& model, const BlastSlabOptions& o, const Rect& body,
+                 double crushing_eps_v)
+      : c_(cracks), model_(model), o_(o), body_(body), crushing_eps_v_(crushing_eps_v) {}
 
   void add_forces(const Eigen::VectorXd& u, Eigen::VectorXd& f) const override {
     f_faces_ = Eigen::VectorXd::Zero(f.size());
@@ -81,7 +82,7 @@ class RecordedCracks final : public DynamicsCracks {
     v_prev_ = v;
     if (n_ % o_.sample_stride == 0 || last)
       samples_.push_back({0.5 * (t_n_ + t_s), faces_work_J_, c_.dissipated_J(), c_.stored_J(u), c_.energy_jump_J(), c_.faces_jump_J()});
-    if (last) final_points_ = points_now(states);
+    if (last) final_points_ = points_now(states, &final_crater_);
     dt_prev_ = dt_half;
     t_n_ = t_s;
     ++n_;
@@ -97,6 +98,7 @@ class RecordedCracks final : public DynamicsCracks {
   const std::vector<CrackSnapshot>& snapshot_cracks() const { return snapshot_cracks_; }
   const std::vector<GaussPointSnapshot>& snapshot_points() const { return snapshot_points_; }
   const GaussPointSnapshot& final_points() const { return final_points_; }
+  const CraterMeasure& final_crater() const { return final_crater_; }
 
   CrackSnapshot cracks_now() const {
     CrackSnapshot s;
@@ -108,15 +110,22 @@ class RecordedCracks final : public DynamicsCracks {
   }
 
  private:
-  GaussPointSnapshot points_now(const std::vector<PointState>& states) const {
+  GaussPointSnapshot points_now(const std::vector<PointState>& states, CraterMeasure* crater = nullptr) const {
     GaussPointSnapshot g;
     const auto& pts = model_.discretisation().points;
+    CraterInput in{body_, {}, {}, {}, c_.open_segments(), o_.spacing_m, crushing_eps_v_};
     for (std::size_t k = 0; k < states.size(); ++k) {
       g.x.push_back(pts[k].x);
       g.eps_v.push_back(volumetric_strain(states[k].strain, model_.material()));
       g.min_eps_v.push_back(states[k].min_eps_v);
       g.max_Y.push_back(states[k].max_Y);
+      in.area_m2.push_back(pts[k].weight_m2);
     }
+    in.x = g.x;
+    in.min_eps_v = g.min_eps_v;
+    CraterMeasure m = measure_crater(in);
+    g.crater = m.label;
+    if (crater) *crater = std::move(m);
     return g;
   }
 
@@ -124,6 +133,8 @@ class RecordedCracks final : public DynamicsCracks {
   const ElasticModel& model_;
   const BlastSlabOptions& o_;
   Rect body_;
+  double crushing_eps_v_;
+  CraterMeasure final_crater_;
   mutable Eigen::VectorXd f_faces_;
   Eigen::VectorXd v_prev_;
   double t_n_ = 0, dt_prev_ = 0, faces_work_J_ = 0;
@@ -135,6 +146,8 @@ class RecordedCracks final : public DynamicsCracks {
 };
 
 }  // namespace
+
+bool clip_segment_to(const Rect& r, Vec2& a, Vec2& b) { return clip_to(r, a, b); }
 
 double ContactCharge::cj_pressure_Pa() const { return density_kg_m3 * detonation_velocity_m_s * detonation_velocity_m_s / (gamma + 1); }
 
@@ -169,6 +182,8 @@ void BlastSlabOptions::validate() const {
     throw InputError("time step (" + format_quantity(dt_s, "s") + ") must be >= 0 (0: the fraction of the stable step)");
   if (sample_stride < 1) throw InputError("sample stride (" + std::to_string(sample_stride) + ") must be >= 1");
   if (snapshot_stride < 0) throw InputError("snapshot stride (" + std::to_string(snapshot_stride) + ") must be >= 0");
+  if (!(std::isfinite(crushing_eps_v) && crushing_eps_v >= 0))
+    throw InputError("crushing volumetric strain (" + format_number(crushing_eps_v) + ") must be >= 0 (0: the Y-function's minimum)");
 }
 
 double hugoniot_threshold_pressure_Pa(const ElasticMaterial2D& concrete, const HugoniotParameters& p) {
@@ -210,7 +225,8 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
   const ExplicitDynamics dyn(model, law, nullptr,
                              {{{Vec2(xc + half, o.thickness_m), Vec2(xc - half, o.thickness_m)}, r.pulse, "charge"}});
   DynamicCracks dc(model, cracks, o.cracks);
-  RecordedCracks recorded(dc, model, o, body);
+  r.crushing_eps_v = o.crushing_eps_v > 0 ? o.crushing_eps_v : default_crushing_eps_v(o.hugoniot);
+  RecordedCracks recorded(dc, model, o, body, r.crushing_eps_v);
   r.nodes = disc.nodes.size();
   r.points = disc.points.size();
   r.penalty_Pa_per_m = dc.penalty_Pa_per_m();
@@ -243,6 +259,8 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
   r.crack_polylines = recorded.cracks_now().polylines;
 
   r.final_points = recorded.final_points();
+  r.crater = recorded.final_crater();
+  r.open_segments = dc.open_segments();
   const GaussPointSnapshot& g = r.final_points;
   double x_min = INFINITY, x_max = -INFINITY, y_min = INFINITY;
   for (std::size_t k = 0; k < g.x.size(); ++k) {
@@ -255,6 +273,17 @@ BlastSlabResult run_blast_slab(const BlastSlabOptions& o) {
     r.compacted_x_min_m = x_min, r.compacted_x_max_m = x_max;
     r.compacted_width_m = x_max - x_min;
     r.compacted_depth_m = o.thickness_m - y_min;
+  }
+  // the compacted zone's area, and its part joined to the loaded face through compacted points (the crater's
+  // flood fill of efg/crater with e_v,th for eps_crush and no cuts): a deep point that a crack's cut marked
+  // compacted (docs/efg.md) moves the depth above, not this one
+  CraterInput joined{body, g.x, {}, g.min_eps_v, {}, o.spacing_m, o.hugoniot.e_v_th};
+  for (const GaussPoint& p : disc.points) joined.area_m2.push_back(p.weight_m2);
+  for (std::size_t k = 0; k < g.x.size(); ++k)
+    if (g.min_eps_v[k] < -o.hugoniot.e_v_th) r.compacted_area_m2 += joined.area_m2[k];
+  if (o.hugoniot.e_v_th > 0) {
+    const CraterMeasure m = measure_crater(joined);
+    r.compacted_joined_depth_m = m.depth_m, r.compacted_joined_area_m2 = m.area_m2;
   }
 
   // the run's energy samples and the hook's, taken at the same steps

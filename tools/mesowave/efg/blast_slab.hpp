@@ -41,9 +41,17 @@
 //
 // Compacted zone: the Gauss points whose most compressive volumetric strain passed -e_v,th (they left
 // Y = 1 onto the Y-function's loading branch, Eq. (25); PointState::min_eps_v); its depth below the top
-// face and its width. The threshold surface pressure p_th = M P(e_v,th) = M e_v,th (M = E (1 - nu) /
+// face and its width, its area (the points' Gauss weights), and the depth and area of its part joined to the
+// loaded face through compacted points (a point a crack's cut marked compacted deep in the slab, docs/efg.md,
+// moves the first depth, not the joined one). The threshold surface pressure p_th = M P(e_v,th) = M e_v,th (M = E (1 - nu) /
 // ((1 + nu)(1 - 2 nu)); uniaxial strain, the state right under a wide charge) is the pressure below which
 // no point can pass it in a linear elastic, non-overshooting response (the closed-form check of the tests).
+//
+// Crater (efg/crater.hpp states it and its sources): the run erodes nothing; the crater is read off the state
+// the run leaves (and each snapshot's) - the crushed points (|min eps_v| past eps_crush, by default the
+// Y-function's minimum, 0.0475) joined to the loaded face, and the loose pieces that fully opened crack segments
+// (every face point past its law's w_max) cut off and that touch the loaded face; the pieces cut off at the far
+// face are spall. Its depth, width and area; the points are joined within one node spacing.
 //
 // Energies: the run's own identity KE + W_int + W_damp = W_ext (W_int the work of all internal forces,
 // the faces' included; efg/explicit_dynamics) holds to round-off. W_faces, the work of the faces'
@@ -60,6 +68,7 @@
 #include <string>
 #include <vector>
 
+#include "mesowave/efg/crater.hpp"
 #include "mesowave/efg/dynamic_cracks.hpp"
 #include "mesowave/efg/explicit_dynamics.hpp"
 #include "mesowave/efg/hugoniot.hpp"
@@ -99,6 +108,8 @@ struct BlastSlabOptions {
   std::int64_t sample_stride = 10;         ///< energies every this many steps
   std::int64_t snapshot_stride = 0;        ///< VTK snapshots every this many steps (0: none)
   BulkViscosity viscosity{};               ///< shock viscosity of the explicit solver (default off)
+  /// eps_crush of the crater (efg/crater.hpp), a magnitude; 0: the Y-function's minimum (default_crushing_eps_v)
+  double crushing_eps_v = 0;
   std::size_t min_points_per_thread = 2000;
   std::function<void(std::int64_t step, double t_s)> progress;
   /// InputError naming the value (one line each).
@@ -135,6 +146,7 @@ struct BlastEnergySample {
 struct GaussPointSnapshot {
   std::vector<Vec2> x;
   std::vector<double> eps_v, min_eps_v, max_Y;
+  std::vector<CraterLabel> crater;  ///< what measure_crater made of each point at that time
 };
 
 struct BlastSnapshot {
@@ -157,6 +169,13 @@ struct BlastSlabResult {
   std::size_t compacted_points = 0;
   double compacted_depth_m = 0, compacted_width_m = 0, compacted_x_min_m = 0, compacted_x_max_m = 0;
   double max_compression_eps_v = 0;               ///< the largest |min_eps_v|
+  double compacted_area_m2 = 0;                   ///< the compacted points' Gauss weights
+  /// the compacted points joined to the loaded face through compacted points (measure_crater's flood fill):
+  /// the depth and area of that part
+  double compacted_joined_depth_m = 0, compacted_joined_area_m2 = 0;
+  double crushing_eps_v = 0;                      ///< eps_crush in force
+  CraterMeasure crater;                           ///< of the final state (labels in final_points.crater)
+  std::vector<Segment> open_segments;             ///< face segments past w_max at the end (the crater's cuts)
   GaussPointSnapshot final_points;
   std::vector<BlastEnergySample> energy;
   std::vector<BlastSnapshot> snapshots;
@@ -165,6 +184,9 @@ struct BlastSlabResult {
   DynamicsResult run;  ///< steps, dt, stable step, wall, threads (sensors none)
   double setup_s = 0, wall_s = 0;
 };
+
+/// The part of a -> b inside the rectangle (Liang-Barsky); false when none (the figures' crack lines).
+bool clip_segment_to(const Rect& r, Vec2& a, Vec2& b);
 
 /// Builds the slab and runs it. InputError: bad options (one line each), a blow-up (explicit_dynamics).
 BlastSlabResult run_blast_slab(const BlastSlabOptions& o);

@@ -130,8 +130,29 @@ void DynamicCracks::add_face_segment(const Segment& s, std::int32_t law, std::si
     p.w_initial_m = law >= 0 ? laws_[std::size_t(law)]->f_t_Pa() / k_ : 0.0;  // the initial secant is k (header)
     p.w_hist_m = p.w_initial_m;
     p.crack = crack;
+    p.segment = s;
     points_.push_back(std::move(p));  // shape functions: refresh()
   }
+}
+
+double DynamicCracks::face_w_max_m(std::size_t k) const {
+  const CrackFacePoint& p = points_.at(k);
+  return p.law >= 0 ? laws_[std::size_t(p.law)]->w_max_m() : 0.0;
+}
+
+std::vector<Segment> DynamicCracks::open_segments() const {
+  std::vector<Segment> out;
+  // a segment's face points are laid together (add_face_segment), so a run of points with the same segment is one
+  for (std::size_t k = 0; k < points_.size();) {
+    const Segment& s = points_[k].segment;
+    bool open = true;
+    std::size_t e = k;
+    for (; e < points_.size() && points_[e].crack == points_[k].crack && points_[e].segment.a == s.a && points_[e].segment.b == s.b; ++e)
+      open = open && points_[e].w_hist_m >= face_w_max_m(e);
+    if (open) out.push_back(s);
+    k = e;
+  }
+  return out;
 }
 
 void DynamicCracks::refresh() {

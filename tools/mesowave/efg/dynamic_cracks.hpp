@@ -173,6 +173,7 @@ struct CrackFacePoint {
   double w_birth_m = 0;
   std::int32_t law = -1;  ///< index into the laws; -1: traction-free (contact only)
   std::size_t crack = 0;
+  Segment segment{};  ///< the face segment (its part in the body) the point was laid on
 };
 
 class DynamicCracks final : public DynamicsCracks {
@@ -227,6 +228,12 @@ class DynamicCracks final : public DynamicsCracks {
   };
   const std::vector<Refusal>& refused() const { return refused_; }
   const std::vector<CrackFacePoint>& face_points() const { return points_; }
+  /// w_max of a face point's law (Eqs. (20), (23)); 0 for a traction-free face.
+  double face_w_max_m(std::size_t face_point) const;
+  /// The face segments whose every face point has opened past its law's w_max (w_hist >= w_max: the traction
+  /// gone for good, cohesive_law's history rule) or is traction-free, in the order they were laid: the cuts
+  /// that can set a fragment loose (efg/crater).
+  std::vector<Segment> open_segments() const;
   const CrackSet& cracks() const { return *cracks_; }
   double penalty_Pa_per_m() const { return k_; }
   double segment_length_m() const { return a_; }
