@@ -405,6 +405,10 @@ void Simulation::restore(const std::filesystem::path& file, const CheckpointIden
 }
 
 void Simulation::restore_stronger(const std::filesystem::path& file, const CheckpointIdentity& identity) {
+  // The linearised network and the chain never break: no prefix to share, and their state is not the full law's.
+  if (choice_.model != "full")
+    throw InputError("a restart with stronger bonds is for the full law (bonds that break); this run's model is " +
+                     choice_.model);
   restore(file, identity, true);
   if (const std::size_t broken = model_->broken_bond_count(); broken > 0)
     throw InputError("checkpoint " + file.string() + " holds " + std::to_string(broken) + " broken bonds at step " +
