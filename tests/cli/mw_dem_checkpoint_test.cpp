@@ -1,7 +1,10 @@
 // mw-dem run --checkpoint / --restart end to end: a run continued from a
 // checkpoint writes the same files, byte for byte, as the run that never
 // stopped (the full law crushed to failure; the chain stopped by SIGTERM), and
-// a restart of another scene or with other options is refused.
+// a restart of another scene or with other options is refused; a run with
+// stronger bonds started from the intact checkpoint of a weaker one (the elastic
+// prefix a calibration's failure trials share, engine/checkpoint.hpp) writes the
+// same files as that run from step 0, and weaker bonds or a broken one are refused.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -88,6 +91,80 @@ TEST(MwDemCheckpoint, ARestartOfAnotherSceneOrWithOtherOptionsIsRefused) {
   const auto changed = restart({"--duration-ms", "0.02"});
   EXPECT_EQ(changed.exit_status, 1);
   EXPECT_NE(changed.err.find("is of another scene file"), std::string::npos) << changed.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "again.h5"));
+}
+
+// The failure trials of a calibration differ in T and C alone. The block at T = C = 20 MPa
+// keeps an intact checkpoint every 100 steps; its bonds first break between steps 1000 and 1100
+// (of 3206), so the last one holds an elastic prefix (its broken-bond counter still 0) that a run at
+// T = C = 24.4 MPa (the scene's) shares: started from it, that run writes the same signal
+// and curve files, byte for byte, as the same run from step 0, and breaks its bonds later.
+TEST(MwDemCheckpoint, ARunWithStrongerBondsStartedFromAWeakerRunsIntactCheckpointWritesTheSameFiles) {
+  test::TempDir dir;
+  dem::write_packing_file(dir / "block.h5", dem::testing::crushing_block(3));
+  test::write_file(dir / "crush.toml", dem::testing::crushing_scene_toml((dir / "block.h5").string()));
+  const std::vector<std::string> base = {"run", (dir / "crush.toml").string(), "--quiet"};
+  const auto out = [&](const std::string& name) {
+    return std::vector<std::string>{"--signals", (dir / (name + ".h5")).string(), "--curves",
+                                    (dir / (name + ".csv")).string(), "--summary", (dir / (name + ".json")).string()};
+  };
+  const auto weak = run_tool("mw-dem", with(with(base, out("weak")), {"--T-MPa", "20", "--C-MPa", "20", "--intact-checkpoint",
+                                                                     (dir / "intact.h5").string(),
+                                                                     "--intact-checkpoint-every-steps", "100"}));
+  ASSERT_EQ(weak.exit_status, 0) << weak.err;
+  const auto whole = run_tool("mw-dem", with(base, out("whole")));
+  ASSERT_EQ(whole.exit_status, 0) << whole.err;
+  const auto strong = run_tool("mw-dem", with(with(base, out("strong")), {"--restart-stronger", (dir / "intact.h5").string()}));
+  ASSERT_EQ(strong.exit_status, 0) << strong.err;
+  EXPECT_EQ(test::read_file(dir / "whole.h5"), test::read_file(dir / "strong.h5"));  // cmp: the same bytes
+  EXPECT_EQ(test::read_file(dir / "whole.csv"), test::read_file(dir / "strong.csv"));
+  const auto w = nlohmann::json::parse(test::read_file(dir / "weak.json"));
+  const auto a = nlohmann::json::parse(test::read_file(dir / "whole.json"));
+  const auto b = nlohmann::json::parse(test::read_file(dir / "strong.json"));
+  const std::int64_t at = b["restarted_stronger_at_step"].get<std::int64_t>();
+  EXPECT_GE(at, 1000);  // a prefix worth sharing
+  EXPECT_EQ(a["steps"], b["steps"]);
+  EXPECT_EQ(a["broken_bonds"], b["broken_bonds"]);
+  EXPECT_GT(a["test"]["peak_stress_MPa"].get<double>(), w["test"]["peak_stress_MPa"].get<double>());  // stronger bonds
+  // The checkpoint was the last intact one: the weak run's counter is 0 before its step and not after the
+  // next check, 100 steps later (one sample every 5 steps, sample m after step 5 m + 1).
+  for (const auto& s : signal::read_signal_file(dir / "weak.h5"))
+    if (s.name == "broken") {
+      ASSERT_GT(s.size(), std::size_t(at / 5 + 20));
+      EXPECT_EQ(s.samples[at / 5 - 1], 0.0);
+      EXPECT_GT(s.samples[at / 5 + 20], 0.0);
+    }
+}
+
+// Weaker bonds than the checkpoint's, a checkpoint with broken bonds, or another option: refused, nothing written.
+TEST(MwDemCheckpoint, ARestartWithWeakerBondsOrFromABrokenStateIsRefused) {
+  test::TempDir dir;
+  dem::write_packing_file(dir / "block.h5", dem::testing::crushing_block(3));
+  test::write_file(dir / "crush.toml", dem::testing::crushing_scene_toml((dir / "block.h5").string()));
+  const std::vector<std::string> base = {"run", (dir / "crush.toml").string(), "--quiet"};
+  const auto intact = run_tool("mw-dem", with(base, {"--duration-ms", "0.02", "--signals", (dir / "first.h5").string(),
+                                                     "--intact-checkpoint", (dir / "intact.h5").string(),
+                                                     "--intact-checkpoint-every-steps", "100"}));
+  ASSERT_EQ(intact.exit_status, 0) << intact.err;
+  const auto broken = run_tool("mw-dem", with(base, {"--signals", (dir / "first.h5").string(), "--checkpoint",
+                                                     (dir / "broken.h5").string(), "--checkpoint-every-steps", "3000"}));
+  ASSERT_EQ(broken.exit_status, 0) << broken.err;
+  const auto restart = [&](const std::string& checkpoint, const std::vector<std::string>& more) {
+    return run_tool("mw-dem", with(with(base, {"--signals", (dir / "again.h5").string(), "--restart-stronger",
+                                               (dir / checkpoint).string()}),
+                                   more));
+  };
+  const auto weaker = restart("intact.h5", {"--duration-ms", "0.02", "--T-MPa", "24", "--C-MPa", "30"});
+  EXPECT_EQ(weaker.exit_status, 1);
+  EXPECT_NE(weaker.err.find("is of a run with T 24.4 MPa, C 24.4 MPa; this run has T 24 MPa, C 30 MPa"), std::string::npos)
+      << weaker.err;
+  const auto other = restart("intact.h5", {"--T-MPa", "30", "--C-MPa", "30"});  // the scene's duration
+  EXPECT_EQ(other.exit_status, 1);
+  EXPECT_NE(other.err.find("--duration-ms 0.02, this run has 0.0: a restart with stronger bonds differs"), std::string::npos)
+      << other.err;
+  const auto cracked = restart("broken.h5", {"--T-MPa", "30", "--C-MPa", "30"});
+  EXPECT_EQ(cracked.exit_status, 1);
+  EXPECT_NE(cracked.err.find("broken bonds at step 3000: only an intact one"), std::string::npos) << cracked.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "again.h5"));
 }
 

@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
     const dem::DemParameters start{start_E ? *start_E * units::GPa : m.E_dem_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
     const double mu_deg = friction_deg.value_or(m.friction_angle_rad * 180 / 3.141592653589793);
     dem::CompressionCalibration calibration(targets, tolerances, start, max_trials);
-    dem::run_trials(calibration, run_trial, mu_deg, std::cerr, elastic_trials == "static");
+    dem::run_trials(calibration, run_trial, mu_deg, std::cerr, elastic_trials == "static", [&](int k) { return trial_command.file(k, "-intact.h5"); });
     const dem::CalibrationTrial& best = calibration.result();
     run.metric("E_glob", best.E_glob_Pa / 1e9, "GPa"), run.metric("nu_glob", best.nu_glob, "");
     run.metric("sigma_dem", best.peak_Pa / 1e6, "MPa"), run.metric("trials", double(calibration.trials().size()), "");

@@ -16,6 +16,7 @@
 //    (their modulus is the lab's: the secant between 10 % and 1/3 of the peak).
 // The class only decides; whoever runs the trials (mw-calibrate: one mw-dem run
 // each) reports their results back.
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -49,7 +50,9 @@ struct CalibrationTrial {
   // Results, filled by whoever ran it:
   double E_glob_Pa = 0, nu_glob = 0, peak_Pa = 0;
   bool peak_reached = false;
-  double wall_s = 0;
+  double wall_s = 0;                  ///< of the steps it ran (after a shared prefix: those after it)
+  std::int64_t shared_prefix_steps = 0;  ///< steps taken from an earlier trial's intact checkpoint
+  int prefix_of_trial = 0;            ///< that trial's number (0: none)
   std::string model;         ///< the model that ran (linear | full)
   std::string method;        ///< dynamic (stepped) | static (mw-dem run --static)
   std::string summary_file;  ///< the run's summary (mw-dem --summary)

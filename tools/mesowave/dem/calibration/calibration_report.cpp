@@ -61,6 +61,7 @@ CalibrationTrial with_results(CalibrationTrial t, const std::filesystem::path& s
   t.peak_Pa = test.at("peak_stress_MPa").get<double>() * 1e6;
   t.peak_reached = test.at("peak_reached").get<bool>();
   t.wall_s = s.at("wall_s").get<double>();
+  t.shared_prefix_steps = s.value("restarted_stronger_at_step", std::int64_t(0));
   t.model = s.at("model").get<std::string>();
   t.method = s.contains("method") ? s.at("method").get<std::string>() : "dynamic";
   t.summary_file = summary_file.string();
@@ -85,14 +86,47 @@ std::string describe(const CalibrationTrial& t) {
   line += " -> E_glob " + format_number(std::round(t.E_glob_Pa / 1e7) / 100) + " GPa, nu_glob " +
           format_number(std::round(t.nu_glob * 1e4) / 1e4);
   if (failure) line += ", peak " + format_number(std::round(t.peak_Pa / 1e4) / 100) + " MPa";
-  return line + " (" + t.model + " model" + (t.method == "static" ? ", static solve" : "") + ", " + format_number(std::round(t.wall_s * 10) / 10) + " s)";
+  const std::string prefix = t.prefix_of_trial > 0 ? ", the first " + std::to_string(t.shared_prefix_steps) +
+                                                         " steps from trial " + std::to_string(t.prefix_of_trial) : "";
+  return line + " (" + t.model + " model" + (t.method == "static" ? ", static solve" : "") + ", " +
+         format_number(std::round(t.wall_s * 10) / 10) + " s" + prefix + ")";
+}
+
+namespace {
+// The earlier failure trial whose intact checkpoint `t` may start from (nullptr: none).
+const CalibrationTrial* prefix_donor(const CalibrationTrial& t, const std::vector<CalibrationTrial>& done,
+                                     const IntactCheckpointFile& intact_file) {
+  const CalibrationTrial* best = nullptr;
+  const auto& p = t.parameters;
+  for (const auto& d : done) {
+    const auto& q = d.parameters;
+    if (d.kind != CalibrationTrial::Kind::failure || q.E_dem_Pa != p.E_dem_Pa || q.nu_dem != p.nu_dem ||
+        !(q.T_Pa <= p.T_Pa) || !(q.c_over_t * q.T_Pa <= p.c_over_t * p.T_Pa) || !std::filesystem::exists(intact_file(d.number)))
+      continue;
+    if (!best || q.T_Pa > best->parameters.T_Pa) best = &d;
+  }
+  return best;
+}
+}  // namespace
+
+std::vector<std::string> shared_prefix_options(const CalibrationTrial& t, const std::vector<CalibrationTrial>& done,
+                                               const IntactCheckpointFile& intact_file) {
+  if (t.kind != CalibrationTrial::Kind::failure || !intact_file) return {};
+  std::vector<std::string> options = {"--intact-checkpoint", intact_file(t.number).string()};
+  if (const CalibrationTrial* d = prefix_donor(t, done, intact_file))
+    options.insert(options.end(), {"--restart-stronger", intact_file(d->number).string()});
+  return options;
 }
 
 void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_deg, std::ostream& log,
-                bool static_elastic) {
+                bool static_elastic, const IntactCheckpointFile& intact_file) {
   while (auto trial = c.next()) {
-    const auto done =
-        with_results(*trial, run(trial->number, compression_trial_options(*trial, c.targets(), friction_deg, static_elastic)));
+    auto options = compression_trial_options(*trial, c.targets(), friction_deg, static_elastic);
+    const auto shared = shared_prefix_options(*trial, c.trials(), intact_file);
+    options.insert(options.end(), shared.begin(), shared.end());
+    auto done = with_results(*trial, run(trial->number, options));
+    if (const CalibrationTrial* d = prefix_donor(*trial, c.trials(), intact_file); d && done.shared_prefix_steps > 0)
+      done.prefix_of_trial = d->number;
     log << "mw-calibrate: " << describe(done) << "\n";
     c.record(done);
   }

@@ -49,10 +49,23 @@ std::string describe(const CalibrationTrial& trial);
 
 /// Runs a trial: its number and mw-dem options in, its summary file (trial-NN.json) out.
 using TrialRunner = std::function<std::filesystem::path(int trial, const std::vector<std::string>& options)>;
+/// Where trial k keeps its intact checkpoint (trial-NN-intact.h5).
+using IntactCheckpointFile = std::function<std::filesystem::path(int trial)>;
+
+/// The failure trials share their elastic prefix (engine/checkpoint.hpp, issue 19): each keeps
+/// an intact checkpoint (the state before its first bond breaks, `intact_file`), and a trial
+/// whose E_dem and nu_dem equal an earlier failure trial's, and whose T and C are at least its,
+/// starts from the checkpoint of the strongest such trial (the latest first break). The results
+/// are the same bits as a trial from step 0; the options to add to `trial`'s (none for an
+/// elastic trial, or without `intact_file`).
+std::vector<std::string> shared_prefix_options(const CalibrationTrial& trial, const std::vector<CalibrationTrial>& done,
+                                               const IntactCheckpointFile& intact_file);
+
 /// Runs the calibration's trials until it has its result, a line per trial on `log`
-/// ("mw-calibrate: trial 3 (elastic): ...", describe()).
+/// ("mw-calibrate: trial 3 (elastic): ...", describe()); with `intact_file` the failure
+/// trials share their elastic prefix (shared_prefix_options).
 void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_angle_deg, std::ostream& log,
-                bool static_elastic = false);
+                bool static_elastic = false, const IntactCheckpointFile& intact_file = {});
 /// The rod's trials ("mw-calibrate rod: trial 1: E_dem 660 GPa -> E_DEM 220.6 GPa").
 void run_trials(RodCalibration& c, const TrialRunner& run, std::ostream& log);
 

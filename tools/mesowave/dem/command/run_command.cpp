@@ -60,6 +60,20 @@ void add_run_options(CLI::App& run_cmd, RunCommandLine& v) {
                      "Continue from this checkpoint, to the same bits as a run never stopped; the scene, packing "
                      "and options must be the checkpoint's")
       ->check(CLI::ExistingFile);
+  auto* intact_opt = run_cmd.add_option(
+      "--intact-checkpoint", v.intact_checkpoint_path,
+      "Checkpoint (HDF5) every --intact-checkpoint-every-steps steps while no bond is broken: the last one holds "
+      "the state before the first break, from which a run with stronger bonds starts (--restart-stronger)");
+  run_cmd.add_option("--intact-checkpoint-every-steps", v.intact_checkpoint_every, "Steps between intact checkpoints")
+      ->check(CLI::PositiveNumber)
+      ->needs(intact_opt)
+      ->capture_default_str();
+  run_cmd.add_option("--restart-stronger", v.restart_stronger_path,
+                     "Start from an --intact-checkpoint of a run with weaker bonds: the scene, packing and options "
+                     "the checkpoint's but T and C, each at least its; while every bond holds the strengths do not "
+                     "enter the law, so the run is the same bits as one from step 0 (docs/calibration.md)")
+      ->check(CLI::ExistingFile)
+      ->excludes(run_cmd.get_option("--restart"));
 }
 
 namespace {
@@ -103,9 +117,10 @@ void run_static(const RunCommandLine& v, const Inputs& in, app::Run& run, const 
 void run_superposed_set(const RunCommandLine& v, const Inputs& in, const SimulationOptions& options,
                         std::optional<app::Progress>& progress, app::Run& run, const std::string& threads_reason) {
   if (!v.signals_path.empty() || !v.csv_path.empty() || !v.snapshot_dir.empty() || !v.curves_path.empty() ||
-      !v.checkpoint_path.empty() || !v.restart_path.empty())
+      !v.checkpoint_path.empty() || !v.restart_path.empty() || !v.intact_checkpoint_path.empty() ||
+      !v.restart_stronger_path.empty())
     throw InputError("--frequencies-kHz writes --signals-pattern files: --signals, --signals-csv, --snapshots, "
-                     "--curves, --checkpoint and --restart are for one direct run");
+                     "--curves, --checkpoint, --restart and their intact forms are for one direct run");
   if (v.signals_pattern.empty()) throw InputError("--frequencies-kHz needs --signals-pattern (e.g. 'dem-{f}kHz.h5')");
   const SuperposedSet set = run_superposed(in.scene, in.packing, options, v.frequencies_kHz, v.check_kHz, v.check_unproven);
   if (progress) progress->finish();
@@ -136,7 +151,7 @@ void run_superposed_set(const RunCommandLine& v, const Inputs& in, const Simulat
 
 void write_direct_run(const RunCommandLine& v, const Scene& scene, const RunReport& report,
                       const std::vector<std::pair<double, std::string>>& snapshots, app::Run& run,
-                      const std::string& threads_reason) {
+                      const std::string& threads_reason, std::int64_t stronger_at_step) {
   std::map<std::string, std::string> attributes = {
       {"scene", scene.name}, {"model", report.choice.model}, {"packing", scene.packing_file.string()}};
   std::vector<signal::Signal> signals = report.signals;
@@ -159,6 +174,8 @@ void write_direct_run(const RunCommandLine& v, const Scene& scene, const RunRepo
   run.metric("ns_per_contact_step", report.ns_per_contact_step, "ns");
   auto summary = to_json(report);
   summary["threads_reason"] = threads_reason;
+  // Its wall_s covers the steps after it; the prefix's peak_force_ratio is the weaker run's (a bound).
+  if (stronger_at_step > 0) summary["restarted_stronger_at_step"] = stronger_at_step;
   run.emit_json(summary, v.summary_path);
 }
 
@@ -177,7 +194,10 @@ void run_info_command(RunCommandLine v, app::Run& run, const std::string& thread
 void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads_reason, Domain* domain) {
   const Inputs in = read_inputs(v, run);
   const bool root = !domain || domain->rank() == 0;
-  if (domain && (v.static_solve || !v.frequencies_kHz.empty() || !v.checkpoint_path.empty() || !v.restart_path.empty()))
+  const bool intact_files = !v.intact_checkpoint_path.empty() || !v.restart_stronger_path.empty();
+  if (v.static_solve && intact_files) throw InputError("--static steps nothing: --intact-checkpoint and --restart-stronger are for a stepped run");
+  if (domain && (v.static_solve || !v.frequencies_kHz.empty() || !v.checkpoint_path.empty() || !v.restart_path.empty() ||
+                 intact_files))
     throw InputError("on several MPI ranks mw-dem runs the scene directly: --static, --frequencies-kHz, --checkpoint "
                      "and --restart run on one process (docs/mpi.md)");
   if (v.static_solve) return run_static(v, in, run, threads_reason);
@@ -215,6 +235,11 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
     options.checkpoint = {v.checkpoint_path, v.checkpoint_every, [] { return app::interrupt_signal() != 0; },
                           run_identity(v.scene_path, in.scene, v.overrides, v.model), written};
   }
+  const CheckpointIdentity identity = run_identity(v.scene_path, in.scene, v.overrides, v.model);
+  if (!v.intact_checkpoint_path.empty()) {
+    const auto written = [&](std::int64_t step) { run.param("intact_checkpoint_step", step); };
+    options.intact_checkpoint = {v.intact_checkpoint_path, v.intact_checkpoint_every, {}, identity, written};
+  }
   Simulation sim(in.scene, in.packing, options);
   if (v.signals_path.empty()) throw InputError("run needs --signals (or --frequencies-kHz with --signals-pattern)");
   if (!v.restart_path.empty()) {
@@ -223,11 +248,18 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
     resumed_at = sim.steps_done();
     run.param("restarted_at_step", resumed_at);
   }
+  if (!v.restart_stronger_path.empty()) {
+    run.input(v.restart_stronger_path);
+    sim.restore_stronger(v.restart_stronger_path, identity);
+    resumed_at = sim.steps_done();
+    run.param("restarted_stronger_at_step", resumed_at);
+  }
   const RunReport report = sim.run();
   if (progress && report.stop_reason.empty()) progress->finish();
   else if (progress) progress->finish_early(report.steps, report.stop_reason);
   if (!root) return;
-  write_direct_run(v, in.scene, report, snapshots, run, threads_reason);
+  write_direct_run(v, in.scene, report, snapshots, run, threads_reason,
+                   v.restart_stronger_path.empty() ? 0 : resumed_at);
 }
 
 }  // namespace mesowave::dem

@@ -2,7 +2,8 @@
 // mw-dem's subcommands as library calls (tools/cli/mw-dem.cpp is their narrative): the options a user
 // types and what `info` and `run` do with them. `run` is one of three runs of the same scene:
 //  - direct (engine/simulation): every step, optional ParaView snapshots, checkpoints and restarts
-//    (engine/checkpoint: on SIGTERM/SIGINT and every N steps; a restart continues to the same bits);
+//    (engine/checkpoint: on SIGTERM/SIGINT and every N steps; a restart continues to the same bits;
+//    an intact checkpoint, the last before the first bond breaks, starts a run with stronger bonds);
 //  - static (--static, calibration/static_elastic): a compression [test]'s elastic part as one
 //    solve of the linearised network;
 //  - superposed (--frequencies-kHz, engine/superposition): every burst frequency from one
@@ -24,10 +25,11 @@ class Domain;
 struct RunCommandLine {
   std::filesystem::path scene_path, signals_path, summary_path, snapshot_dir, csv_path, curves_path;
   std::filesystem::path checkpoint_path, restart_path;
+  std::filesystem::path intact_checkpoint_path, restart_stronger_path;  ///< engine/checkpoint.hpp: stronger bonds
   std::string model = "auto";
   SceneOverrides overrides;
   bool quiet = false, static_solve = false, check_unproven = false;
-  std::int64_t checkpoint_every = 0;
+  std::int64_t checkpoint_every = 0, intact_checkpoint_every = 1000;
   std::vector<double> frequencies_kHz, check_kHz;
   std::string signals_pattern, summary_pattern;
 };

@@ -289,7 +289,8 @@ RunReport Simulation::run() {
   std::string stop_reason;
 
   const CheckpointOptions& checkpoint = options_.checkpoint;
-  bool request_served = false;
+  const CheckpointOptions& intact = options_.intact_checkpoint;
+  bool request_served = false, intact_over = intact.file.empty() || intact.every_steps <= 0;
   const auto start = std::chrono::steady_clock::now();
   for (std::int64_t n = first; n < steps_; ++n) {
     const double t = double(n) * dt;
@@ -336,6 +337,13 @@ RunReport Simulation::run() {
         if (checkpoint.on_written) checkpoint.on_written(loop_.done);
       }
       request_served = request_served || asked;
+    }
+    if (!intact_over && loop_.done % intact.every_steps == 0) {
+      intact_over = model.broken_bond_count() > 0;
+      if (!intact_over) {
+        save_checkpoint(intact.file, intact.identity);
+        if (intact.on_written) intact.on_written(loop_.done);
+      }
     }
     if (options_.on_progress) options_.on_progress(loop_.done, steps_);
   }
@@ -404,6 +412,22 @@ void Simulation::save_checkpoint(const std::filesystem::path& file, const Checkp
 }
 
 void Simulation::restore(const std::filesystem::path& file, const CheckpointIdentity& identity) {
+  restore(file, identity, false);
+}
+
+void Simulation::restore_stronger(const std::filesystem::path& file, const CheckpointIdentity& identity) {
+  // The linearised network and the chain never break: no prefix to share, and their state is not the full law's.
+  if (choice_.model != "full")
+    throw InputError("a restart with stronger bonds is for the full law (bonds that break); this run's model is " +
+                     choice_.model);
+  restore(file, identity, true);
+  if (const std::size_t broken = model_->broken_bond_count(); broken > 0)
+    throw InputError("checkpoint " + file.string() + " holds " + std::to_string(broken) + " broken bonds at step " +
+                     std::to_string(loop_.done) + ": only an intact one (--intact-checkpoint) starts a run with "
+                     "stronger bonds");
+}
+
+void Simulation::restore(const std::filesystem::path& file, const CheckpointIdentity& identity, bool stronger_bonds) {
   read_checkpoint_file(file, identity, [&](const StateGroup& root) {
     const StateGroup run = root.open("run");
     // The identity covers the inputs and options; these are what they determine, checked once more.
@@ -430,7 +454,7 @@ void Simulation::restore(const std::filesystem::path& file, const CheckpointIden
     loop_.max_work_J = run.read_double("max_work_J");
     loop_.peak_stored_J = run.read_double("peak_stored_J");
     loop_.test_peak_Pa = run.read_double("test_peak_Pa");
-  });
+  }, stronger_bonds);
 }
 
 }  // namespace mesowave::dem

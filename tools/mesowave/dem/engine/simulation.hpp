@@ -57,6 +57,10 @@ struct SimulationOptions {
   /// viscous damping windows, superposition.hpp). -1: the scene's loads.
   int impulse_actuator = -1;
   CheckpointOptions checkpoint;  ///< none unless checkpoint.file is set
+  /// Written every intact_checkpoint.every_steps steps while no bond is broken, and no more after
+  /// the first break: the last one holds the elastic prefix that a run with stronger bonds
+  /// shares (restore_stronger, checkpoint.hpp). None unless intact_checkpoint.file is set.
+  CheckpointOptions intact_checkpoint;
   /// Several MPI ranks (dem/parallel/domain.hpp, docs/mpi.md): the model is split over them
   /// and every rank runs this Simulation, to the same bits as one process. nullptr: one process.
   Domain* domain = nullptr;
@@ -113,6 +117,10 @@ public:
   /// Reads a checkpoint of this run (InputError if it is of another, checkpoint.hpp); call before run().
   /// After an InputError the Simulation may hold part of the checkpoint: build a new one.
   void restore(const std::filesystem::path& file, const CheckpointIdentity& identity);
+  /// Reads an intact checkpoint of a run with weaker bonds (checkpoint.hpp): the same
+  /// inputs and options but T and C, those at most this run's, no bond broken (InputError otherwise).
+  /// The run continues to the same bits as one of this run's strengths from step 0.
+  void restore_stronger(const std::filesystem::path& file, const CheckpointIdentity& identity);
 
   // What a solver other than the stepping loop reads (static_elastic.hpp):
   // the scene as run, the placed actuators and sensors, the [test] specimen.
@@ -122,6 +130,8 @@ public:
   const std::optional<UniaxialTestSpecimen>& test_specimen() const { return test_specimen_; }
 
 private:
+  void restore(const std::filesystem::path& file, const CheckpointIdentity& identity, bool stronger_bonds);
+
   Scene scene_;
   SimulationOptions options_;
   ModelChoice choice_;
