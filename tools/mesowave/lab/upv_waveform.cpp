@@ -434,7 +434,7 @@ std::string upv_figure_script(const std::vector<PickedTrace>& traces, const std:
        "set key top right\nset ytics ('' 0)\nset xrange [" +
        format_exact(t_lo * 1e6) + ":" + format_exact(t_hi * 1e6) + "]\nset yrange [" +
        format_exact(-2.4 * double(traces.size() - 1) - 1.5) + ":1.9]\n";
-  if (!title.empty()) s += "set title '" + title + "'\n";
+  if (!title.empty()) s += "set title " + io::gnuplot_text(title) + "\n";  // an apostrophe in it stays text
   s += "plot " + plots + "\n";
   return s;
 }
