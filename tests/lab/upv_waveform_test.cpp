@@ -156,3 +156,17 @@ TEST(UpvWaveform, WavWithTrueSampleIntervalAndTrigger) {
   EXPECT_DOUBLE_EQ(s.samples[5], 0.5);
   EXPECT_DOUBLE_EQ(s.samples[8], -1.0);
 }
+
+// A title with an apostrophe (cube-150.mk: "calibration 'static-test'") stays one gnuplot string.
+TEST(UpvWaveform, FigureTitleWithAnApostropheIsQuotedForGnuplot) {
+  SyntheticUpvSpec spec;
+  const auto record = as_signal(synthetic_upv_waveform(spec));
+  PickedTrace trace;
+  trace.record = &record;
+  trace.onset = pick_onset(record, OnsetOptions{});
+  trace.label = "P wave";
+  trace.symbol = "t_p";
+  trace.colour = "#1f4e9c";
+  const auto script = upv_figure_script({trace}, "fig.png", "calibration 'static-test': the pick");
+  EXPECT_NE(script.find("set title \"calibration 'static-test': the pick\"\n"), std::string::npos);
+}

@@ -84,6 +84,10 @@ int main(int argc, char** argv) {
   cli.add_option("--time-unit", m.read.time_unit, "Time unit of a headerless CSV: s, ms or us")->group(g);
   cli.add_option("--sample-interval-us", m.sample_interval_us, "WAV: the true sample interval [us]")->group(g);
   cli.add_option("--trigger-sample", m.read.trigger_sample, "WAV: 0-based sample at the trigger (t = 0)")->group(g);
+  cli.add_option("--add-noise-snr-dB", m.read.added_noise_snr_dB, "Add white Gaussian noise at this SNR = 20 log10(peak / "
+                 "noise RMS) to the records before picking (a model's noise-free record made like a lab's)")->group(g);
+  cli.add_option("--add-noise-seed", m.read.added_noise_seed, "Seed of the added noise (the S record's: seed + 1)")
+      ->group(g)->capture_default_str();
   cli.add_option("--plot", plot, "PNG of the records with the picks marked (like Fig. 7)")->group(g)->type_name("FILE");
   cli.add_option("--title", title, "Plot title")->group(g);
   app::add_out_option(cli, out);

@@ -50,12 +50,18 @@ UpvReport upv_report(const UpvMeasurement& m) {
     if (m.s_lowpass_kHz) o.lowpass_Hz = *m.s_lowpass_kHz * units::kHz;
     if (t_p_us) o = shear_wave_options(o, *t_p_us * units::us + d, d);
     if (!m.s_locator.empty()) o.locator = m.s_locator;
-    report.s_pick = pick_time_of_flight(m.s_wave, read, o, d, "S wave");
+    auto s_read = read;  // a second record: noise of its own, as a lab's two records have
+    ++s_read.added_noise_seed;
+    report.s_pick = pick_time_of_flight(m.s_wave, s_read, o, d, "S wave");
     t_s_us = report.s_pick->tof_s / units::us;
   }
   // The S chain after a P pick is a strategy of its own in the picker table.
   const std::string s_strategy = report.s_pick ? report.s_pick->onset.pick.method + (t_p_us ? "-after-p" : "") : "";
   nlohmann::ordered_json picks;
+  if (read.added_noise_snr_dB && (report.p_pick || report.s_pick)) {
+    picks["added_noise_snr_dB"] = *read.added_noise_snr_dB;
+    picks["added_noise_seed"] = read.added_noise_seed;
+  }
   for (auto [pk, key] : {std::pair{&report.p_pick, "t_p"}, std::pair{&report.s_pick, "t_s"}}) {
     if (!*pk) continue;
     describe_pick(picks, key, **pk);

@@ -16,6 +16,7 @@
 #include "mesowave/lab/compression_record.hpp"
 #include "mesowave/signal/envelope.hpp"
 #include "mesowave/signal/fft.hpp"
+#include "mesowave/signal/noise.hpp"
 #include "mesowave/signal/validate.hpp"
 
 namespace mesowave::lab {
@@ -361,6 +362,10 @@ TimeOfFlightPick pick_time_of_flight(const std::filesystem::path& path, const Wa
                                      const OnsetOptions& options, double delay_s, const std::string& name) {
   TimeOfFlightPick p;
   p.record = read_upv_waveform(path, read, name + " (" + path.filename().string() + ")");
+  if (read.added_noise_snr_dB) {
+    p.added_noise_rms = signal::noise_rms_at_snr(p.record, *read.added_noise_snr_dB);
+    p.record = signal::with_noise_at_snr(p.record, *read.added_noise_snr_dB, read.added_noise_seed);
+  }
   p.onset = pick_onset(p.record, options);
   p.delay_s = delay_s;
   p.tof_s = p.onset.pick.time_s - delay_s;
@@ -380,6 +385,7 @@ void describe_pick(nlohmann::ordered_json& j, const std::string& k, const TimeOf
   j[k + "_locator"] = o.locator.method;
   j[k + "_delay_us"] = p.delay_s * 1e6;
   if (o.contrast > 0) j[k + "_onset_contrast"] = o.contrast;
+  if (p.added_noise_rms > 0) j[k + "_added_noise_rms"] = p.added_noise_rms;
 }
 
 }  // namespace mesowave::lab
@@ -428,7 +434,7 @@ std::string upv_figure_script(const std::vector<PickedTrace>& traces, const std:
        "set key top right\nset ytics ('' 0)\nset xrange [" +
        format_exact(t_lo * 1e6) + ":" + format_exact(t_hi * 1e6) + "]\nset yrange [" +
        format_exact(-2.4 * double(traces.size() - 1) - 1.5) + ":1.9]\n";
-  if (!title.empty()) s += "set title '" + title + "'\n";
+  if (!title.empty()) s += "set title " + io::gnuplot_text(title) + "\n";  // an apostrophe in it stays text
   s += "plot " + plots + "\n";
   return s;
 }

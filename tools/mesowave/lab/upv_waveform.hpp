@@ -31,6 +31,7 @@
 //     envelope peak: the onset where the variance changes; refused if it falls
 //     on the window's start), or envelope-peak (the group arrival: later than
 //     the onset, said so).
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -49,6 +50,10 @@ struct WaveformReadOptions {
   std::string time_unit;          ///< s, ms or us; for headerless CSV (default s)
   std::optional<double> sample_interval_s;  ///< WAV: overrides the header's rate
   std::optional<long> trigger_sample;       ///< WAV: 0-based sample at t = 0 (default 0)
+  /// Noise added to the record before picking (signal::with_noise_at_snr), as a lab's record
+  /// has it: a model's noise-free record then goes through the lab's exact chain (docs/cube-150.md).
+  std::optional<double> added_noise_snr_dB;
+  std::uint64_t added_noise_seed = 1;       ///< the S record's noise is drawn with seed + 1 (upv_report)
 };
 
 /// The record as a signal (t0_s = time of its first sample, uniform dt_s).
@@ -103,10 +108,11 @@ struct TimeOfFlightPick {
   Onset onset;
   double delay_s = 0;
   double tof_s = 0;                 ///< onset - delay
+  double added_noise_rms = 0;       ///< of the noise added before picking (0: none), in the record's unit
 };
 
-/// Reads `path`, picks the onset and subtracts the delay. InputError if the
-/// onset does not come after the delay.
+/// Reads `path` (adding the stated noise, if any), picks the onset and subtracts the delay.
+/// InputError if the onset does not come after the delay.
 TimeOfFlightPick pick_time_of_flight(const std::filesystem::path& path, const WaveformReadOptions& read,
                                      const OnsetOptions& options, double delay_s, const std::string& name);
 
