@@ -3,11 +3,16 @@
 // on the producer's (declare_products).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/threads.hpp"
+#include "mesowave/prov/database.hpp"
+#include "mesowave/prov/queries.hpp"
+#include "mesowave/prov/report.hpp"
 #include "mesowave/prov/run_record.hpp"
 #include "support/run_tool.hpp"
 
@@ -112,3 +117,24 @@ TEST(Tool, DeclareProductsMakesEveryOtherEntryForeign) {
 }
 
 }  // namespace
+
+// A wall time means little without the threads that earned it: a run whose body chose its threads
+// (core/threads: use_threads) records the count as the metric `threads`, and mw-prov show prints it
+// on the cost line.
+TEST(Tool, ARunThatChoseItsThreadsRecordsTheCount) {
+  TempDir dir;
+  const std::string db_path = (dir / "p.sqlite").string();
+  app::Tool tool("mw-probe", "A probe of app::Tool.");
+  std::vector<std::string> args = {"mw-probe", "--db", db_path};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  EXPECT_EQ(tool.run(int(argv.size()), argv.data(), [](app::Run&) { EXPECT_EQ(use_threads(2).count, 2); }), 0);
+  const auto db = prov::Database::open(db_path);
+  const auto runs = prov::list_runs(db);
+  ASSERT_EQ(runs.size(), 1u);
+  const prov::RunRecord r = prov::load_run(db, runs[0].id);
+  const auto m = std::find_if(r.metrics.begin(), r.metrics.end(), [](const auto& x) { return x.name == "threads"; });
+  ASSERT_NE(m, r.metrics.end());
+  EXPECT_EQ(m->value, 2.0);
+  EXPECT_NE(prov::run_text(runs[0].id, r, dir.path()).find("MiB, 2 threads\n"), std::string::npos);
+}

@@ -11,6 +11,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/dem/calibration/calibration.hpp"
+#include "mesowave/dem/calibration/calibration_report.hpp"
 #include "support/input_error.hpp"
 
 using namespace mesowave;
@@ -99,6 +100,9 @@ TEST(CompressionCalibration, RefusesTargetsNoPackingReaches) {
   EXPECT_NE(message({27e9, 0.62, 66e6}).find("must lie in (0, 0.5)"), std::string::npos);
   EXPECT_NE(message({27e9, -0.1, 66e6}).find("must lie in (0, 0.5)"), std::string::npos);
   EXPECT_NE(message({-27e9, 0.16, 66e6}).find("E_st"), std::string::npos);
+  // The dynamic calibration's targets are E_d and nu_d, and its errors say so.
+  EXPECT_NE(message({-36e9, 0.16, 66e6, "E_d", "nu_d"}).find("target E_d"), std::string::npos);
+  EXPECT_NE(message({36e9, 0.62, 66e6, "E_d", "nu_d"}).find("target nu_d (0.62)"), std::string::npos);
   EXPECT_NE(message({27e9, 0.16, 0}).find("sigma_max"), std::string::npos);
   EXPECT_NE(message({27e9, 0.16, 2e9}).find("peak strain"), std::string::npos);
   // nu_glob of this packing is 0.245 at nu_dem = 0: 0.3 is out of reach.
@@ -204,4 +208,19 @@ TEST(RodCalibration, TargetFromTheOptionOrTheExperiment) {
   EXPECT_NE(input_error_of([] { rod_target_E_GPa(std::nullopt, ""); }).find("--E-GPa or --experiment"), std::string::npos);
   const std::filesystem::path cube = std::filesystem::path(MESOWAVE_SOURCE_DIR) / "lab-data/concrete-cube/experiment.toml";
   EXPECT_NE(input_error_of([&] { rod_target_E_GPa(std::nullopt, cube); }).find("a rod is a cylinder specimen"), std::string::npos);
+}
+
+// One name per paper quantity: a calibration to the UPV test's E_d and nu_d says so in its summary
+// (E_d_target_GPa, targets.E_d), never under the static test's names.
+TEST(CompressionCalibration, TheDynamicCalibrationsSummaryNamesItsTargetsEdAndNud) {
+  const SyntheticPacking packing;
+  CompressionCalibration c({36.67e9, 0.1618, 66e6, "E_d", "nu_d"}, {}, kPoorStart, 12);
+  calibrate(c, packing);
+  ASSERT_TRUE(c.converged());
+  const auto j = calibration_summary(c, 18);
+  EXPECT_EQ(j.at("E_d_target_GPa").get<double>(), 36.67);
+  EXPECT_EQ(j.at("nu_d_target").get<double>(), 0.1618);
+  EXPECT_FALSE(j.contains("E_st_target_GPa"));
+  EXPECT_TRUE(j.at("targets").contains("E_d") && j.at("targets").contains("nu_d"));
+  EXPECT_FALSE(j.at("targets").contains("E_st"));
 }

@@ -10,6 +10,7 @@
 #include "mesowave/app/interrupt.hpp"
 #include "mesowave/app/process_info.hpp"
 #include "mesowave/core/error.hpp"
+#include "mesowave/core/threads.hpp"
 #include "mesowave/core/version.hpp"
 #include "mesowave/io/quantity_file.hpp"
 #include "mesowave/prov/database.hpp"
@@ -355,6 +356,11 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
   }
   record.inputs = run.inputs_;
   record.metrics = run.metrics_;
+  // The thread count earns the wall time (the bits do not depend on it): recorded for every run that chose it.
+  const auto named = [&record](const char* name) {
+    return std::any_of(record.metrics.begin(), record.metrics.end(), [name](const auto& m) { return m.name == name; });
+  };
+  if (const auto t = threads_chosen(); t && !named("threads")) record.metrics.push_back({"threads", double(t->count), ""});
   try {
     if (record.exit_status == 0)
       for (std::size_t i = 0; i < run.stage_.final_paths().size(); ++i)

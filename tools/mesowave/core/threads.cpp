@@ -17,6 +17,10 @@
 
 namespace mesowave {
 
+namespace {
+std::optional<ThreadChoice> last_choice;  // use_threads runs on the main thread, before any region
+}  // namespace
+
 int threads_for_work(int count, const ThreadWork& work) {
   if (work.min_per_thread == 0) return std::max(1, count);
   const std::size_t by_work = work.items / work.min_per_thread;
@@ -81,8 +85,11 @@ ThreadChoice use_threads(int requested, const ThreadWork& work) {
       thread_rule(asked, omp_get_num_procs(), busy, work,
                   from_environment > 0 ? "MESOWAVE_THREADS=" + std::to_string(from_environment) : "");
   omp_set_num_threads(c.count);
+  last_choice = c;
   return c;
 }
+
+std::optional<ThreadChoice> threads_chosen() { return last_choice; }
 
 int region_threads(std::size_t items, std::size_t min_per_thread) {
   return threads_for_work(omp_get_max_threads(), {items, min_per_thread, ""});

@@ -22,6 +22,7 @@
 // Every solver gives the same bits for any thread count, so the rule moves
 // only the wall time. Each run reports the count and `reason`.
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace mesowave {
@@ -60,6 +61,10 @@ int threads_for_work(int count, const ThreadWork& work);
 /// The rule on this machine (`requested`, else environment_threads(), else OpenMP's core count
 /// less other_runnable_threads), applied: OpenMP's next parallel regions use the chosen count.
 ThreadChoice use_threads(int requested, const ThreadWork& work = {});
+
+/// The last choice use_threads made in this process, if it made one: app::Tool records its count
+/// with the run (metric `threads`), since a wall time means little without it.
+std::optional<ThreadChoice> threads_chosen();
 
 /// Threads for one parallel region over `items` units: OpenMP's current
 /// maximum (what use_threads set), capped by the work.

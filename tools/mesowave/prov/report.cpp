@@ -105,7 +105,10 @@ std::string run_text(std::int64_t id, const RunRecord& r, const fs::path& base) 
   out << "host:     " << r.host << "   cwd: " << r.cwd << "\n";
   out << "started:  " << r.started_at << "   ended: " << r.ended_at << "\n";
   out << "cost:     wall " << format_fixed(r.wall_s, 3) << " s, cpu " << format_fixed(r.cpu_s, 3) << " s, peak memory "
-      << format_fixed(double(r.peak_rss_kib) / 1024.0, 1) << " MiB\n";
+      << format_fixed(double(r.peak_rss_kib) / 1024.0, 1) << " MiB";
+  for (const auto& m : r.metrics)
+    if (m.name == "threads") out << ", " << format_number(m.value) << (m.value == 1 ? " thread" : " threads");
+  out << "\n";
   out << "argv:    ";
   for (const auto& a : r.argv) out << " " << a;
   out << "\nparams:   " << r.params.dump() << "\n";

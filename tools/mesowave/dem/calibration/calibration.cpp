@@ -31,14 +31,14 @@ CompressionCalibration::CompressionCalibration(const CalibrationTargets& targets
                                                const CalibrationTolerances& tolerances, const DemParameters& start,
                                                int max_trials)
     : targets_(targets), tolerances_(tolerances), start_(start), max_trials_(max_trials) {
-  require_positive("target E_st", targets.E_Pa / 1e9, "GPa");
+  require_positive("target " + targets.E_name, targets.E_Pa / 1e9, "GPa");
   if (!(targets.nu > 0 && targets.nu < 0.5))
-    throw InputError("target nu_st (" + format_number(targets.nu) +
+    throw InputError("target " + targets.nu_name + " (" + format_number(targets.nu) +
                      ") must lie in (0, 0.5): an isotropic elastic solid has nu < 0.5, and a bonded sphere packing "
                      "gives nu_glob > 0");
   require_positive("target sigma_max", targets.sigma_Pa / 1e6, "MPa");
   if (targets.sigma_Pa / targets.E_Pa > kBondStrainMax)
-    throw InputError("target sigma_max (" + mpa(targets.sigma_Pa) + ") over E_st (" + gpa(targets.E_Pa) +
+    throw InputError("target sigma_max (" + mpa(targets.sigma_Pa) + ") over " + targets.E_name + " (" + gpa(targets.E_Pa) +
                      ") is a peak strain of " + format_number(targets.sigma_Pa / targets.E_Pa) +
                      ": unreachable for a brittle bonded packing, which fails at strains of a few 1e-3");
   require_positive("tolerance on E", tolerances.E_relative);
@@ -130,13 +130,13 @@ double CompressionCalibration::next_nu_dem(const std::vector<const CalibrationTr
   if (a < -0.5) a = nu_estimate_inverse(targets_.nu - (n1 - nu_estimate(a1)));  // the shifted estimate
   if (a < 0) {
     if (a1 == 0 && n1 < targets_.nu - tolerances_.nu_absolute)
-      throw InputError("target nu_st " + fixed(targets_.nu) + " is unreachable: this packing gives nu_glob " + fixed(n1) +
+      throw InputError("target " + targets_.nu_name + " " + fixed(targets_.nu) + " is unreachable: this packing gives nu_glob " + fixed(n1) +
                        " at nu_dem = 0 (K_s = 0), its largest");
     a = 0;
   }
   if (a > kNuDemMax) {
     if (a1 == kNuDemMax && n1 > targets_.nu + tolerances_.nu_absolute)
-      throw InputError("target nu_st " + fixed(targets_.nu) + " is unreachable: this packing gives nu_glob " + fixed(n1) +
+      throw InputError("target " + targets_.nu_name + " " + fixed(targets_.nu) + " is unreachable: this packing gives nu_glob " + fixed(n1) +
                        " at nu_dem = " + format_number(kNuDemMax) + " (K_s = 3 K_n)");
     a = kNuDemMax;
   }

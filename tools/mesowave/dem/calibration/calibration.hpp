@@ -25,9 +25,12 @@
 namespace mesowave::dem {
 
 struct CalibrationTargets {
-  double E_Pa = 0;      ///< E_st (static modulus)
-  double nu = 0;        ///< nu_st (the paper takes nu_d)
+  double E_Pa = 0;      ///< E_st (static modulus), or E_d for the dynamic calibration
+  double nu = 0;        ///< nu_st (the paper takes nu_d), or nu_d
   double sigma_Pa = 0;  ///< sigma_max (compressive strength)
+  /// The paper's names of the elastic targets, as errors and the summary name them: E_st and nu_st
+  /// (the static test's), or E_d and nu_d (the UPV test's: mw-calibrate --E-d-GPa --nu-d).
+  std::string E_name = "E_st", nu_name = "nu_st";
 };
 
 struct CalibrationTolerances {

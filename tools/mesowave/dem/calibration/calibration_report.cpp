@@ -157,8 +157,8 @@ nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, doub
   j["E_glob_GPa"] = best.E_glob_Pa / 1e9;
   j["nu_glob"] = best.nu_glob;
   j["sigma_dem_MPa"] = best.peak_Pa / 1e6;
-  j["E_st_target_GPa"] = targets.E_Pa / 1e9;
-  j["nu_st_target"] = targets.nu;
+  j[targets.E_name + "_target_GPa"] = targets.E_Pa / 1e9;
+  j[targets.nu_name + "_target"] = targets.nu;
   j["sigma_max_target_MPa"] = targets.sigma_Pa / 1e6;
   j["E_error_pct"] = 100 * (best.E_glob_Pa / targets.E_Pa - 1);
   j["nu_error"] = best.nu_glob - targets.nu;
@@ -175,9 +175,9 @@ nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, doub
     return t;
   };
   j["targets"] = {
-      {"E_st", target(targets.E_Pa / 1e9, "GPa", format_number(100 * tol.E_relative) + " %", best.E_glob_Pa / 1e9,
-                      origins.E_st)},
-      {"nu_st", target(targets.nu, "", format_number(tol.nu_absolute), best.nu_glob, origins.nu_st)},
+      {targets.E_name, target(targets.E_Pa / 1e9, "GPa", format_number(100 * tol.E_relative) + " %", best.E_glob_Pa / 1e9,
+                      origins.E)},
+      {targets.nu_name, target(targets.nu, "", format_number(tol.nu_absolute), best.nu_glob, origins.nu)},
       {"sigma_max", target(targets.sigma_Pa / 1e6, "MPa", format_number(100 * tol.sigma_relative) + " %",
                            best.peak_Pa / 1e6, origins.sigma_max)}};
   return j;

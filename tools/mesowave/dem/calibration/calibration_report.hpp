@@ -76,12 +76,13 @@ void run_trials(RodCalibration& c, const TrialRunner& run, std::ostream& log);
 /// sigma_max) or the lab's own step 4 (mw-compress's JSON: E_st_measured_GPa, sigma_max_MPa;
 /// its records carry no lateral strain, so nu_st stays the static-test file's).
 struct TargetOrigins {
-  nlohmann::ordered_json E_st, nu_st, sigma_max;
+  nlohmann::ordered_json E, nu, sigma_max;  ///< of the targets named CalibrationTargets::E_name, nu_name, and sigma_max
 };
 
 /// The calibrated cube: the flat keys that `mw-dem run --from` reads (E_dem_GPa,
 /// nu_dem, T_MPa, C_MPa, friction_angle_deg), then the results against the targets,
-/// then "targets": per target (E_st, nu_st, sigma_max) its value, unit, tolerance, the
+/// then "targets": per target (E_st, nu_st, sigma_max; E_d, nu_d for the dynamic calibration:
+/// CalibrationTargets::E_name, nu_name, which also name the flat `<name>_target` keys) its value, unit, tolerance, the
 /// calibrated model's value and `origins`' record of where it was read from (nested: data for
 /// the reader, never an option value of `mw-dem --from`).
 /// `elastic_trials`: how the elastic trials ran ("dynamic" or "static"), recorded as elastic_trials.
