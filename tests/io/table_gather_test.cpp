@@ -273,3 +273,28 @@ TEST(TableGather, FormatsAndJoinKeysAsAnotherTableSpellsThem) {
   spec.formats = {{"nothing", {ColumnFormat::Style::fixed, 1}}};
   EXPECT_THROW(gather_rows(spec), InputError);
 }
+
+// --pareto min:wall_s,max:pcc: five runs whose front is known by inspection - fast (1 s, 0.90),
+// mid (3 s, 0.99) and exact (10 s, 1.0) are each the cheapest for their accuracy; slow (5 s, 0.95)
+// is beaten by mid in both, and tie (3 s, 0.99 again) neither beats nor is beaten by mid: both stay.
+TEST(TableGather, TheParetoFrontMarksTheCheapestRunForEachAccuracy) {
+  TempDir dir;
+  GatherSpec spec;
+  spec.key_name = "run";
+  const std::vector<std::tuple<const char*, double, double>> runs = {
+      {"fast", 1, 0.90}, {"slow", 5, 0.95}, {"mid", 3, 0.99}, {"tie", 3, 0.99}, {"exact", 10, 1.0}};
+  for (const auto& [name, wall, pcc] : runs) {
+    const auto file = dir / (std::string(name) + ".json");
+    write_file(file, "{\"wall_s\": " + std::to_string(wall) + ", \"pcc\": " + std::to_string(pcc) + "}");
+    spec.rows.push_back(parse_gather_row(std::string(name) + "=" + file.string()));
+  }
+  for (const char* c : {"wall_s", "pcc"}) spec.columns.push_back(parse_column_source(c));
+  spec.pareto = {"min:wall_s", "max:pcc"};
+  const auto t = gather_rows(spec);
+  EXPECT_EQ(t.header.back(), "pareto");
+  std::vector<std::string> front;
+  for (const auto& row : t.rows) front.push_back(row.back());
+  EXPECT_EQ(front, (std::vector<std::string>{"yes", "", "yes", "yes", "yes"}));
+  spec.pareto = {"least:wall_s", "max:pcc"};
+  EXPECT_NE(test::input_error_of([&] { gather_rows(spec); }).find("min:COLUMN or max:COLUMN"), std::string::npos);
+}

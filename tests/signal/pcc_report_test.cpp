@@ -103,3 +103,43 @@ TEST(PccReport, BadRequestsAreInputErrors) {
   q.plots = {"fig.pdf"};
   EXPECT_THROW(pcc_report(q), InputError);  // refused before any file is read
 }
+
+// --arrival-relative: a triangle pulse (rest to 10 us, apex at 20 us, rest again from 30 us) crosses
+// a fraction F of its peak at 10 + 10 F us exactly (linear refinement on a linear rise). The second
+// set holds it delayed by 1.3 us and scaled by 0.8 (sensor B) and mirrored (C: the same |x|).
+TEST(PccReport, ArrivalsAndPeaksOfADelayedScaledPulse) {
+  test::TempDir dir;
+  const auto triangle = [](const std::string& name, double delay_us, double scale) {
+    Signal s{name, "velocity", "m/s", "", 0.0, 1e-7, {}, std::nullopt};
+    for (int i = 0; i < 1000; ++i) {
+      const double t = i * 0.1 - delay_us;
+      s.samples.push_back(scale * (t <= 10 || t >= 30 ? 0.0 : t < 20 ? (t - 10) / 10 : (30 - t) / 10));
+    }
+    return s;
+  };
+  const auto a = dir / "a.h5", b = dir / "b.h5";
+  signal::write_signals(a, signal::SignalFormat::hdf5, {triangle("B", 0, 1), triangle("C", 0, 1)});
+  signal::write_signals(b, signal::SignalFormat::hdf5, {triangle("B", 1.3, 0.8), triangle("C", 0, -1)});
+  PccRequest q;
+  q.files = {a, b};
+  q.arrival_relative = 0.02;
+  const auto r = pcc_report(q);
+  const auto& B = r.summary["sensors"][0];
+  EXPECT_NEAR(B["arrival_a_us"].get<double>(), 10.2, 1e-9);
+  EXPECT_NEAR(B["arrival_b_us"].get<double>(), 11.5, 1e-9);
+  EXPECT_NEAR(B["arrival_shift_us"].get<double>(), 1.3, 1e-9);
+  EXPECT_NEAR(B["peak_ratio"].get<double>(), 0.8, 1e-12);
+  const auto& C = r.summary["sensors"][1];
+  EXPECT_NEAR(C["arrival_shift_us"].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(C["peak_ratio"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(r.summary["mean_abs_arrival_shift_us"].get<double>(), 0.65, 1e-9);
+  EXPECT_NEAR(r.summary["mean_abs_peak_error"].get<double>(), 0.1, 1e-12);
+  EXPECT_NE(r.csv.find(",10.2000,11.5000,1.3000,0.8000\n"), std::string::npos) << r.csv;  // printed to 4 decimals
+  EXPECT_NE(r.csv.find("\nmean,"), std::string::npos);
+  EXPECT_NE(r.csv.find(",,,0.6500,0.1000\n"), std::string::npos) << r.csv;
+  // Without the option the table keeps its six columns.
+  q.arrival_relative.reset();
+  EXPECT_EQ(pcc_report(q).csv.substr(0, pcc_report(q).csv.find('\n')), "sensor,pcc_signal,pcc_envelope,samples,from_us,to_us");
+  q.arrival_relative = 1.5;
+  EXPECT_THROW(pcc_report(q), InputError);
+}

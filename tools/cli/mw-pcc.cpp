@@ -64,6 +64,12 @@ int main(int argc, char** argv) {
       ->expected(2)
       ->capture_default_str();
   cli.add_option("--title", q.title, "Title of the figures (default: the two files)");
+  cli.add_option("--arrival-relative", q.arrival_relative,
+                 "Also compare arrivals and peaks, sensor by sensor: the arrival is the first crossing of this fraction "
+                 "(e.g. 0.02) of the record's peak deviation from its first two samples (a simulated record starts at rest; "
+                 "for a lab record's onset use mw-upv), the peak the largest |x| in the window; adds arrival_a_us, "
+                 "arrival_b_us, arrival_shift_us (b - a) and peak_ratio (b / a) to the table, their mean |shift| and "
+                 "mean |ratio - 1| to the mean row and the JSON (mean_abs_arrival_shift_us, mean_abs_peak_error)");
   app::add_out_option(cli, out, "the JSON result (every coefficient at full precision: it reads back bit for bit)");
 
   return tool.run(argc, argv, [&](app::Run& run) {

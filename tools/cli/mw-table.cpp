@@ -2,11 +2,7 @@
 // concrete paper's Table 3 gathered from one mw-pcc table per frequency, a speed-against-error
 // table from the DEM run summaries, a gnuplot figure of any tables, a table as Markdown, and the
 // rod paper's findings checked on the rod's tables - so every number and figure of the report
-// has a provenance run whose inputs are the files it came from.
-//
-//   mw-table gather --key-name f_kHz --row 100=pcc-100kHz.csv --row 150=pcc-150kHz.csv
-//       --where sensor=mean --column pcc_mean=pcc_signal --csv table3.csv
-//   mw-table plot table3.csv --x f_kHz --y pcc_mean --out table3.png
+// has a provenance run whose inputs are the files it came from. Examples: --help.
 #include "mesowave/app/tool.hpp"
 #include "mesowave/io/table_gather.hpp"
 #include "mesowave/io/text_table.hpp"
@@ -38,7 +34,7 @@ int main(int argc, char** argv) {
   auto* gather = cli.add_subcommand("gather", "One row per run: values picked from the runs' CSV, JSON or TOML files");
   std::string key_name = "key", where_text, fem_column;
   int significant_digits = 0;
-  std::vector<std::string> row_texts, column_texts, join_texts;
+  std::vector<std::string> row_texts, column_texts, join_texts, pareto;
   fs::path csv_out;
   gather->add_option("--key-name", key_name, "Header of the key column (e.g. f_kHz; A,B: two, and rows A_VALUE,B_VALUE=FILE)")->capture_default_str();
   gather->add_option("--row", row_texts, "KEY=FILE[,FILE...]: one row; repeatable, in order")->required();
@@ -58,6 +54,7 @@ int main(int argc, char** argv) {
   gather->add_option("--decimals", decimals_texts, "NAME=N: print column NAME with N decimals (0.150); repeatable");
   gather->add_option("--round", round_texts, "NAME=N: round column NAME to N decimals, shortest text (0.15); repeatable");
   gather->add_option("--join-as", join_as_texts, "KEY=KEY: a row key as the --join tables spell it; repeatable");
+  gather->add_option("--pareto", pareto, "min:COLUMN,max:COLUMN: a last column 'pareto', yes on the rows no other row beats in both (e.g. min:wall_s,max:pcc)")->delimiter(',')->expected(2);
 
   auto* markdown = cli.add_subcommand("markdown", "A CSV table as a Markdown table");
   io::MarkdownTableOptions mo;
@@ -105,6 +102,7 @@ int main(int argc, char** argv) {
     if (gather->parsed()) {
       io::GatherSpec spec;
       spec.key_name = key_name;
+      spec.pareto = pareto;
       if (!where_text.empty()) spec.where = io::parse_row_selector(where_text);
       if (significant_digits > 0) spec.significant_digits = significant_digits;
       for (const auto& r : row_texts) spec.rows.push_back(io::parse_gather_row(r));

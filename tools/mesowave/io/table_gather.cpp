@@ -226,6 +226,39 @@ double aggregate_of(std::vector<double> values, ColumnSource::Aggregate aggregat
 }
 }  // namespace
 
+namespace {
+
+// GatherSpec::pareto: each objective as (column, +1 to minimise or -1 to maximise); then the front.
+void mark_pareto_front(CsvTable& table, const std::vector<std::string>& objectives) {
+  if (objectives.size() != 2)
+    throw InputError("--pareto takes two objectives, min:COLUMN,max:COLUMN (got " + std::to_string(objectives.size()) + ")");
+  std::vector<std::pair<std::size_t, double>> axes;
+  for (const auto& o : objectives) {
+    const auto colon = o.find(':');
+    const std::string sense = o.substr(0, colon == std::string::npos ? 0 : colon);
+    if (sense != "min" && sense != "max")
+      throw InputError("--pareto objective '" + o + "' must be min:COLUMN or max:COLUMN");
+    axes.push_back({table.column(o.substr(colon + 1)), sense == "min" ? 1.0 : -1.0});
+  }
+  const auto value = [&](std::size_t r, int k) { return as_number(table.rows[r][axes[k].first]); };
+  table.header.push_back("pareto");
+  const std::size_t n = table.rows.size();
+  std::vector<bool> front(n, false);
+  for (std::size_t r = 0; r < n; ++r) {
+    if (!value(r, 0) || !value(r, 1)) continue;
+    bool beaten = false;
+    for (std::size_t q = 0; q < n && !beaten; ++q) {
+      if (q == r || !value(q, 0) || !value(q, 1)) continue;
+      const double d0 = axes[0].second * (*value(q, 0) - *value(r, 0)), d1 = axes[1].second * (*value(q, 1) - *value(r, 1));
+      beaten = d0 <= 0 && d1 <= 0 && (d0 < 0 || d1 < 0);
+    }
+    front[r] = !beaten;
+  }
+  for (std::size_t r = 0; r < n; ++r) table.rows[r].push_back(front[r] ? "yes" : "");
+}
+
+}  // namespace
+
 CsvTable gather_rows(const GatherSpec& spec) {
   if (spec.rows.empty()) throw InputError("a gathered table needs at least one row");
   if (spec.columns.empty()) throw InputError("a gathered table needs at least one column");
@@ -278,6 +311,7 @@ CsvTable gather_rows(const GatherSpec& spec) {
     for (auto& row : table.rows)
       if (!row[col].empty()) row[col] = apply_column_format(row[col], format, "column " + name);
   }
+  if (!spec.pareto.empty()) mark_pareto_front(table, spec.pareto);
   return table;
 }
 

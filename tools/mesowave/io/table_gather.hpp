@@ -71,6 +71,10 @@ struct GatherSpec {
   std::vector<TableJoin> joins;        ///< applied in order after the rows (join_columns on the first key column)
   std::map<std::string, std::string> join_keys;  ///< a row key as the joined tables spell it ("FEM 1 mm" -> "FEM")
   std::map<std::string, ColumnFormat> formats;   ///< by output column (a joined one too)
+  /// Two objectives "min:COLUMN" or "max:COLUMN" (wall time and PCC, say): adds a last column
+  /// `pareto`, "yes" on every row no other row matches or beats in both and beats in one (the
+  /// cheapest model for an accuracy), empty on the others and on rows missing either number.
+  std::vector<std::string> pareto;
 
   /// Every file the table is made of: the rows' in order, then the joins'.
   std::vector<std::filesystem::path> files() const;

@@ -11,6 +11,7 @@
 #include "mesowave/signal/signal_csv.hpp"
 #include "mesowave/io/text_table.hpp"
 #include "mesowave/signal/envelope.hpp"
+#include "mesowave/signal/time_of_flight.hpp"
 
 namespace mesowave::signal {
 namespace fs = std::filesystem;
@@ -79,6 +80,26 @@ std::string spectra_table(const CorrelationTable& table, std::span<const Signal>
   return io::to_csv(header, rows);
 }
 
+// Where and how large: the arrival (PccRequest::arrival_relative) and the peak |x| of one record
+// in the compared window [begin_s, end_s] (unset: the record's end).
+struct ArrivalAndPeak {
+  double arrival_s = 0, peak = 0;
+};
+
+ArrivalAndPeak arrival_and_peak(const Signal& s, double relative, const std::optional<double>& begin_s,
+                                const std::optional<double>& end_s) {
+  ThresholdOptions t;
+  t.noise_begin_s = s.t0_s;
+  t.noise_end_s = s.t0_s + 1.5 * s.dt_s;  // the first two samples (the fewest the picker takes): the rest level
+  t.factor = 1;  // times their RMS, 0 at rest: the relative level decides
+  t.relative = relative;
+  ArrivalAndPeak r;
+  r.arrival_s = threshold_pick(s, t).time_s;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if ((!begin_s || s.time(i) >= *begin_s) && (!end_s || s.time(i) <= *end_s)) r.peak = std::max(r.peak, std::abs(s.samples[i]));
+  return r;
+}
+
 }  // namespace
 
 PccReport pcc_report(const PccRequest& request) {
@@ -110,14 +131,21 @@ PccReport pcc_report(const PccRequest& request) {
   if (q.spectra || q.plot_spectra) options.spectra = SpectrumOptions{options.envelope.detrend, options.envelope.padding};
   if (q.max_frequency_kHz) require_positive("--max-frequency-kHz", *q.max_frequency_kHz, "kHz");
 
+  if (q.arrival_relative && !(*q.arrival_relative > 0 && *q.arrival_relative < 1))
+    throw InputError("--arrival-relative (" + format_number(*q.arrival_relative) +
+                     ") must lie in (0, 1): the arrival is where a record first reaches that fraction of its peak");
+
   PccReport r;
   const auto a = read_set(q.a, r.inputs), b = read_set(q.b, r.inputs);
   r.table = correlate_sensors(a, b, options, q.sensors);
   const auto& table = r.table;
 
-  const std::vector<std::string> header = {"sensor", "pcc_signal", "pcc_envelope", "samples", "from_us", "to_us"};
+  std::vector<std::string> header = {"sensor", "pcc_signal", "pcc_envelope", "samples", "from_us", "to_us"};
+  if (q.arrival_relative)
+    for (const char* h : {"arrival_a_us", "arrival_b_us", "arrival_shift_us", "peak_ratio"}) header.push_back(h);
   std::vector<std::vector<std::string>> rows;
   json per_sensor = json::array();
+  double sum_abs_shift_s = 0, sum_abs_peak_error = 0;
   for (const auto& s : table.sensors) {
     rows.push_back({s.sensor, format_fixed(s.pcc_signal, 4), format_fixed(s.pcc_envelope, 4),
                     std::to_string(s.compared.count), format_number(s.compared.t0_s / units::us),
@@ -127,13 +155,38 @@ PccReport pcc_report(const PccRequest& request) {
                           {"to_us", s.compared.end_s() / units::us}});
     r.metrics.push_back({"pcc_" + s.sensor, s.pcc_signal, ""});
     r.metrics.push_back({"pcc_envelope_" + s.sensor, s.pcc_envelope, ""});
+    if (!q.arrival_relative) continue;
+    const auto pa = arrival_and_peak(find(a, s.sensor), *q.arrival_relative, options.begin_s, options.end_s);
+    const auto pb = arrival_and_peak(find(b, s.sensor), *q.arrival_relative, options.begin_s, options.end_s);
+    if (!(pa.peak > 0)) throw InputError("sensor " + s.sensor + " of the first set is zero in the compared window: it has no peak to compare");
+    const double shift_s = pb.arrival_s - pa.arrival_s, ratio = pb.peak / pa.peak;
+    sum_abs_shift_s += std::abs(shift_s), sum_abs_peak_error += std::abs(ratio - 1);
+    for (const double us : {pa.arrival_s, pb.arrival_s, shift_s}) rows.back().push_back(format_fixed(us / units::us, 4));
+    rows.back().push_back(format_fixed(ratio, 4));
+    per_sensor.back().update({{"arrival_a_us", pa.arrival_s / units::us}, {"arrival_b_us", pb.arrival_s / units::us},
+                              {"arrival_shift_us", shift_s / units::us}, {"peak_a", pa.peak}, {"peak_b", pb.peak},
+                              {"peak_ratio", ratio}});
+    r.metrics.push_back({"arrival_shift_" + s.sensor, shift_s / units::us, "us"});
+    r.metrics.push_back({"peak_ratio_" + s.sensor, ratio, ""});
   }
   rows.push_back({"mean", format_fixed(table.mean_pcc_signal, 4), format_fixed(table.mean_pcc_envelope, 4), "", "", ""});
   r.metrics.push_back({"pcc_mean", table.mean_pcc_signal, ""});
   r.metrics.push_back({"pcc_envelope_mean", table.mean_pcc_envelope, ""});
+  const double n = double(table.sensors.size());
+  const double mean_abs_shift_us = sum_abs_shift_s / n / units::us, mean_abs_peak_error = sum_abs_peak_error / n;
+  if (q.arrival_relative) {
+    // The mean row holds the means of |shift| and |ratio - 1| (signs would cancel between sensors).
+    for (const auto& text : {std::string(), std::string(), format_fixed(mean_abs_shift_us, 4), format_fixed(mean_abs_peak_error, 4)})
+      rows.back().push_back(text);
+    r.metrics.push_back({"arrival_shift_mean_abs", mean_abs_shift_us, "us"});
+    r.metrics.push_back({"peak_error_mean_abs", mean_abs_peak_error, ""});
+  }
 
   r.text = "a: " + join(q.a) + "\nb: " + join(q.b) + "\n" + io::format_text_table(header, rows) +
-           "resampling: " + table.resampling + "\nenvelopes: " + table.envelope_method + "\n";
+           "resampling: " + table.resampling + "\nenvelopes: " + table.envelope_method + "\n" +
+           (q.arrival_relative ? "arrivals: first crossing of " + format_number(*q.arrival_relative) +
+                                     " x the record's peak; mean row: mean |shift|, mean |peak ratio - 1|\n"
+                               : "");
   std::string unmatched;
   for (const auto& n : table.only_in_a) unmatched += (unmatched.empty() ? "" : ", ") + n + " (only in a)";
   for (const auto& n : table.only_in_b) unmatched += (unmatched.empty() ? "" : ", ") + n + " (only in b)";
@@ -191,6 +244,11 @@ PccReport pcc_report(const PccRequest& request) {
   j["only_in_a"] = table.only_in_a;
   j["only_in_b"] = table.only_in_b;
   j["excitation_left_out"] = table.excitation_left_out;
+  if (q.arrival_relative) {
+    j["arrival_relative"] = *q.arrival_relative;
+    j["mean_abs_arrival_shift_us"] = mean_abs_shift_us;
+    j["mean_abs_peak_error"] = mean_abs_peak_error;
+  }
   return r;
 }
 

@@ -30,6 +30,12 @@ struct PccRequest {
   std::vector<double> plot_window_us;          ///< from,to of the signal and envelope figures; empty: all
   std::vector<std::string> labels = {"a", "b"};  ///< legend names of the two sets
   std::string title;                           ///< "" for the two sets' files
+  /// Also each sensor's arrival in both sets and their peaks (the speed-against-error study's other
+  /// error measures beside the PCC): the arrival is the first crossing of this fraction of the
+  /// record's peak |x - x_0| (x_0 the mean of its first two samples: a simulated record starts at rest; a lab
+  /// record's onset wants mw-upv's pickers), refined linearly between samples (signal::threshold_pick);
+  /// the peak is the largest |x| in the compared window. Unset: neither is computed.
+  std::optional<double> arrival_relative;
 };
 
 struct PccReport {
@@ -38,6 +44,7 @@ struct PccReport {
   std::vector<prov::MetricRecord> metrics;  ///< pcc_<sensor>, pcc_envelope_<sensor>, the means
   std::string text;                          ///< the table as printed, the resampling and what was not compared
   std::string csv;                           ///< sensor, pcc_signal, pcc_envelope, samples, from_us, to_us; 'mean'
+                                             ///< (and arrival_a_us, arrival_b_us, arrival_shift_us, peak_ratio)
   std::string spectra_csv;                   ///< f_kHz, '<sensor> a [unit]', '<sensor> b [unit]' (if asked)
   std::optional<io::SensorPanelsFigure> signals, envelopes, spectra;  ///< the figures asked for
   nlohmann::ordered_json summary;
