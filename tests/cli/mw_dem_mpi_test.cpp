@@ -13,6 +13,8 @@
 
 #include "dem/test_packings.hpp"
 #include "mesowave/dem/packing/packing_file.hpp"
+#include "mesowave/prov/database.hpp"
+#include "mesowave/prov/queries.hpp"
 #include "mesowave/signal/signal_file.hpp"
 #include "support/run_tool.hpp"
 
@@ -36,6 +38,14 @@ test::ToolResult mpirun(int ranks, const std::vector<std::string>& args, const s
   std::vector<std::string> environment = kMpiEnv;
   environment.insert(environment.end(), env.begin(), env.end());
   return test::run_command("/usr/bin/timeout", command, environment);
+}
+
+// The runs a database holds (mw-dem records on rank 0, or a failure only another rank saw there).
+std::vector<prov::RunRecord> recorded_runs(const std::filesystem::path& db_path) {
+  const auto db = prov::Database::open(db_path);
+  std::vector<prov::RunRecord> runs;
+  for (const auto& r : prov::list_runs(db)) runs.push_back(prov::load_run(db, r.id));
+  return runs;
 }
 
 std::size_t occurrences(const std::string& text, const std::string& what) {
@@ -179,9 +189,14 @@ TEST(MwDemMpi, CheckpointsAndMoreRanksThanSphereBlocksAreRefusedInOneLine) {
   write_block(dir);
   test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
   const auto ckpt = mpirun(2, {"run", (dir / "wave.toml").string(), "--quiet", "--signals", (dir / "s.h5").string(),
-                               "--checkpoint", (dir / "c.h5").string()});
+                               "--checkpoint", (dir / "c.h5").string(), "--db", (dir / "p.sqlite").string()});
   EXPECT_EQ(ckpt.exit_status, 1);
   EXPECT_NE(ckpt.err.find("--checkpoint"), std::string::npos) << ckpt.err;
+  // Every rank fails alike: one record, rank 0's.
+  const auto ckpt_runs = recorded_runs(dir / "p.sqlite");
+  ASSERT_EQ(ckpt_runs.size(), 1u);
+  EXPECT_EQ(ckpt_runs[0].exit_status, 1);
+  EXPECT_EQ(ckpt_runs[0].params.value("mpi_rank", -1), 0);
   const auto many = mpirun(5, {"run", (dir / "wave.toml").string(), "--quiet", "--model", "linear", "--signals",
                                (dir / "s.h5").string()});
   EXPECT_EQ(many.exit_status, 1);
@@ -201,7 +216,8 @@ TEST(MwDemMpi, ABondWhosePartnerIsNotAGhostEndsEveryRankWithOneLineNamingTheBond
   test::TempDir dir;
   write_block(dir);
   test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
-  const auto r = mpirun(2, {"run", (dir / "wave.toml").string(), "--quiet", "--model", "linear", "--signals", (dir / "s.h5").string()},
+  const auto r = mpirun(2, {"run", (dir / "wave.toml").string(), "--quiet", "--model", "linear", "--signals", (dir / "s.h5").string(),
+                            "--db", (dir / "p.sqlite").string()},
                         {"MESOWAVE_TEST_GHOST_LAYER_MM=0.001", "MESOWAVE_TEST_GHOST_LAYER_RANK=1"});
   EXPECT_EQ(r.exit_status, 1) << r.err;  // not 124: rank 0 did not hang
   EXPECT_NE(r.err.find("error: rank 1 of 2: bond "), std::string::npos) << r.err;
@@ -209,4 +225,10 @@ TEST(MwDemMpi, ABondWhosePartnerIsNotAGhostEndsEveryRankWithOneLineNamingTheBond
   EXPECT_NE(r.err.find("ghost layer 0.001 mm"), std::string::npos) << r.err;
   EXPECT_EQ(occurrences(r.err, "error: "), 1u) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "s.h5"));
+  // Only rank 1 saw it, so rank 1 recorded it: what was tried is in mw-prov runs.
+  const auto runs = recorded_runs(dir / "p.sqlite");
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0].exit_status, 1);
+  EXPECT_NE(runs[0].error.find("rank 1 of 2: bond "), std::string::npos) << runs[0].error;
+  EXPECT_EQ(runs[0].params.value("mpi_rank", -1), 1);
 }

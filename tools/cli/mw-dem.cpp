@@ -52,7 +52,10 @@ int main(int argc, char** argv) {
       "(a virtual compression test: E_glob, nu_glob, peak stress)\n"
       "  mw-dem run pipeline/concrete-cube/scenes/cube-compression.toml --unbreakable-bonds --modulus-levels-MPa 5,16.67 "
       "--static --signals e.h5   (its elastic part as one static solve of the linearised network)");
-  if (!mpi->is_root()) tool.set_records_runs(false);  // one record of the run: rank 0's
+  if (!mpi->is_root()) {  // one record of the run: rank 0's, or a failure rank 0 did not see
+    tool.set_records_runs(false);
+    tool.set_failure_recording([&] { return mpi->outlive_root_report(); });
+  }
   tool.set_error_report([&](const std::string& line, int status) { mpi->report_error(line, status); });
   auto& cli = tool.cli();
   cli.require_subcommand(1);
@@ -74,6 +77,7 @@ int main(int argc, char** argv) {
 
   return tool.run(argc, argv, [&](app::Run& run) {
     const std::string threads_reason = use_threads(threads).reason;
+    if (mpi->size() > 1) run.param("mpi_rank", mpi->rank());
     if (info->parsed()) return dem::run_info_command(values, run, threads_reason);
     dem::run_run_command(values, run, threads_reason, mpi->domain());
   });

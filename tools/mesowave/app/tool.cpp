@@ -370,6 +370,12 @@ int Tool::run(int argc, char** argv, const std::function<void(Run&)>& body) {
     record.error = "internal error: " + one_line(e.what());
   }
 
+  if (!db && record.exit_status != 0 && failure_gate_ && !db_path_.empty() && failure_gate_()) {
+    try {
+      db.emplace(prov::Database::open(db_path_));
+    } catch (const std::exception&) {  // the failure itself is still reported below
+    }
+  }
   if (db) {
     const auto usage = resource_usage();
     record.version = source_version();

@@ -88,6 +88,11 @@ public:
 
   /// Tools that only read the database (mw-prov) do not record themselves.
   void set_records_runs(bool records) { records_runs_ = records; }
+  /// A process that leaves the record of its runs to another (mw-dem's ranks but rank 0) may be
+  /// the only one to see a failure (its own part of the model): after a failure `gate` is asked,
+  /// and if it returns true this process records the failed run itself. mw-dem's gate waits for
+  /// rank 0 to record and end a failure every rank meets, so that such a one is recorded once.
+  void set_failure_recording(std::function<bool()> gate) { failure_gate_ = std::move(gate); }
   /// Where the one-line error goes (default: "error: LINE" on stderr) with the exit status it
   /// ends with. mw-dem on several MPI ranks hands it to the MPI session, which prints it once
   /// and ends every rank (a failure on one rank must not leave the others waiting).
@@ -106,6 +111,7 @@ private:
   std::vector<std::string> from_ignore_;
   bool records_runs_ = true;
   std::function<void(const std::string&, int)> error_report_;
+  std::function<bool()> failure_gate_;
   void report_error(const std::string& line, int status) const;
 };
 

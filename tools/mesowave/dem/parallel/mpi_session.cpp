@@ -83,13 +83,19 @@ MpiSession::MpiSession(int& argc, char**& argv) {
 void MpiSession::report_error(const std::string& line, int status) {
 #ifdef MESOWAVE_HAVE_MPI
   if (size_ > 1) {
-    if (rank_ != 0) std::this_thread::sleep_for(std::chrono::seconds(3));
+    if (rank_ != 0 && !waited_) std::this_thread::sleep_for(std::chrono::seconds(3));
     std::cerr << "error: " << line << std::endl;
     MPI_Abort(MPI_COMM_WORLD, status);
   }
 #endif
   (void)status;
   std::cerr << "error: " << line << "\n";
+}
+
+bool MpiSession::outlive_root_report() {
+  if (size_ > 1 && rank_ != 0 && !waited_) std::this_thread::sleep_for(std::chrono::seconds(3));
+  waited_ = true;
+  return true;
 }
 
 MpiSession::~MpiSession() {

@@ -33,12 +33,17 @@ public:
   /// waits a moment, so that a failure every rank meets (a bad input) is printed by rank 0,
   /// whose abort ends the others before they print, and one of its own is still printed.
   void report_error(const std::string& line, int status);
+  /// Before a rank but 0 records its own failure (app::Tool::set_failure_recording): waits the
+  /// moment report_error would, so that a failure rank 0 meets too is recorded and ended by
+  /// rank 0 first (its abort ends this rank inside the wait). True if this rank is still running.
+  bool outlive_root_report();
   /// The ranks as the engine takes them (SimulationOptions::domain); nullptr for a single rank.
   Domain* domain() { return domain_.get(); }
 
 private:
   int rank_ = 0, size_ = 1;
   bool initialised_ = false;
+  bool waited_ = false;  ///< outlive_root_report waited already: report_error does not again
   std::unique_ptr<Domain> domain_;
 };
 
