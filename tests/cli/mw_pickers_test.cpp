@@ -7,6 +7,7 @@
 #include "cli/labraw_support.hpp"
 #include "mesowave/lab/picker_study.hpp"
 #include "mesowave/lab/transducer_record.hpp"
+#include "mesowave/lab/upv_waveform.hpp"
 #include "support/run_tool.hpp"
 
 using namespace mesowave;
@@ -126,6 +127,19 @@ TEST(MwUpv, MatchedFilterOnAPointForceRecord) {
   EXPECT_NEAR(j["t_s_us"].get<double>(), t_s_us, 0.05 / 120e3 * 1e6);
   EXPECT_DOUBLE_EQ(j["t_s_pick_bias_periods"].get<double>(),
                    table_median("S", "xcorr-after-p", j["t_s_pick_snr_dB"].get<double>(), true));
+  // The same wavelet as a record (--s-wavelet FILE: F' sampled from its first motion at t = 0,
+  // after 2 us of zeros before it, which are not the wavelet) gives the same pick to a sample.
+  const auto rate = lab::burst_wavelet(120e3, 2, true, 50e-9);
+  std::string wcsv = "t_us,v\n";
+  for (int i = -40; i < 0; ++i) wcsv += std::to_string(i * 0.05) + ",0\n";
+  for (std::size_t i = 0; i < rate.size(); ++i) wcsv += std::to_string(double(i) * 0.05) + "," + std::to_string(rate.samples[i] * 1e-6) + "\n";
+  write_file(dir / "wavelet.csv", wcsv);
+  auto file_args = base;
+  file_args.push_back("--s-wavelet");
+  file_args.push_back((dir / "wavelet.csv").string());
+  const auto from_file = run_tool("mw-upv", file_args);
+  ASSERT_EQ(from_file.exit_status, 0) << from_file.err;
+  EXPECT_NEAR(parse_json(from_file.out)["t_s_us"].get<double>(), j["t_s_us"].get<double>(), 0.05);
   const auto aic = run_tool("mw-upv", base);
   ASSERT_EQ(aic.exit_status, 0) << aic.err;
   EXPECT_GT(parse_json(aic.out)["t_s_us"].get<double>() - t_s_us, 0.3 / 120e3 * 1e6);
