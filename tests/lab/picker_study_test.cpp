@@ -273,8 +273,8 @@ TEST(PickerStudy, PointForceRecordsGiveTheDemsLateAicPick) {
   // Stokes' point force in the DEM's UPV geometry (50 mm, 120 kHz two-cycle S burst, both
   // calibrations' speeds): the near field rises under the S burst's first, small half-cycle
   // and mw-upv's AIC chain places the onset at the first large half-cycle, late by about the
-  // time the load's rate F' takes to its first zero crossing: 0.375 periods of 120 kHz, as the
-  // DEM's records are (3.2-3.5 us, docs/cube-150.md). The matched filter with F' (mw-upv
+  // time the load's rate F' takes to its first zero crossing (0.357 periods of 120 kHz; the
+  // picks 0.376 at 30 dB), as the DEM's records are (3.2-3.4 us, 0.39-0.41 periods, docs/cube-150.md). The matched filter with F' (mw-upv
   // --s-wavelet-burst-kHz 120,2 --s-wavelet-derivative) finds the onset within 0.02 periods.
   const auto rows = run_point_force_study({30.0}, 10);
   const auto& aic = row(rows, "S", "aic-after-p", 30);
