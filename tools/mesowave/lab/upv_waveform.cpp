@@ -199,17 +199,22 @@ signal::Pick matched_filter_pick(const signal::Signal& s, const OnsetOptions& o,
     const double d_w = signal::envelope_peak_pick(w, env).time_s;
     end = onset.locator.time_s - 0.5 * d_w;
   }
+  const auto empty = [&] {
+    return InputError("record " + s.name + ": the xcorr window " + us(onset.search_begin_s) + " .. " + us(end) +
+                      " is empty (the envelope peak minus half the wavelet's rise): the wavelet is longer than the arrival");
+  };
+  if (!(end > onset.search_begin_s)) throw empty();
   const auto last = std::min(s.size() - 1, std::size_t(std::floor((std::min(end, onset.search_end_s) - s.t0_s) / s.dt_s + 1e-9)));
-  if (!(end > onset.search_begin_s) || last < first_index + 2)
-    throw InputError("record " + s.name + ": the xcorr window " + us(onset.search_begin_s) + " .. " + us(end) +
-                     " is empty (the envelope peak minus half the wavelet's rise): the wavelet is longer than the arrival");
+  if (last < first_index + 2) throw empty();
   const auto c = [&](std::size_t L) {
     double sum = 0;
     for (std::size_t k = 0; k < w.size() && L + k < s.size(); ++k) sum += (s.samples[L + k] - mean) * w.samples[k];
     return sum;
   };
-  std::vector<double> cs(last + 2 - first_index);
-  for (std::size_t L = first_index; L <= last + 1 && L < s.size(); ++L) cs[L - first_index] = c(L);
+  // c over the window and one lag past it (where the record has one), so that its last lag can
+  // be told a local maximum or not.
+  std::vector<double> cs;
+  for (std::size_t L = first_index; L <= std::min(last + 1, s.size() - 1); ++L) cs.push_back(c(L));
   // The largest local maximum inside the window: a largest c on the window's end is the slope
   // up to a later match (a period late), on its start the tail of an earlier one.
   std::size_t best = 0;
