@@ -1,10 +1,14 @@
 // The synthetic transducer records of the picker study against closed forms:
 // the pair response is the convolution of two damped resonators, its envelope
 // peaks after the stated rise, the noise has the stated SNR, and a noiseless
-// threshold crossing is the root of the closed-form front.
+// threshold crossing is the root of the closed-form front; the slow rise is its Hann lobe;
+// the point force's records are Stokes' far field far away, and its near field has the
+// signs of (3 g_i g_j - d_ij) and respects causality.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "mesowave/core/error.hpp"
@@ -145,4 +149,104 @@ TEST(TransducerRecord, NoiselessThresholdCrossingIsTheFrontsRoot) {
       }
       EXPECT_NEAR(pick.pick.time_s - spec.onset_s, lo, 0.05 * spec.sample_interval_s) << f << " Hz, rise " << rise;
     }
+}
+
+TEST(TransducerRecord, SlowRiseIsTheStatedHannLobe) {
+  // The record with a slow rise minus the same record without it (same seed) is
+  // fraction x sin^2(pi (t - t_0) / D) on [t_0, t_0 + D], t_0 = onset - lead / f, and 0
+  // elsewhere; a fraction of 0 leaves the record as it was, bit for bit.
+  TransducerRecordSpec spec;
+  spec.snr_dB = 30;
+  const auto plain = transducer_record(spec);
+  spec.slow_rise_fraction = 0;
+  EXPECT_EQ(transducer_record(spec).samples, plain.samples);
+  spec.slow_rise_fraction = 0.1;
+  const auto risen = transducer_record(spec);
+  const double t0 = spec.onset_s - 0.35 / spec.frequency_Hz, D = 1.0 / spec.frequency_Hz;
+  double largest = 0;
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    const double t = plain.time(i), d = risen.samples[i] - plain.samples[i];
+    const double q = t >= t0 && t <= t0 + D ? std::sin(pi * (t - t0) / D) : 0.0;
+    EXPECT_NEAR(d, 0.1 * q * q, 1e-12) << t * 1e6 << " us";
+    largest = std::max(largest, d);
+  }
+  EXPECT_NEAR(largest, 0.1, 1e-3);  // its peak at t_0 + D / 2, to a sample
+  spec.slow_rise_fraction = 1.5;
+  EXPECT_THROW(transducer_record(spec), InputError);
+}
+
+TEST(TransducerRecord, PointForceFarFieldIsTheLoadsRate) {
+  // Far from the force (r = 20 m), the transverse record is F'(t - r/beta) normalised, and
+  // the axial one F'(t - r/alpha): Stokes' far field (Aki & Richards Eq. 4.23). What is left:
+  // the near field, at most ~ 2 alpha / (w r) = 4.9e-4 of the far field (axial; beta / (w r)
+  // transverse), the record's peak taken at 50 ns samples, (w dt)^2 / 2 = 7e-4 under F''s, and
+  // the reference's 1 ns grid, w x 0.5 ns = 3.8e-4: 1.6e-3 in all, under the bound 2e-3.
+  const double f = 120e3, alpha = 3703.0, beta = 2355.0, r = 20.0;
+  const auto rate = burst_wavelet(f, 2, true, 1e-9);
+  double rate_peak = 0;
+  for (double v : rate.samples) rate_peak = std::max(rate_peak, std::abs(v));
+  for (bool axial : {false, true}) {
+    PointForceRecordSpec spec;
+    spec.distance_m = r;
+    spec.p_speed_m_s = alpha;
+    spec.s_speed_m_s = beta;
+    spec.axial = axial;
+    spec.snr_dB = std::numeric_limits<double>::infinity();
+    spec.duration_s = 8.6e-3;
+    const auto rec = point_force_record(spec);
+    const double arrival = r / (axial ? alpha : beta);
+    double worst = 0;
+    for (std::size_t i = 0; i < rec.size(); ++i) {
+      const double tau = rec.time(i) - arrival;
+      const auto k = std::llround(tau / 1e-9);
+      const double expected = k > 0 && std::size_t(k) < rate.size() ? rate.samples[std::size_t(k)] / rate_peak : 0.0;
+      if (!axial || tau > -1e-6) worst = std::max(worst, std::abs(rec.samples[i] - expected));
+    }
+    EXPECT_LT(worst, 2e-3) << (axial ? "axial" : "transverse");
+  }
+}
+
+TEST(TransducerRecord, PointForceNearFieldIsTheIntegralInClosedForm) {
+  // Before r/alpha the records are exactly 0 (causality). Between r/alpha and r/beta the
+  // transverse record is the near field alone, -1/r^3 d/dt int_{r/alpha}^{t} tau F(t - tau) dtau,
+  // which integration by parts turns into -1/r^3 (t_a F(u) + int_0^u F), u = t - t_a (F(0) = 0),
+  // with the Hann burst's integral in closed form:
+  //   int_0^u F = (1 - cos w u) / (2 w) - [(1 - cos (1 + 1/n) w u) / ((1 + 1/n) w)
+  //                                        + (1 - cos (1 - 1/n) w u) / ((1 - 1/n) w)] / 4.
+  // The record (Simpson's rule on tau F'(t - tau)) is normalised by its peak: the ratio to the
+  // closed form must be one positive constant (to Simpson's ~1e-6 and the sampling).
+  PointForceRecordSpec spec;
+  spec.p_speed_m_s = 3703.0;
+  spec.s_speed_m_s = 2355.0;
+  spec.snr_dB = std::numeric_limits<double>::infinity();
+  const auto transverse = point_force_record(spec);
+  spec.axial = true;
+  const auto axial = point_force_record(spec);
+  const double r = 0.05, ta = r / 3703.0, tb = r / 2355.0, w = 2 * pi * 120e3, n = 2;
+  const auto F = [&](double u) { return std::sin(w * u) * 0.5 * (1 - std::cos(w * u / n)); };
+  const auto G = [&](double u) {
+    return (1 - std::cos(w * u)) / (2 * w) - ((1 - std::cos((1 + 1 / n) * w * u)) / ((1 + 1 / n) * w) +
+                                              (1 - std::cos((1 - 1 / n) * w * u)) / ((1 - 1 / n) * w)) / 4;
+  };
+  std::vector<std::pair<double, double>> pairs;  // (record, closed form)
+  double largest = 0;
+  for (std::size_t i = 0; i < transverse.size(); ++i) {
+    const double t = transverse.time(i);
+    if (t < ta) {
+      EXPECT_EQ(transverse.samples[i], 0.0) << t * 1e6;
+      EXPECT_EQ(axial.samples[i], 0.0) << t * 1e6;
+    } else if (t < tb) {
+      const double closed = -(ta * F(t - ta) + G(t - ta)) / (r * r * r);
+      pairs.push_back({transverse.samples[i], closed});
+      largest = std::max(largest, std::abs(closed));
+    }
+  }
+  double lo = 1e300, hi = -1e300;
+  for (const auto& [rec, closed] : pairs)
+    if (std::abs(closed) > 0.01 * largest) lo = std::min(lo, rec / closed), hi = std::max(hi, rec / closed);
+  ASSERT_GT(pairs.size(), 100u);
+  EXPECT_GT(lo, 0.0);
+  EXPECT_NEAR(hi / lo, 1.0, 1e-4);
+  spec.s_speed_m_s = 4000;  // beta > alpha
+  EXPECT_THROW(point_force_record(spec), InputError);
 }

@@ -16,14 +16,14 @@ int main(int argc, char** argv) {
   app::Tool tool("mw-pickers",
                  "The picker table: median and MAD of (pick - true onset), in periods of the transducer frequency, "
                  "for mw-upv's pickers (threshold, aic, envelope-peak on the P and S channels; aic-after-p and "
-                 "envelope-peak-after-p, mw-upv's S chain) on synthetic record pairs (lab/transducer_record.hpp: a "
+                 "envelope-peak-after-p, mw-upv's S chain; xcorr-after-p, its matched filter) on synthetic record pairs (lab/transducer_record.hpp: a "
                  "pair of damped resonators, rise over --rise-periods, P precursor at --precursor-fractions of the S "
-                 "peak, noise at --snr-dB; t_p = 35 us, t_s = 55.1 us as the paper's cube). Prints the Markdown table "
+                 "peak, a slow rise under the S onset at --slow-rise-fractions of it, noise at --snr-dB; t_p = 35 us, t_s = 55.1 us as the paper's cube). Prints the Markdown table "
                  "of docs/upv-pickers.md.\n\n"
                  "  mw-pickers --cells cells.csv --out table.json");
   lab::PickerStudyGrid grid;
   std::vector<double> frequency_kHz{30, 45, 60};
-  std::filesystem::path out, cells, table_cpp, plot;
+  std::filesystem::path out, cells, table_cpp, plot, point_force_csv;
   auto& cli = tool.cli();
   cli.add_option("--seeds", grid.seeds, "Noise realisations per grid point")->capture_default_str();
   cli.add_option("--frequency-kHz", frequency_kHz, "Transducer frequencies [kHz]")->delimiter(',')->capture_default_str();
@@ -31,7 +31,12 @@ int main(int argc, char** argv) {
   cli.add_option("--precursor-fractions", grid.precursor_fraction, "P precursor peak / S peak on the S channel")
       ->delimiter(',')->capture_default_str();
   cli.add_option("--snr-dB", grid.snr_dB, "Signal-to-noise ratios [dB]")->delimiter(',')->capture_default_str();
+  cli.add_option("--slow-rise-fractions", grid.slow_rise_fraction, "Slow rise under the S onset, peak / S peak "
+                 "(a Hann lobe from 0.35 periods before the onset, one period long; 0 must be among them: the pooled "
+                 "rows)")->delimiter(',')->capture_default_str();
   cli.add_option("--cells", cells, "CSV of every grid point's statistics")->type_name("FILE");
+  cli.add_option("--point-force-csv", point_force_csv, "CSV of the point-force rows (with each row's first refusal)")
+      ->type_name("FILE");
   cli.add_option("--table-cpp", table_cpp, "The pooled rows as C++ initialisers (lab/picker_bias_table.inc)")
       ->type_name("FILE");
   cli.add_option("--plot", plot, "PNG of an example pair (40 kHz, rise 1.5 periods, precursor 0.3, 30 dB) with the "
@@ -42,11 +47,17 @@ int main(int argc, char** argv) {
     grid.frequency_Hz.clear();
     for (double f : frequency_kHz) grid.frequency_Hz.push_back(f * units::kHz);
     const auto study = lab::run_picker_study(grid);
+    const auto point_force = lab::run_point_force_study(grid.snr_dB, grid.seeds);
     run.out() << lab::picker_bias_markdown(study.pooled) << "\nBy precursor fraction (S channel):\n\n";
     std::vector<lab::PickerBiasRow> s_rows;
     for (const auto& r : study.by_fraction)
       if (r.arrival == "S") s_rows.push_back(r);
-    run.out() << lab::picker_bias_markdown(s_rows);
+    run.out() << lab::picker_bias_markdown(s_rows) << "\nBy slow rise under the S onset (S channel):\n\n"
+              << lab::picker_bias_markdown(study.by_slow_rise)
+              << "\nPoint-force records (Stokes' solution, the DEM's UPV geometry: 50 mm, 120 kHz S, 162 kHz P; "
+                 "both calibrations' speeds; periods of 120 kHz):\n\n"
+              << lab::picker_bias_markdown(point_force);
+    if (!point_force_csv.empty()) run.write_text(point_force_csv, lab::picker_bias_csv(point_force));
     if (!cells.empty()) run.write_text(cells, lab::picker_bias_csv(study.cells));
     if (!plot.empty())
       io::run_gnuplot(lab::picker_example_figure_script(lab::study_record_pair(grid, 40e3, 1.5, 0.3, 30, 1),

@@ -32,7 +32,9 @@ int main(int argc, char** argv) {
                  "--lowpass-kHz at about 4x the transducer frequency removes the noise that hides the first "
                  "half-cycle. The S wave is "
                  "searched from 1.3 t_p on (v_s < v_p / sqrt(2) for nu > 0), past the P energy S transducers also "
-                 "receive, up to 3.5 t_p (nu < 0.45), located by its envelope peak. Without a density only velocities "
+                 "receive, up to 3.5 t_p (nu < 0.45), located by its envelope peak; with --s-wavelet or --s-wavelet-burst-kHz its "
+                 "onset is the matched filter's (xcorr: the lag where the record best matches the known wavelet), "
+                 "which a slow rise under the burst's first half-cycle does not pull to the first large one. Without a density only velocities "
                  "and nu_d are given. Each pick states its picker's remaining bias (t_p_pick_bias_us: the median of pick - true "
                  "onset on synthetic records at the record's SNR, docs/upv-pickers.md; not subtracted).\n\n"
                  "  mw-upv --path-mm 150 --t-p-us 35 --t-s-us 55.1 --density-kg-m3 2129.56\n"
@@ -60,6 +62,16 @@ int main(int argc, char** argv) {
       ->group(g)->capture_default_str();
   cli.add_option("--s-locator", m.s_locator, "threshold or envelope-peak (default for S after a P pick)")
       ->group(g)->check(CLI::IsMember({"threshold", "envelope-peak"}));
+  cli.add_option("--s-wavelet", m.s_wavelet, "S onset by the matched filter (picker xcorr) with this wavelet record "
+                 "(CSV or WAV, the S record's column options; its first motion at its t = 0): a face-to-face record "
+                 "of the S transducers, or a model's load as its receiver records it. For an S burst that rides on "
+                 "a slow rise (a near field), where AIC picks its first large half-cycle (docs/upv-pickers.md)")
+      ->group(g)->type_name("FILE");
+  cli.add_option("--s-wavelet-burst-kHz", m.s_wavelet_burst, "The same with a Hann burst as the wavelet: frequency "
+                 "[kHz],cycles (a model's load, e.g. 120,2 for upv50-s.toml)")
+      ->group(g)->delimiter(',')->expected(2)->type_name("KHZ,CYCLES");
+  cli.add_flag("--s-wavelet-derivative", m.s_wavelet_derivative, "Match the burst's time derivative: the record is "
+               "the velocity of a force load (the DEM's UPV records)")->group(g);
   cli.add_option("--min-arrival-snr", m.pick.min_arrival_snr, "The located arrival's RMS over --aic-after-us must be at "
                                                              "least this many times the noise RMS")
       ->group(g)->capture_default_str();

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <tuple>
 
 #include "mesowave/core/error.hpp"
@@ -12,6 +13,7 @@
 #include "mesowave/io/gnuplot.hpp"
 #include "mesowave/lab/transducer_record.hpp"
 #include "mesowave/signal/envelope.hpp"
+#include "mesowave/signal/noise.hpp"
 #include "mesowave/signal/spectrum.hpp"
 
 namespace mesowave::lab {
@@ -28,6 +30,15 @@ Onset after_p(const UpvRecordPair& r, const std::string& picker) {
   const double t_p = with_picker(r.p_channel, "aic").pick.time_s;  // mw-upv picks t_p first, by its default
   OnsetOptions o = shear_wave_options(OnsetOptions{}, t_p, 0.0);
   o.picker = picker;
+  return pick_onset(r.s_channel, o);
+}
+
+// mw-upv --s-wavelet: the matched filter in mw-upv's S window with the transducer response.
+Onset xcorr_after_p(const UpvRecordPair& r) {
+  const double t_p = with_picker(r.p_channel, "aic").pick.time_s;
+  OnsetOptions o = shear_wave_options(OnsetOptions{}, t_p, 0.0);
+  o.picker = "xcorr";
+  o.wavelet = r.s_wavelet;
   return pick_onset(r.s_channel, o);
 }
 
@@ -87,7 +98,7 @@ bool is_flagged(const Onset& onset) {
 }
 
 UpvRecordPair study_record_pair(const PickerStudyGrid& grid, double f, double rise, double fraction, double snr,
-                                std::uint64_t seed) {
+                                std::uint64_t seed, double slow_rise) {
   TransducerRecordSpec spec;
   spec.frequency_Hz = f;
   spec.rise_periods = rise;
@@ -103,8 +114,16 @@ UpvRecordPair study_record_pair(const PickerStudyGrid& grid, double f, double ri
   spec.precursor_onset_s = grid.t_p_s;
   spec.precursor_fraction = fraction;
   spec.seed = 2 * seed;
+  spec.slow_rise_fraction = slow_rise;
   pair.s_channel = transducer_record(spec);
   pair.s_channel.name = "S channel";
+  const double a = transducer_decay_rate(f, rise);
+  pair.s_wavelet = pair.s_channel;
+  pair.s_wavelet.name = "S wavelet";
+  pair.s_wavelet.t0_s = 0;
+  pair.s_wavelet.samples.clear();
+  for (double t = 0; t <= (4 * rise + 1) / f; t += spec.sample_interval_s)
+    pair.s_wavelet.samples.push_back(transducer_response(t, f, a));
   return pair;
 }
 
@@ -133,6 +152,8 @@ const std::vector<PickerStrategy>& picker_strategies() {
                  [](const UpvRecordPair& r) { return after_p(r, "envelope-peak"); }});
     s.push_back({"S", "envelope-aic-after-p", "AIC on the envelope in mw-upv's S window (the envelope's second rise)",
                  [](const UpvRecordPair& r) { return envelope_aic_after_p(r); }});
+    s.push_back({"S", "xcorr-after-p", "the matched filter with the transducer response in mw-upv's S window (--s-wavelet)",
+                 [](const UpvRecordPair& r) { return xcorr_after_p(r); }});
     return s;
   }();
   return strategies;
@@ -142,17 +163,24 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
   if (grid.seeds < 1 || grid.seeds > 999) throw InputError("picker study: seeds must be 1 .. 999");
   const auto& strategies = picker_strategies();
   struct Point {
-    double f, rise, fraction, snr;
+    double f, rise, fraction, snr, slow = 0;
   };
+  if (std::find(grid.slow_rise_fraction.begin(), grid.slow_rise_fraction.end(), 0.0) == grid.slow_rise_fraction.end())
+    throw InputError("picker study: the slow-rise fractions must include 0 (the pooled rows' records)");
+  // Slow rise outermost, 0 first: the points without one come in the order they had before it existed.
+  std::vector<double> slows{0.0};
+  for (double v : grid.slow_rise_fraction)
+    if (v != 0 && std::find(slows.begin(), slows.end(), v) == slows.end()) slows.push_back(v);
   std::vector<Point> points;
-  for (double snr : grid.snr_dB)
-    for (double f : grid.frequency_Hz)
-      for (double rise : grid.rise_periods)
-        for (double fraction : grid.precursor_fraction) points.push_back({f, rise, fraction, snr});
+  for (double slow : slows)
+    for (double snr : grid.snr_dB)
+      for (double f : grid.frequency_Hz)
+        for (double rise : grid.rise_periods)
+          for (double fraction : grid.precursor_fraction) points.push_back({f, rise, fraction, snr, slow});
 
   // Bad grid values are refused here, before the parallel loop (an exception
   // must not leave an OpenMP region).
-  for (const auto& p : points) study_record_pair(grid, p.f, p.rise, p.fraction, p.snr, 1);
+  for (const auto& p : points) study_record_pair(grid, p.f, p.rise, p.fraction, p.snr, 1, p.slow);
   // errors[point][strategy]: one slot each, filled in any order, read in order.
   std::vector<std::vector<Errors>> errors(points.size(), std::vector<Errors>(strategies.size()));
   std::vector<std::vector<PickerBiasRow>> cells(points.size(), std::vector<PickerBiasRow>(strategies.size()));
@@ -163,6 +191,7 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
       auto& row = cells[std::size_t(c)][k];
       row.arrival = strategies[k].arrival, row.picker = strategies[k].name;
       row.snr_dB = p.snr, row.frequency_Hz = p.f, row.rise_periods = p.rise, row.precursor_fraction = p.fraction;
+      row.slow_rise_fraction = p.slow;
     }
     for (std::size_t i = 0; i < grid.seeds; ++i) {
       // The seed follows from the point's values, not its place in the grid,
@@ -170,10 +199,12 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
       const std::uint64_t point_key = std::uint64_t(std::llround(p.f / 100)) * 1000003u +
                                       std::uint64_t(std::llround(p.rise * 100)) * 10007u +
                                       std::uint64_t(std::llround(p.fraction * 100)) * 101u +
-                                      std::uint64_t(std::llround(p.snr));
+                                      std::uint64_t(std::llround(p.snr)) +
+                                      std::uint64_t(std::llround(p.slow * 1000)) * 100000007u;  // 0: the seeds before it
       const std::uint64_t seed = point_key * 1000u + i + 1;
-      const auto pair = study_record_pair(grid, p.f, p.rise, p.fraction, p.snr, seed);
+      const auto pair = study_record_pair(grid, p.f, p.rise, p.fraction, p.snr, seed, p.slow);
       for (std::size_t k = 0; k < strategies.size(); ++k) {
+        if (p.slow != 0 && strategies[k].arrival == "P") continue;  // the P channel has no slow rise
         auto& row = cells[std::size_t(c)][k];
         ++row.records;
         try {
@@ -193,15 +224,19 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
   }
 
   PickerStudy study;
-  for (const auto& c : cells) study.cells.insert(study.cells.end(), c.begin(), c.end());
-  // Pools strategy k over the grid points at key's SNR (and precursor fraction).
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    for (std::size_t k = 0; k < strategies.size(); ++k)
+      if (points[c].slow == 0 || strategies[k].arrival != "P") study.cells.push_back(cells[c][k]);
+  // Pools strategy k over the grid points at key's SNR and slow rise (and precursor fraction).
   const auto pool = [&](std::size_t k, const Point& key, bool by_fraction) {
     PickerBiasRow row;
     row.arrival = strategies[k].arrival, row.picker = strategies[k].name, row.snr_dB = key.snr;
+    row.slow_rise_fraction = key.slow;
     if (by_fraction) row.precursor_fraction = key.fraction;
     Errors pooled;
     for (std::size_t c = 0; c < points.size(); ++c) {
-      if (points[c].snr != key.snr || (by_fraction && points[c].fraction != key.fraction)) continue;
+      if (points[c].snr != key.snr || points[c].slow != key.slow || (by_fraction && points[c].fraction != key.fraction))
+        continue;
       row.records += cells[c][k].records;
       row.refused += cells[c][k].refused;
       row.flagged += cells[c][k].flagged;
@@ -217,18 +252,122 @@ PickerStudy run_picker_study(const PickerStudyGrid& grid) {
       for (double fraction : grid.precursor_fraction)
         study.by_fraction.push_back(pool(k, Point{0, 0, fraction, snr}, true));
     }
+  for (std::size_t k = 0; k < strategies.size(); ++k)
+    if (strategies[k].arrival == "S")
+      for (double snr : grid.snr_dB)
+        for (double slow : slows) study.by_slow_rise.push_back(pool(k, Point{0, 0, 0, snr, slow}, false));
   return study;
+}
+
+namespace {
+
+// The noiseless pair of one calibration (the noise is added per seed: the same samples as
+// point_force_record with that SNR and seed, which adds it to the normalised record).
+UpvRecordPair clean_point_force_pair(int calibration) {
+  // Continuum speeds of docs/cube-150.md's two calibrations: v_p = sqrt(M / rho), v_s = sqrt(G / rho).
+  const double E = calibration == 0 ? 27.413e9 : 36.671e9, nu = calibration == 0 ? 0.16001 : 0.1618, rho = 2129.56;
+  const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  PointForceRecordSpec spec;
+  spec.p_speed_m_s = std::sqrt(M / rho);
+  spec.s_speed_m_s = std::sqrt(G / rho);
+  spec.snr_dB = std::numeric_limits<double>::infinity();
+  UpvRecordPair pair;
+  pair.t_p_s = spec.distance_m / spec.p_speed_m_s;
+  pair.t_s_s = spec.distance_m / spec.s_speed_m_s;
+  spec.axial = true;
+  spec.frequency_Hz = 162e3;  // upv50-p.toml
+  pair.p_channel = point_force_record(spec);
+  pair.p_channel.name = "P channel";
+  spec.axial = false;
+  spec.frequency_Hz = 120e3;  // upv50-s.toml
+  pair.s_channel = point_force_record(spec);
+  pair.s_channel.name = "S channel";
+  pair.s_wavelet = burst_wavelet(120e3, 2, true, spec.sample_interval_s);
+  return pair;
+}
+
+}  // namespace
+
+UpvRecordPair point_force_pair(int calibration, double snr, std::uint64_t seed) {
+  if (calibration != 0 && calibration != 1) throw InputError("point-force pair: calibration is 0 (static) or 1 (dynamic)");
+  static const std::array<UpvRecordPair, 2> clean{clean_point_force_pair(0), clean_point_force_pair(1)};
+  UpvRecordPair pair = clean[std::size_t(calibration)];
+  const double rms = std::pow(10.0, -snr / 20);
+  for (auto [record, s] : {std::pair{&pair.p_channel, 2 * seed - 1}, std::pair{&pair.s_channel, 2 * seed}}) {
+    const auto noise = signal::gaussian_noise(record->size(), rms, s);
+    for (std::size_t i = 0; i < record->size(); ++i) record->samples[i] += noise[i];
+  }
+  return pair;
+}
+
+std::vector<PickerBiasRow> run_point_force_study(const std::vector<double>& snr_dB, std::size_t seeds) {
+  if (seeds < 1 || seeds > 999) throw InputError("point-force study: seeds must be 1 .. 999");
+  const auto& strategies = picker_strategies();
+  std::vector<std::size_t> s_strategies;
+  for (std::size_t k = 0; k < strategies.size(); ++k)
+    if (strategies[k].arrival == "S") s_strategies.push_back(k);
+  const std::size_t per_snr = 2 * seeds;
+  // errors[snr][record][strategy], refused/flagged marks; filled in any order, read in order.
+  struct Slot {
+    bool picked = false, flagged = false;
+    double error = 0;
+    std::string refusal;
+  };
+  std::vector<std::vector<Slot>> slots(snr_dB.size() * per_snr, std::vector<Slot>(s_strategies.size()));
+#pragma omp parallel for schedule(dynamic)
+  for (std::ptrdiff_t j = 0; j < std::ptrdiff_t(slots.size()); ++j) {
+    const std::size_t q = std::size_t(j) / per_snr, m = std::size_t(j) % per_snr;
+    const int calibration = int(m / seeds);
+    const std::uint64_t seed = (std::uint64_t(std::llround(snr_dB[q])) * 10 + std::uint64_t(calibration)) * 1000u + m % seeds + 1;
+    const auto pair = point_force_pair(calibration, snr_dB[q], seed);
+    for (std::size_t k = 0; k < s_strategies.size(); ++k) {
+      auto& slot = slots[std::size_t(j)][k];
+      try {
+        const Onset onset = strategies[s_strategies[k]].pick(pair);
+        slot.picked = true;
+        slot.flagged = is_flagged(onset);
+        slot.error = (onset.pick.time_s - pair.t_s_s) * 120e3;
+      } catch (const InputError& e) {
+        slot.refusal = e.what();
+      }
+    }
+  }
+  std::vector<PickerBiasRow> rows;
+  for (std::size_t k = 0; k < s_strategies.size(); ++k)
+    for (std::size_t q = 0; q < snr_dB.size(); ++q) {
+      PickerBiasRow row;
+      row.arrival = "S", row.picker = strategies[s_strategies[k]].name, row.snr_dB = snr_dB[q], row.frequency_Hz = 120e3;
+      Errors errors;
+      for (std::size_t m = 0; m < per_snr; ++m) {
+        const auto& slot = slots[q * per_snr + m][k];
+        ++row.records;
+        if (!slot.picked) {
+          if (!row.refused++) row.first_refusal = slot.refusal;
+          continue;
+        }
+        row.flagged += slot.flagged;
+        errors.all.push_back(slot.error);
+        if (!slot.flagged) errors.unflagged.push_back(slot.error);
+      }
+      fill_statistics(row, errors);
+      rows.push_back(row);
+    }
+  return rows;
 }
 
 std::string picker_bias_markdown(const std::vector<PickerBiasRow>& rows) {
   const bool fractions = std::any_of(rows.begin(), rows.end(), [](const auto& r) { return r.precursor_fraction > 0; });
+  const bool slow = std::any_of(rows.begin(), rows.end(), [](const auto& r) { return r.slow_rise_fraction > 0; });
   std::string s = std::string("| arrival | picker | SNR [dB] |") + (fractions ? " precursor |" : "") +
+                  (slow ? " slow rise |" : "") +
                   " records | refused | flagged | median [periods] | MAD [periods] | p90 abs [periods] |"
                   " unflagged: median | MAD | p90 abs |\n" +
-                  "|---|---|---|" + (fractions ? "---|" : "") + "---|---|---|---|---|---|---|---|---|\n";
+                  "|---|---|---|" + (fractions ? "---|" : "") + (slow ? "---|" : "") +
+                  "---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
     s += "| " + r.arrival + " | " + r.picker + " | " + format_fixed(r.snr_dB, 0) + " | ";
     if (fractions) s += format_fixed(r.precursor_fraction, 1) + " | ";
+    if (slow) s += format_fixed(r.slow_rise_fraction, 2) + " | ";
     s += std::to_string(r.records) + " | " + std::to_string(r.refused) + " | " + std::to_string(r.flagged) + " | ";
     s += r.records > r.refused ? format_fixed(r.median_periods, 3) + " | " + format_fixed(r.mad_periods, 3) + " | " +
                                      format_fixed(r.p90_abs_periods, 3) + " | "
@@ -245,12 +384,14 @@ std::string picker_bias_csv(const std::vector<PickerBiasRow>& rows) {
   std::vector<std::vector<std::string>> out;
   for (const auto& r : rows)
     out.push_back({r.arrival, r.picker, format_fixed(r.snr_dB, 1), format_fixed(r.frequency_Hz / 1e3, 1),
-                   format_fixed(r.rise_periods, 2), format_fixed(r.precursor_fraction, 2), std::to_string(r.records),
+                   format_fixed(r.rise_periods, 2), format_fixed(r.precursor_fraction, 2),
+                   format_fixed(r.slow_rise_fraction, 2), std::to_string(r.records),
                    std::to_string(r.refused), std::to_string(r.flagged), format_fixed(r.median_periods, 4),
                    format_fixed(r.mad_periods, 4), format_fixed(r.p90_abs_periods, 4),
                    format_fixed(r.unflagged_median_periods, 4), format_fixed(r.unflagged_mad_periods, 4),
                    format_fixed(r.unflagged_p90_abs_periods, 4), r.first_refusal});
-  return io::to_csv({"arrival", "picker", "snr_dB", "frequency_kHz", "rise_periods", "precursor_fraction", "records",
+  return io::to_csv({"arrival", "picker", "snr_dB", "frequency_kHz", "rise_periods", "precursor_fraction",
+                     "slow_rise_fraction", "records",
                      "refused", "flagged", "median_error_periods", "mad_error_periods", "p90_abs_error_periods", "unflagged_median_error_periods",
                      "unflagged_mad_error_periods", "unflagged_p90_abs_error_periods", "first_refusal"},
                     out);
@@ -312,10 +453,10 @@ std::string picker_bias_cpp(const std::vector<PickerBiasRow>& rows) {
   std::string s;
   char buf[512];
   for (const auto& r : rows) {
-    std::snprintf(buf, sizeof buf, "{\"%s\", \"%s\", %.17g, %.17g, %.17g, %.17g, %zu, %zu, %zu, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g, {}},\n",
+    std::snprintf(buf, sizeof buf, "{\"%s\", \"%s\", %.17g, %.17g, %.17g, %.17g, %zu, %zu, %zu, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g, {}, %.17g},\n",
                   r.arrival.c_str(), r.picker.c_str(), r.snr_dB, r.frequency_Hz, r.rise_periods, r.precursor_fraction,
                   r.records, r.refused, r.flagged, r.median_periods, r.mad_periods, r.p90_abs_periods,
-                  r.unflagged_median_periods, r.unflagged_mad_periods, r.unflagged_p90_abs_periods);
+                  r.unflagged_median_periods, r.unflagged_mad_periods, r.unflagged_p90_abs_periods, r.slow_rise_fraction);
     s += buf;
   }
   return s;

@@ -27,6 +27,15 @@
 //   S envelope-aic-after-p              AIC on the Hilbert envelope in that window: the
 //                                       envelope's second rise, where the S energy adds
 //                                       to the precursor's.
+//   S xcorr-after-p                     the matched filter (picker xcorr, upv_waveform.hpp) in
+//                                       mw-upv's S window, the wavelet the noiseless transducer
+//                                       response (what a face-to-face record of the pair gives):
+//                                       mw-upv --s-wavelet.
+//
+// Slow rise (TransducerRecordSpec::slow_rise_fraction): the S channel's records are also made
+// with a low-frequency lobe under the S onset at each of slow_rise_fraction (the DEM's S
+// records carry one). The pooled and by-fraction rows are over the records without it (0),
+// as the table was before it existed; by_slow_rise holds the S strategies per slow rise.
 //
 // measured_picker_bias() is the table docs/upv-pickers.md prints, as
 // `mw-pickers study` computed it with the default grid; a test recomputes it.
@@ -50,6 +59,9 @@ struct PickerStudyGrid {
   /// 20-40 dB as issue 19 asks, and 60 dB: real records are often cleaner
   /// (peak over pre-trigger RMS: 80 dB on TU Graz's cement paste).
   std::vector<double> snr_dB{20, 30, 40, 60};
+  /// Slow rise under the S onset, peak / S peak (lab/transducer_record.hpp); must hold 0 (the
+  /// pooled rows). 0.1: above the DEM records' 0.06-0.07 (docs/upv-pickers.md).
+  std::vector<double> slow_rise_fraction{0, 0.1};
   std::size_t seeds = 30;     ///< noise realisations per grid point (1 .. 999)
   double t_p_s = 35e-6;       ///< paper Section 3.2
   double t_s_s = 55.1e-6;     ///< paper Section 3.2
@@ -59,13 +71,17 @@ struct PickerStudyGrid {
 /// channel (S arrival with the P precursor), same transducer response.
 struct UpvRecordPair {
   signal::Signal p_channel, s_channel;
+  /// The S channel's transducer response alone, noiseless, from its first motion (t0 = 0) over
+  /// 4 rise times + 1 period: the wavelet of the matched filter (a face-to-face record).
+  signal::Signal s_wavelet;
   double t_p_s = 0, t_s_s = 0;  ///< the true onsets
 };
 
 /// Seeds: P channel 2 seed - 1, S channel 2 seed (independent noise); the
 /// study's seed is a function of the grid point's values and the realisation.
 UpvRecordPair study_record_pair(const PickerStudyGrid& grid, double frequency_Hz, double rise_periods,
-                                double precursor_fraction, double snr_dB, std::uint64_t seed);
+                                double precursor_fraction, double snr_dB, std::uint64_t seed,
+                                double slow_rise_fraction = 0);
 
 struct PickerStrategy {
   std::string arrival;      ///< "P" | "S"
@@ -89,6 +105,7 @@ struct PickerBiasRow {
   /// with an unflagged pick can expect); 0 where every pick was flagged.
   double unflagged_median_periods = 0, unflagged_mad_periods = 0, unflagged_p90_abs_periods = 0;
   std::string first_refusal;   ///< why the first refused record was refused
+  double slow_rise_fraction = 0;  ///< the S channel's slow rise (0: none, and in pooled rows)
 };
 
 /// Whether mw-upv warned about the pick (the envelope peak's standing note
@@ -98,12 +115,25 @@ bool is_flagged(const Onset& onset);
 struct PickerStudy {
   std::vector<PickerBiasRow> pooled;  ///< per strategy and SNR, over frequency, rise and precursor
   std::vector<PickerBiasRow> by_fraction;  ///< per strategy, SNR and precursor fraction, over frequency and rise
-  std::vector<PickerBiasRow> cells;   ///< per strategy and grid point
+  std::vector<PickerBiasRow> by_slow_rise;  ///< S strategies per SNR and slow rise, over frequency, rise and precursor
+  std::vector<PickerBiasRow> cells;   ///< per strategy and grid point (P strategies at slow rise 0 only)
 };
 
 /// Runs every strategy on every record of the grid (deterministic: the same
 /// numbers for any thread count).
 PickerStudy run_picker_study(const PickerStudyGrid& grid);
+
+/// The DEM's UPV geometry without its lattice (lab/transducer_record.hpp, point_force_record):
+/// a 162 kHz axial P record and a 120 kHz transverse S record, two cycles each, 50 mm from a
+/// point force, with the continuum speeds of both calibrations (static: E 27.413 GPa, nu 0.16001;
+/// dynamic: E 36.671 GPa, nu 0.1618; rho 2129.56 kg/m3), `seeds` noise realisations per SNR and
+/// speed pair. Every S strategy (the S wavelet: the load's time derivative, mw-upv
+/// --s-wavelet-burst-kHz 120,2 --s-wavelet-derivative); errors in periods of 120 kHz, pooled over
+/// the two speed pairs (frequency_Hz = 120e3 in the rows).
+std::vector<PickerBiasRow> run_point_force_study(const std::vector<double>& snr_dB, std::size_t seeds);
+
+/// The pair of run_point_force_study for one speed pair (0 static, 1 dynamic), SNR and seed.
+UpvRecordPair point_force_pair(int calibration, double snr_dB, std::uint64_t seed);
 
 /// Rows as a Markdown table: arrival, picker, SNR (and the precursor fraction
 /// where the rows have one), records, refused, flagged, median, MAD, p90.

@@ -18,7 +18,38 @@ std::vector<PickedTrace> UpvReport::traces() const {
   return traces;
 }
 
+namespace {
+
+// The S record's matched filter (picker xcorr) with the stated wavelet.
+OnsetOptions with_s_wavelet(OnsetOptions o, const UpvMeasurement& m, WaveformReadOptions read) {
+  if (!m.s_wavelet.empty() && !m.s_wavelet_burst.empty())
+    throw InputError("give either --s-wavelet or --s-wavelet-burst-kHz, not both");
+  o.picker = "xcorr";
+  if (!m.s_wavelet_burst.empty()) {
+    if (m.s_wavelet_burst.size() != 2 || !(m.s_wavelet_burst[0] > 0) || !(m.s_wavelet_burst[1] > 0))
+      throw InputError("--s-wavelet-burst-kHz needs a positive frequency [kHz] and cycle count, e.g. 120,2");
+    const double f = m.s_wavelet_burst[0] * units::kHz;
+    o.wavelet = burst_wavelet(f, m.s_wavelet_burst[1], m.s_wavelet_derivative, 1 / (200 * f));  // resampled onto the record
+    return o;
+  }
+  read.added_noise_snr_dB.reset();  // the wavelet is the reference, as recorded
+  auto w = read_upv_waveform(m.s_wavelet, read, "S wavelet (" + m.s_wavelet.filename().string() + ")");
+  // Its first motion is at its t = 0: the samples before it are not the wavelet.
+  const auto first = std::size_t(std::max(0.0, std::ceil(-w.t0_s / w.dt_s - 1e-9)));
+  if (first + 4 > w.size()) throw InputError("--s-wavelet " + m.s_wavelet.string() + ": fewer than 4 samples at t >= 0");
+  w.samples.erase(w.samples.begin(), w.samples.begin() + std::ptrdiff_t(first));
+  w.t0_s = 0;
+  o.wavelet = std::move(w);
+  return o;
+}
+
+}  // namespace
+
 UpvReport upv_report(const UpvMeasurement& m) {
+  if ((!m.s_wavelet.empty() || !m.s_wavelet_burst.empty()) && m.s_wave.empty())
+    throw InputError("--s-wavelet and --s-wavelet-burst-kHz pick the S record: give --s-wave");
+  if (m.s_wavelet_derivative && m.s_wavelet_burst.empty())
+    throw InputError("--s-wavelet-derivative applies to --s-wavelet-burst-kHz (a record given by --s-wavelet is matched as it is)");
   require_positive("--path-mm", m.path_mm, "mm");
   if (m.t_p_us && !m.p_wave.empty()) throw InputError("give either --t-p-us or --p-wave, not both");
   if (m.t_s_us && !m.s_wave.empty()) throw InputError("give either --t-s-us or --s-wave, not both");
@@ -50,6 +81,7 @@ UpvReport upv_report(const UpvMeasurement& m) {
     if (m.s_lowpass_kHz) o.lowpass_Hz = *m.s_lowpass_kHz * units::kHz;
     if (t_p_us) o = shear_wave_options(o, *t_p_us * units::us + d, d);
     if (!m.s_locator.empty()) o.locator = m.s_locator;
+    if (!m.s_wavelet.empty() || !m.s_wavelet_burst.empty()) o = with_s_wavelet(o, m, read);
     auto s_read = read;  // a second record: noise of its own, as a lab's two records have
     ++s_read.added_noise_seed;
     report.s_pick = pick_time_of_flight(m.s_wave, s_read, o, d, "S wave");

@@ -30,6 +30,13 @@ struct UpvMeasurement {
   double crosstalk_us = 0, aic_after_us = 10, lowpass_kHz = 0;
   std::optional<double> s_lowpass_kHz;
   std::vector<double> noise_us, p_search_us, s_search_us;  ///< begin,end windows (empty: default)
+  /// The S onset by the matched filter (picker xcorr, upv_waveform.hpp) with a wavelet: a record
+  /// (its first motion at its t = 0; read with the S record's column options) ...
+  std::filesystem::path s_wavelet;
+  /// ... or a Hann burst load: frequency [kHz], cycles; with s_wavelet_derivative its time
+  /// derivative (the velocity a receiver records of a force load).
+  std::vector<double> s_wavelet_burst;
+  bool s_wavelet_derivative = false;
 };
 
 struct UpvReport {

@@ -16,7 +16,9 @@
 #include "mesowave/lab/compression_record.hpp"
 #include "mesowave/signal/envelope.hpp"
 #include "mesowave/signal/fft.hpp"
+#include "mesowave/signal/hann_burst.hpp"
 #include "mesowave/signal/noise.hpp"
+#include "mesowave/signal/resample.hpp"
 #include "mesowave/signal/validate.hpp"
 
 namespace mesowave::lab {
@@ -175,6 +177,73 @@ double rms(const std::vector<double>& x, std::size_t a, std::size_t b) {
   return std::sqrt(v / double(b - a));
 }
 
+// The matched filter of the header: the lag L (record time of the wavelet's first sample)
+// in [search start, end] where c(L) = sum_k (x[L + k] - noise mean) w[k] has its largest local
+// maximum, refined by a parabola through c at L - 1, L, L + 1.
+signal::Pick matched_filter_pick(const signal::Signal& s, const OnsetOptions& o, const Onset& onset, std::size_t i0,
+                                 std::size_t i1, std::size_t first_index) {
+  signal::Signal w = *o.wavelet;
+  w.t0_s = 0;
+  if (std::abs(w.dt_s - s.dt_s) > 1e-9 * s.dt_s) {
+    const auto n = std::size_t(std::floor(w.dt_s * double(w.size() - 1) / s.dt_s)) + 1;
+    w = signal::resample(w, signal::TimeBase{0.0, s.dt_s, n}, signal::Interpolation::linear);
+  }
+  double mean = 0;
+  for (std::size_t i = i0; i < i1; ++i) mean += s.samples[i] / double(i1 - i0);
+  // Located by the envelope peak, the onset comes before it by about the wavelet's own rise to
+  // its envelope peak, d_w: lags up to the peak - d_w / 2 only, so that the record's later,
+  // longer cycles (a smeared or reverberating burst) do not win one period late.
+  double end = onset.locator.time_s + o.aic_after_s;
+  if (o.locator == "envelope-peak") {
+    signal::EnvelopePeakOptions env;
+    const double d_w = signal::envelope_peak_pick(w, env).time_s;
+    end = onset.locator.time_s - 0.5 * d_w;
+  }
+  const auto empty = [&] {
+    return InputError("record " + s.name + ": the xcorr window " + us(onset.search_begin_s) + " .. " + us(end) +
+                      " is empty (the envelope peak minus half the wavelet's rise): the wavelet is longer than the arrival");
+  };
+  if (!(end > onset.search_begin_s)) throw empty();
+  const auto last = std::min(s.size() - 1, std::size_t(std::floor((std::min(end, onset.search_end_s) - s.t0_s) / s.dt_s + 1e-9)));
+  if (last < first_index + 2) throw empty();
+  const auto c = [&](std::size_t L) {
+    double sum = 0;
+    for (std::size_t k = 0; k < w.size() && L + k < s.size(); ++k) sum += (s.samples[L + k] - mean) * w.samples[k];
+    return sum;
+  };
+  // c over the window and one lag past it (where the record has one), so that its last lag can
+  // be told a local maximum or not.
+  std::vector<double> cs;
+  for (std::size_t L = first_index; L <= std::min(last + 1, s.size() - 1); ++L) cs.push_back(c(L));
+  // The largest local maximum inside the window: a largest c on the window's end is the slope
+  // up to a later match (a period late), on its start the tail of an earlier one.
+  std::size_t best = 0;
+  for (std::size_t L = first_index + 1; L <= last && L + 1 < first_index + cs.size(); ++L) {
+    const double v = cs[L - first_index];
+    if (v >= cs[L - 1 - first_index] && v > cs[L + 1 - first_index] && (best == 0 || v > cs[best - first_index])) best = L;
+  }
+  if (best == 0 || !(cs[best - first_index] > 0))
+    throw InputError("record " + s.name + ": the record does not match the wavelet anywhere in " +
+                     us(onset.search_begin_s) + " .. " + us(end) +
+                     " (no positive peak of the correlation): the onset lies before the window, or another wavelet, or its polarity is inverted");
+  double shift = 0;
+  {
+    const double a = cs[best - 1 - first_index], b = cs[best - first_index], d = cs[best + 1 - first_index];
+    const double den = a - 2 * b + d;
+    if (den < 0) shift = std::clamp(0.5 * (a - d) / den, -0.5, 0.5);
+  }
+  double norm_x = 0, norm_w = 0;
+  for (std::size_t k = 0; k < w.size() && best + k < s.size(); ++k)
+    norm_x += (s.samples[best + k] - mean) * (s.samples[best + k] - mean), norm_w += w.samples[k] * w.samples[k];
+  signal::Pick p;
+  p.method = "xcorr";
+  p.time_s = s.time(best) + shift * s.dt_s;
+  p.index = shift > 0 ? best + 1 : best;
+  p.quality = cs[best - first_index] / std::max(std::sqrt(norm_x * norm_w), 1e-300);
+  p.quality_name = "xcorr_coefficient";
+  return p;
+}
+
 }  // namespace
 
 signal::Signal read_upv_waveform(const std::filesystem::path& path, const WaveformReadOptions& options,
@@ -212,11 +281,33 @@ signal::Signal lowpass(const signal::Signal& record, double corner_Hz) {
   return out;
 }
 
+signal::Signal burst_wavelet(double f, double cycles, bool derivative, double dt) {
+  if (!(f > 0) || !(cycles > 0) || !(dt > 0) || !std::isfinite(f) || !std::isfinite(cycles))
+    throw InputError("burst wavelet: frequency, cycles and sample interval must be positive");
+  const signal::HannBurst burst(f, cycles);
+  signal::Signal w;
+  w.name = "burst wavelet";
+  w.quantity = derivative ? "d/dt of the load" : "load";
+  w.unit = "1";
+  w.t0_s = 0;
+  w.dt_s = dt;
+  const double omega = 2 * M_PI * f;
+  for (std::size_t i = 0; double(i) * dt <= burst.duration_s(); ++i) {
+    const double t = double(i) * dt;
+    w.samples.push_back(derivative ? omega * std::cos(omega * t) * 0.5 * (1 - std::cos(omega * t / cycles)) +
+                                         std::sin(omega * t) * 0.5 * (omega / cycles) * std::sin(omega * t / cycles)
+                                   : burst(t));
+  }
+  return w;
+}
+
 Onset pick_onset(const signal::Signal& raw, const OnsetOptions& o) {
   signal::require_valid(raw, 8);
   const signal::Signal s = o.lowpass_Hz > 0 ? lowpass(raw, o.lowpass_Hz) : raw;
-  if (o.picker != "threshold" && o.picker != "aic" && o.picker != "envelope-peak")
-    throw InputError("picker '" + o.picker + "' is not one of threshold, aic, envelope-peak");
+  if (o.picker != "threshold" && o.picker != "aic" && o.picker != "envelope-peak" && o.picker != "xcorr")
+    throw InputError("picker '" + o.picker + "' is not one of threshold, aic, envelope-peak, xcorr");
+  if (o.picker == "xcorr" && (!o.wavelet || o.wavelet->size() < 4))
+    throw InputError("the xcorr picker needs a wavelet of 4 samples or more (mw-upv --s-wavelet or --s-wavelet-burst-kHz)");
   const double end_s = s.time(s.size() - 1);
   if (!o.noise_end_s && !(s.t0_s < 0))
     throw InputError("record " + s.name + " starts at " + us(s.t0_s) +
@@ -338,6 +429,12 @@ Onset pick_onset(const signal::Signal& raw, const OnsetOptions& o) {
     if (o.locator == "threshold" && onset.pick.time_s > onset.locator.time_s + s.dt_s)
       onset.warnings.push_back("record " + s.name + ": the AIC onset (" + us(onset.pick.time_s) +
                                ") lies after the threshold crossing (" + us(onset.locator.time_s) + ")");
+  } else if (o.picker == "xcorr") {
+    onset.pick = matched_filter_pick(s, o, onset, i0, i1, first_index);
+    if (onset.pick.quality < o.min_xcorr_coefficient)
+      onset.warnings.push_back("record " + s.name + ": the record matches the wavelet poorly at the xcorr onset " +
+                               us(onset.pick.time_s) + " (coefficient " + format_fixed(onset.pick.quality, 2) + " < " +
+                               format_fixed(o.min_xcorr_coefficient, 2) + "): another wavelet, or another arrival");
   } else {
     signal::EnvelopePeakOptions env;
     env.search = {onset.search_begin_s, onset.search_end_s};

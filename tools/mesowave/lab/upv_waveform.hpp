@@ -29,8 +29,21 @@
 //  5. the chosen picker: threshold (the crossing), aic (Maeda's AIC on the
 //     window from the search start to the crossing + aic_after, or to the
 //     envelope peak: the onset where the variance changes; refused if it falls
-//     on the window's start), or envelope-peak (the group arrival: later than
-//     the onset, said so).
+//     on the window's start), envelope-peak (the group arrival: later than
+//     the onset, said so), or xcorr (the matched filter below).
+//
+// The matched filter (picker xcorr; docs/upv-pickers.md, "The DEM's S records"). The record
+// is compared with a known wavelet w (its first motion at its t = 0: a face-to-face record
+// of the transducer pair, or a model's load as its receiver records it) at every lag L of
+// the window from the search start to the located arrival (the envelope peak less half the
+// wavelet's own onset-to-envelope-peak delay d_w: the onset precedes the record's envelope peak by
+// about d_w, and a lag a period later would match a smeared burst's longer cycles):
+//   c(L) = sum_k (x(L + k dt) - noise mean) w(k dt),
+// and the onset is the lag of the largest local maximum of c, refined by a parabola through its neighbours
+// (the lag at which the wavelet's first motion best explains the record). It weighs the whole
+// burst, so a slow rise under the first half-cycle, which AIC takes for noise and splits at the
+// first large half-cycle, moves it only by its correlation with w. Quality: xcorr_coefficient,
+// c over the norms of w and of the record's samples it covers (1: the record is the wavelet).
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -63,7 +76,7 @@ signal::Signal read_upv_waveform(const std::filesystem::path& path, const Wavefo
                                  const std::string& name);
 
 struct OnsetOptions {
-  std::string picker = "aic";     ///< threshold | aic | envelope-peak
+  std::string picker = "aic";     ///< threshold | aic | envelope-peak | xcorr (needs `wavelet`)
   std::string locator = "threshold";  ///< threshold | envelope-peak: what finds the arrival the AIC window ends at
   double threshold_factor = 5;
   double threshold_relative = 0.2;    ///< ... or this fraction of the window's peak, whichever is larger
@@ -76,7 +89,18 @@ struct OnsetOptions {
   double lowpass_Hz = 0;          ///< zero-phase low-pass before picking (0: none), see lowpass()
   double min_arrival_snr = 3;     ///< RMS over aic_after from the located arrival / noise RMS, at least
   double min_contrast = 2;        ///< AIC onset: RMS over aic_after after it / before it; less is warned
+  /// xcorr: the wavelet (its t0_s is ignored: its first sample is its first motion); resampled
+  /// onto the record's interval by linear interpolation where the two differ.
+  std::optional<signal::Signal> wavelet;
+  double min_xcorr_coefficient = 0.5;  ///< xcorr: a smaller coefficient at the pick is warned
 };
+
+/// The wavelet of a Hann-windowed burst load (signal/hann_burst.hpp: f(t) = sin(w t) 0.5 (1 -
+/// cos(w t / n)), w = 2 pi f, n cycles) sampled at `dt_s` from its start: the far-field
+/// displacement of a force load has the load's shape (Aki & Richards Eq. 4.23, the 1/r terms),
+/// its velocity the load's time derivative (`derivative`: f'(t) = w cos(w t) 0.5 (1 - cos(w t / n))
+/// + sin(w t) 0.5 (w / n) sin(w t / n)). InputError for a non-positive frequency, cycle count or interval.
+signal::Signal burst_wavelet(double frequency_Hz, double cycles, bool derivative, double dt_s);
 
 /// Zero-phase low-pass (FFT, record padded to twice its length, mean of the
 /// noise window removed first): gain 1 below `corner`, a raised-cosine taper to
