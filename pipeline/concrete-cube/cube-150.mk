@@ -30,13 +30,19 @@ CC_C150_CHOICES := $(sort $(CC_C150_CHOICE_STATIC) $(CC_C150_CHOICE_DYNAMIC))
 # the far face at one bond (at most 2.2 mm) a step of 50 ns, are the noise window (all zeros).
 # Without noise, Maeda's AIC finds the lattice's numerical precursor (1e-6 of the peak, long before the wave), so the P onset is the first
 # crossing of 2 % of the peak (threshold picker, as a pulse analyser's); the S onset is mw-upv's
-# S chain after that t_p (AIC up to the S envelope's peak, from 1.3 t_p), where the P wave's
-# coda sets the AIC's noise.
+# S chain after that t_p (from 1.3 t_p to the S envelope's peak) with the matched filter below.
 CC_C150_NOISE_US.150 := 0,3
 CC_C150_NOISE_US.50 := 0,1
 cc_c150_record = --noise-window-us $(CC_C150_NOISE_US.$1) --amplitude-column 'R [m/s]'
 CC_C150_P_PICK := --picker threshold --locate-relative 0.02
 CC_C150_S_PICK := --picker aic
+# The S onset by the matched filter with the load's time derivative (the records are the receiver's
+# velocity under a force burst: lab-data/concrete-cube/upv-experiment-s*.toml's [burst], 40 kHz x 2
+# cycles, and x 3 the frequency at 1/3 scale). The AIC places the onset at the burst's first large
+# half-cycle, which rides on the P wave's near field, 0.4 periods late (docs/upv-pickers.md, "The
+# DEM's S records"); the matched filter is 0.13-0.42 us after the continuum's S time on the 50 mm cube.
+CC_C150_S_WAVELET.150 := --s-wavelet-burst-kHz 40,2 --s-wavelet-derivative
+CC_C150_S_WAVELET.50 := --s-wavelet-burst-kHz 120,2 --s-wavelet-derivative
 # The lab's own chain beside it: white noise added to the record at a stated SNR (mw-upv
 # --add-noise-snr-dB: 20 log10(peak / noise RMS), seeded), then mw-upv's defaults, AIC for P and
 # the AIC-after-P chain for S, as on a lab record. 40 dB: source assumed, the middle of the picker
@@ -74,7 +80,7 @@ $(CC_C150_OUT)/upv$3-$2-$1.h5 $(CC_C150_OUT)/upv$3-$2-$1.csv $(CC_C150_OUT)/upv$
 	  --quiet --signals $(CC_C150_OUT)/upv$3-$2-$1.h5 --signals-csv $(CC_C150_OUT)/upv$3-$2-$1.csv \
 	  --summary $(CC_C150_OUT)/upv$3-$2-$1.json > /dev/null
 endef
-# The P pick first (threshold), then the S chain after it (AIC); the second run reads the first's t_p.
+# The P pick first (threshold), then the S chain after it (the matched filter); the second run reads the first's t_p.
 define CC_C150_PICKS
 $(CC_C150_OUT)/upv$2-tp-$1.json $(CC_C150_OUT)/upv$2-p-$1.png &: $(CC_C150_OUT)/upv$2-p-$1.csv $(BIN)/mw-upv
 	$(BIN)/mw-upv --path-mm $2 --p-wave $(CC_C150_OUT)/upv$2-p-$1.csv $(CC_C150_P_PICK) $(call cc_c150_record,$2) \
@@ -83,8 +89,8 @@ $(CC_C150_OUT)/upv$2-tp-$1.json $(CC_C150_OUT)/upv$2-p-$1.png &: $(CC_C150_OUT)/
 $(CC_C150_OUT)/upv$2-picks-$1.json $(CC_C150_OUT)/upv$2-s-$1.png &: $(CC_C150_OUT)/upv$2-tp-$1.json $(CC_C150_OUT)/upv$2-s-$1.csv \
     $(CC_OUT)/density.json $(BIN)/mw-upv
 	$(BIN)/mw-upv --from $(CC_C150_OUT)/upv$2-tp-$1.json --from $(CC_OUT)/density.json --s-wave $(CC_C150_OUT)/upv$2-s-$1.csv \
-	  $(CC_C150_S_PICK) $(call cc_c150_record,$2) --plot $(CC_C150_OUT)/upv$2-s-$1.png \
-	  --title "$2 mm DEM cube, calibration '$1': S transducers, the pick" --out $(CC_C150_OUT)/upv$2-picks-$1.json > /dev/null
+	  $(CC_C150_S_PICK) $(CC_C150_S_WAVELET.$2) $(call cc_c150_record,$2) --plot $(CC_C150_OUT)/upv$2-s-$1.png \
+	  --title "$2 mm DEM cube, calibration '$1': S transducers, the matched filter's pick" --out $(CC_C150_OUT)/upv$2-picks-$1.json > /dev/null
 $(CC_C150_OUT)/upv$2-tp-noisy-$1.json $(CC_C150_OUT)/upv$2-p-noisy-$1.png &: $(CC_C150_OUT)/upv$2-p-$1.csv $(BIN)/mw-upv
 	$(BIN)/mw-upv --path-mm $2 --p-wave $(CC_C150_OUT)/upv$2-p-$1.csv $(CC_C150_NOISY_PICK) $(call cc_c150_record,$2) \
 	  --plot $(CC_C150_OUT)/upv$2-p-noisy-$1.png \
@@ -93,8 +99,8 @@ $(CC_C150_OUT)/upv$2-tp-noisy-$1.json $(CC_C150_OUT)/upv$2-p-noisy-$1.png &: $(C
 $(CC_C150_OUT)/upv$2-picks-noisy-$1.json $(CC_C150_OUT)/upv$2-s-noisy-$1.png &: $(CC_C150_OUT)/upv$2-tp-noisy-$1.json \
     $(CC_C150_OUT)/upv$2-s-$1.csv $(CC_OUT)/density.json $(BIN)/mw-upv
 	$(BIN)/mw-upv --from $(CC_C150_OUT)/upv$2-tp-noisy-$1.json --from $(CC_OUT)/density.json --s-wave $(CC_C150_OUT)/upv$2-s-$1.csv \
-	  $(CC_C150_NOISY_PICK) $(call cc_c150_record,$2) --plot $(CC_C150_OUT)/upv$2-s-noisy-$1.png \
-	  --title "$2 mm DEM cube, calibration '$1': S record + noise at $(CC_C150_NOISE_SNR_DB) dB, AIC after P" \
+	  $(CC_C150_NOISY_PICK) $(CC_C150_S_WAVELET.$2) $(call cc_c150_record,$2) --plot $(CC_C150_OUT)/upv$2-s-noisy-$1.png \
+	  --title "$2 mm DEM cube, calibration '$1': S record + noise at $(CC_C150_NOISE_SNR_DB) dB, matched filter after P" \
 	  --out $(CC_C150_OUT)/upv$2-picks-noisy-$1.json > /dev/null
 endef
 $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,$(eval $(call CC_C150_RUNS,$c,$k,$z)))$(eval $(call CC_C150_PICKS,$c,$z))))
