@@ -10,6 +10,25 @@
 
 namespace mesowave::lab {
 
+namespace {
+
+// A record's time base as a lab instrument's: `pretrigger_s` before the trigger at t = 0, then
+// `duration_s`, at `dt_s`; the samples zero.
+signal::Signal record_of(double pretrigger_s, double duration_s, double dt_s, std::string name, std::string quantity,
+                         std::string unit) {
+  signal::Signal r;
+  r.name = std::move(name);
+  r.quantity = std::move(quantity);
+  r.unit = std::move(unit);
+  const long n_pre = std::lround(pretrigger_s / dt_s), n_post = std::lround(duration_s / dt_s);
+  r.t0_s = -double(n_pre) * dt_s;
+  r.dt_s = dt_s;
+  r.samples.assign(std::size_t(n_pre + n_post), 0.0);
+  return r;
+}
+
+}  // namespace
+
 double transducer_decay_rate(double frequency_Hz, double rise_periods) {
   if (!(frequency_Hz > 0) || !(rise_periods > 0) || !std::isfinite(frequency_Hz) || !std::isfinite(rise_periods))
     throw InputError("transducer response: frequency and rise must be positive");
@@ -45,17 +64,8 @@ signal::Signal transducer_record(const TransducerRecordSpec& s) {
   const double w = 2 * std::numbers::pi * s.frequency_Hz, tau_r = s.rise_periods / s.frequency_Hz;
   const double peak = std::exp(-a * tau_r) * std::sqrt(1 + w * w * tau_r * tau_r) / (2 * w * w * w);
 
-  signal::Signal r;
-  r.name = "synthetic";
-  r.quantity = "voltage";
-  r.unit = "V";
-  const long n_pre = std::lround(s.pretrigger_s / s.sample_interval_s);
-  const long n_post = std::lround(s.duration_s / s.sample_interval_s);
-  r.t0_s = -double(n_pre) * s.sample_interval_s;
-  r.dt_s = s.sample_interval_s;
-  const auto noise = signal::gaussian_noise(std::size_t(n_pre + n_post), s.amplitude * std::pow(10.0, -s.snr_dB / 20),
-                                            s.seed);
-  r.samples.resize(noise.size());
+  signal::Signal r = record_of(s.pretrigger_s, s.duration_s, s.sample_interval_s, "synthetic", "voltage", "V");
+  const auto noise = signal::gaussian_noise(r.size(), s.amplitude * std::pow(10.0, -s.snr_dB / 20), s.seed);
   for (std::size_t i = 0; i < noise.size(); ++i) {
     const double t = r.time(i);
     double v = transducer_response(t - s.onset_s, s.frequency_Hz, a);
@@ -101,15 +111,8 @@ signal::Signal point_force_record(const PointForceRecordSpec& s) {
     }
     return sum * h / 3;
   };
-  signal::Signal rec;
-  rec.name = s.axial ? "point force, axial" : "point force, transverse";
-  rec.quantity = "velocity";
-  rec.unit = "1";
-  const long n_pre = std::lround(s.pretrigger_s / s.sample_interval_s);
-  const long n_post = std::lround(s.duration_s / s.sample_interval_s);
-  rec.t0_s = -double(n_pre) * s.sample_interval_s;
-  rec.dt_s = s.sample_interval_s;
-  rec.samples.resize(std::size_t(n_pre + n_post));
+  signal::Signal rec = record_of(s.pretrigger_s, s.duration_s, s.sample_interval_s,
+                                 s.axial ? "point force, axial" : "point force, transverse", "velocity", "1");
   double peak = 0;
   for (std::size_t i = 0; i < rec.samples.size(); ++i) {
     const double t = rec.time(i);
