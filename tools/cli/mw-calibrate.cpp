@@ -116,9 +116,7 @@ int main(int argc, char** argv) {
     }
 
     const std::string E_option = E_d_GPa ? "--E-d-GPa" : "--E-st-measured-GPa", nu_option = nu_d ? "--nu-d" : "--nu-st";
-    const dem::CalibrationTargets targets{require_positive(E_option, E_d_GPa.value_or(E_st_GPa), "GPa") * units::GPa,
-                                          nu_d.value_or(nu_st), require_positive("--sigma-max-MPa", sigma_MPa, "MPa") * units::MPa,
-                                          E_d_GPa ? "E_d" : "E_st", nu_d ? "nu_d" : "nu_st"};
+    const dem::CalibrationTargets targets = dem::compression_targets(E_st_GPa, nu_st, sigma_MPa, E_d_GPa, nu_d);
     const dem::CalibrationTolerances tolerances{require_positive("--tolerance-E-pct", tol_E_pct, "%") / 100,
                                                 require_positive("--tolerance-nu", tol_nu),
                                                 require_positive("--tolerance-sigma-pct", tol_sigma_pct, "%") / 100};

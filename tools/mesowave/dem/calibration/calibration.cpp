@@ -27,6 +27,13 @@ std::string fixed(double v) { return format_number(std::round(v * 1e4) / 1e4); }
 
 }  // namespace
 
+CalibrationTargets compression_targets(double E_st_GPa, double nu_st, double sigma_max_MPa, std::optional<double> E_d_GPa,
+                                       std::optional<double> nu_d) {
+  return {require_positive(E_d_GPa ? "--E-d-GPa" : "--E-st-measured-GPa", E_d_GPa.value_or(E_st_GPa), "GPa") * units::GPa,
+          nu_d.value_or(nu_st), require_positive("--sigma-max-MPa", sigma_max_MPa, "MPa") * units::MPa,
+          E_d_GPa ? "E_d" : "E_st", nu_d ? "nu_d" : "nu_st"};
+}
+
 CompressionCalibration::CompressionCalibration(const CalibrationTargets& targets,
                                                const CalibrationTolerances& tolerances, const DemParameters& start,
                                                int max_trials)

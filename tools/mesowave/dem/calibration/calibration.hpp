@@ -33,6 +33,12 @@ struct CalibrationTargets {
   std::string E_name = "E_st", nu_name = "nu_st";
 };
 
+/// The cube's targets from mw-calibrate's options: E_st and nu_st (the static test), or E_d and nu_d
+/// where given (the dynamic calibration: each replaces its static twin), and sigma_max. InputError
+/// naming the option (--E-st-measured-GPa, --E-d-GPa, --sigma-max-MPa) for a modulus or strength <= 0.
+CalibrationTargets compression_targets(double E_st_GPa, double nu_st, double sigma_max_MPa, std::optional<double> E_d_GPa,
+                                       std::optional<double> nu_d);
+
 struct CalibrationTolerances {
   double E_relative = 0.01;      ///< 1 % on E_glob
   double nu_absolute = 0.01;     ///< 0.01 on nu_glob
