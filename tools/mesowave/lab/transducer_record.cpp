@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mesowave/core/error.hpp"
+#include "mesowave/signal/hann_burst.hpp"
 #include "mesowave/signal/noise.hpp"
 
 namespace mesowave::lab {
@@ -80,17 +81,6 @@ signal::Signal transducer_record(const TransducerRecordSpec& s) {
   return r;
 }
 
-namespace {
-
-// F'(t) of the Hann burst f(t) = sin(w t) 0.5 (1 - cos(w t / n)) on [0, n / f].
-double burst_rate(double t, double f, double n) {
-  if (t <= 0 || t >= n / f) return 0.0;
-  const double w = 2 * std::numbers::pi * f;
-  return w * std::cos(w * t) * 0.5 * (1 - std::cos(w * t / n)) + std::sin(w * t) * 0.5 * (w / n) * std::sin(w * t / n);
-}
-
-}  // namespace
-
 signal::Signal point_force_record(const PointForceRecordSpec& s) {
   if (!(s.frequency_Hz > 0) || !(s.cycles > 0) || !(s.distance_m > 0) || !(s.sample_interval_s > 0) ||
       !(s.duration_s > 0) || !(s.pretrigger_s >= 0))
@@ -98,6 +88,7 @@ signal::Signal point_force_record(const PointForceRecordSpec& s) {
   if (!(s.s_speed_m_s > 0 && s.p_speed_m_s > s.s_speed_m_s))
     throw InputError("point-force record: the speeds must satisfy alpha > beta > 0");
   const double r = s.distance_m, ta = r / s.p_speed_m_s, tb = r / s.s_speed_m_s, T = s.cycles / s.frequency_Hz;
+  const signal::HannBurst burst(s.frequency_Hz, s.cycles);  // F(t); its rate F'(t) drives the velocity
   // int_{ta}^{tb} tau F'(t - tau) dtau over F's support, Simpson's rule (F' is smooth inside it).
   const auto near = [&](double t) {
     const double lo = std::max(ta, t - T), hi = std::min(tb, t);
@@ -107,7 +98,7 @@ signal::Signal point_force_record(const PointForceRecordSpec& s) {
     double sum = 0;
     for (int k = 0; k <= n; ++k) {
       const double tau = lo + k * h;
-      sum += (k == 0 || k == n ? 1 : (k % 2 ? 4 : 2)) * tau * burst_rate(t - tau, s.frequency_Hz, s.cycles);
+      sum += (k == 0 || k == n ? 1 : (k % 2 ? 4 : 2)) * tau * burst.rate(t - tau);
     }
     return sum * h / 3;
   };
@@ -116,8 +107,8 @@ signal::Signal point_force_record(const PointForceRecordSpec& s) {
   double peak = 0;
   for (std::size_t i = 0; i < rec.samples.size(); ++i) {
     const double t = rec.time(i);
-    const double v = s.axial ? 2 * near(t) / (r * r * r) + burst_rate(t - ta, s.frequency_Hz, s.cycles) / (s.p_speed_m_s * s.p_speed_m_s * r)
-                             : -near(t) / (r * r * r) + burst_rate(t - tb, s.frequency_Hz, s.cycles) / (s.s_speed_m_s * s.s_speed_m_s * r);
+    const double v = s.axial ? 2 * near(t) / (r * r * r) + burst.rate(t - ta) / (s.p_speed_m_s * s.p_speed_m_s * r)
+                             : -near(t) / (r * r * r) + burst.rate(t - tb) / (s.s_speed_m_s * s.s_speed_m_s * r);
     rec.samples[i] = v;
     peak = std::max(peak, std::abs(v));
   }

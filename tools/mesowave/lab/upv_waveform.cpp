@@ -291,12 +291,9 @@ signal::Signal burst_wavelet(double f, double cycles, bool derivative, double dt
   w.unit = "1";
   w.t0_s = 0;
   w.dt_s = dt;
-  const double omega = 2 * M_PI * f;
   for (std::size_t i = 0; double(i) * dt <= burst.duration_s(); ++i) {
     const double t = double(i) * dt;
-    w.samples.push_back(derivative ? omega * std::cos(omega * t) * 0.5 * (1 - std::cos(omega * t / cycles)) +
-                                         std::sin(omega * t) * 0.5 * (omega / cycles) * std::sin(omega * t / cycles)
-                                   : burst(t));
+    w.samples.push_back(derivative ? burst.rate(t) : burst(t));
   }
   return w;
 }

@@ -20,6 +20,14 @@ double HannBurst::operator()(double t) const {
   return amplitude_ * std::sin(phase) * 0.5 * (1.0 - std::cos(phase / cycles_));
 }
 
+double HannBurst::rate(double t) const {
+  const double local = t - delay_;
+  if (local <= 0 || local >= duration_s()) return 0.0;
+  const double w = 2.0 * std::numbers::pi * frequency_, phase = w * local;
+  return amplitude_ * (w * std::cos(phase) * 0.5 * (1.0 - std::cos(phase / cycles_)) +
+                       std::sin(phase) * 0.5 * (w / cycles_) * std::sin(phase / cycles_));
+}
+
 std::vector<double> HannBurst::sample(double dt, std::size_t count, double t0) const {
   require_positive("sampling interval", dt, "s");
   std::vector<double> samples(count);

@@ -14,6 +14,8 @@ public:
   HannBurst(double centre_frequency_hz, double cycles, double amplitude = 1.0, double delay_s = 0.0);
 
   double operator()(double t_s) const;
+  /// Its time derivative (the rate of a force burst: what a velocity receiver records of it in the far field).
+  double rate(double t_s) const;
   double duration_s() const { return cycles_ / frequency_; }
   double end_s() const { return delay_ + duration_s(); }
   double centre_frequency_hz() const { return frequency_; }
