@@ -233,8 +233,11 @@ signal::Pick matched_filter_pick(const signal::Signal& s, const OnsetOptions& o,
     if (den < 0) shift = std::clamp(0.5 * (a - d) / den, -0.5, 0.5);
   }
   double norm_x = 0, norm_w = 0;
-  for (std::size_t k = 0; k < w.size() && best + k < s.size(); ++k)
-    norm_x += (s.samples[best + k] - mean) * (s.samples[best + k] - mean), norm_w += w.samples[k] * w.samples[k];
+  for (std::size_t k = 0; k < w.size() && best + k < s.size(); ++k) {
+    const double x = s.samples[best + k] - mean;
+    norm_x += x * x;
+    norm_w += w.samples[k] * w.samples[k];
+  }
   signal::Pick p;
   p.method = "xcorr";
   p.time_s = s.time(best) + shift * s.dt_s;
