@@ -135,12 +135,30 @@ PRINT_WALL_TIME = awk -v s=$$start -v e=$$(date +%s.%N) -v l="$$(cut -d' ' -f1-3
 PIPELINE_JOBS ?= $(shell nproc)
 pipeline_schedule = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(PIPELINE_JOBS)) --output-sync=target
 reproduce: build
-	@start=$$(date +%s.%N); $(MAKE) --no-print-directory $(pipeline_schedule) pipeline && \
+	@start=$$(date +%s.%N); $(MAKE) --no-print-directory $(pipeline_schedule) pipeline-scheduled && \
 	  $(PRINT_WALL_TIME)
 
 reproduce-quick: build
-	@start=$$(date +%s.%N); $(MAKE) --no-print-directory $(pipeline_schedule) pipeline QUICK=1 MESOWAVE_DB=$(QUICK_DB) && \
+	@start=$$(date +%s.%N); $(MAKE) --no-print-directory $(pipeline_schedule) pipeline-scheduled QUICK=1 MESOWAVE_DB=$(QUICK_DB) && \
 	  $(PRINT_WALL_TIME)
+
+# The order of the runs. GNU make starts targets in the order it walks the graph, and one that
+# becomes ready waits until the walk comes round again - in the whole pipeline, until every other
+# ready run has started (on 2026-12-05 the cube's calibration, the longest chain's second link,
+# started 3 minutes after its packing). So the studies name (in their study.mk):
+#   PIPELINE_CHAIN   the end of their longest chain of dependent runs (the cube: packing ->
+#                    calibration -> DEM waves); it runs in a make of its own, which starts each
+#                    link as soon as the one before ends;
+#   PIPELINE_BESIDE  what needs nothing of the chain; it runs beside it, in the job slots the chain
+#                    leaves (both makes share them: -j stays the number of runs at once);
+#   PIPELINE_FIRST   the inputs both read (made first, before either starts).
+# No target may be in (or under) both PIPELINE_CHAIN and PIPELINE_BESIDE: two makes would make it
+# at once. A last pass, make pipeline, makes what needs both (PCC, tables, the report) and anything a
+# study did not name; so a study that names nothing gets the same results, only later.
+PIPELINE_FIRST :=
+PIPELINE_CHAIN :=
+PIPELINE_BESIDE :=
+# (Its rules follow the studies' includes below, which fill these lists.)
 
 # A study is a folder pipeline/<study>/: its study.mk (the rules; it adds the goals that print
 # its tables to PIPELINE_GOALS) and its report.toml (its sections of the report), with its
@@ -150,6 +168,16 @@ STUDIES := $(patsubst pipeline/%/study.mk,%,$(sort $(wildcard pipeline/*/study.m
 PIPELINE_GOALS :=
 include $(foreach study,$(STUDIES),pipeline/$(study)/study.mk)
 include pipeline/report.mk
+
+# The schedule's rules (above: "The order of the runs").
+.PHONY: pipeline-scheduled pipeline-chain-beside pipeline-chain
+pipeline-scheduled:
+	+@$(if $(strip $(PIPELINE_FIRST)),$(MAKE) --no-print-directory $(PIPELINE_FIRST),:)
+	+@$(MAKE) --no-print-directory pipeline-chain-beside
+	+@$(MAKE) --no-print-directory pipeline
+pipeline-chain-beside: pipeline-chain $(PIPELINE_BESIDE)
+pipeline-chain:
+	+@$(if $(strip $(PIPELINE_CHAIN)),$(MAKE) --no-print-directory $(PIPELINE_CHAIN),:)
 
 pipeline: $(PIPELINE_GOALS) $(REPORT_DIR)/index.html
 	@echo; echo "report: $(CURDIR)/$(REPORT_DIR)/index.html"

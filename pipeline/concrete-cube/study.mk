@@ -32,3 +32,12 @@ include pipeline/concrete-cube/step-6-calibration.mk
 include pipeline/concrete-cube/waves.mk
 include pipeline/concrete-cube/speed.mk
 include pipeline/concrete-cube/cube-150.mk
+
+# The schedule (top Makefile, "The order of the runs"): the chain packing -> calibration -> DEM
+# waves (and the speed runs, which need the calibration) in a make of its own, the continuum
+# references and the compression with the paper's parameters beside it; the packing and the
+# step-3 moduli, which both sides read, first.
+PIPELINE_FIRST += $(CC_OUT)/density.json $(CC_OUT)/upv.json $(CC_OUT)/packing.h5
+PIPELINE_CHAIN += $(CC_DEM_RECORDS) $(foreach r,$(CC_SPEED_RUNS),$(CC_OUT)/speed-$r.h5)
+PIPELINE_BESIDE += $(foreach f,$(CC_FREQS),$(CC_OUT)/fem-early-$(f)kHz.h5 $(CC_OUT)/fem-$(f)kHz.h5) \
+  $(CC_OUT)/compression-paper-parameters.json
