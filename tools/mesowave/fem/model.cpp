@@ -365,7 +365,9 @@ FemModel box_hexahedra(const IsotropicMaterial& m, const std::array<double, 3>& 
   for (int d = 0; d < 3; ++d) cells[std::size_t(d)] = std::max(1, int(std::lround(size[std::size_t(d)] / h)));
   const double cells_total = double(cells[0]) * cells[1] * cells[2];
   if (cells_total > 3e7) throw InputError("box mesh would have " + format_number(cells_total) + " hexahedra (limit 3e7)");
-  return box_grid(m, size, cells, true);
+  FemModel model = box_grid(m, size, cells, true);
+  model.box = {cells, {size[0] / cells[0], size[1] / cells[1], size[2] / cells[2]}};
+  return model;
 }
 
 std::vector<std::pair<std::size_t, double>> surface_patch(const FemModel& model, int axis, double value,

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "mesowave/fem/box_operator.hpp"
 #include "mesowave/wave/elastic.hpp"
 
 namespace mesowave::fem {
@@ -32,6 +33,9 @@ struct FemModel {
   std::vector<double> mass;                         ///< lumped, per node [kg]
   std::vector<std::uint8_t> fixed;                  ///< per dof: held at zero (u_r on the axis)
   std::vector<std::vector<std::int32_t>> colours;   ///< element lists, no shared node within one
+  /// A box of identical hexahedra (box_hexahedra): the solver applies K as a sum of Kronecker
+  /// products of 1-D operators (box_operator.hpp) instead of element by element. Invalid otherwise.
+  BoxGrid box;
   /// Upper bound on the largest eigenvalue of M^-1 K (free dofs) [rad^2/s^2]: the
   /// smaller of the element bound and the block bound (see stable_dt()).
   double max_eigenvalue_bound = 0;

@@ -6,10 +6,12 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/threads.hpp"
+#include "mesowave/fem/box_operator.hpp"
 
 namespace mesowave::fem {
 
@@ -74,18 +76,33 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void quad4_forces(
   element_forces<4, 2>(elems, begin, end, conn, types, K, u, f);
 }
 
-// The stiffness matrices of all types side by side, and the kernel for the element kind.
+// The stiffness matrices of all types side by side, and the kernel for the element kind; on a box,
+// the Kronecker form (box_operator.hpp) and a workspace per thread.
 struct Assembler {
   const FemModel& model;
   std::vector<double> K;
+  std::optional<BoxOperator> box;
+  mutable std::vector<BoxOperator::Workspace> work;
 
   explicit Assembler(const FemModel& m) : model(m) {
-    for (const auto& k : m.stiffness) K.insert(K.end(), k.begin(), k.end());
+    if (m.box.valid()) {
+      box.emplace(m.box, m.material);
+      work.resize(std::size_t(omp_get_max_threads()));
+    } else {
+      for (const auto& k : m.stiffness) K.insert(K.end(), k.begin(), k.end());
+    }
   }
 
-  // Inside a parallel region: f += K u, colour by colour (barrier after each).
+  // Inside a parallel region, f zero on entry: f = K u, colour by colour (barrier after each), or
+  // on a box node plane by node plane (each thread its planes: the same bits for any count).
   void add(const double* u, double* f) const {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+    if (box) {
+      const std::int64_t planes = box->planes();
+      box->apply(u, f, planes * t / nt, planes * (t + 1) / nt, work[std::size_t(t)]);
+#pragma omp barrier
+      return;
+    }
     for (const auto& colour : model.colours) {
       const std::size_t n = colour.size();
       const std::size_t b = n * std::size_t(t) / std::size_t(nt), e = n * std::size_t(t + 1) / std::size_t(nt);
