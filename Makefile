@@ -170,14 +170,17 @@ include $(foreach study,$(STUDIES),pipeline/$(study)/study.mk)
 include pipeline/report.mk
 
 # The schedule's rules (above: "The order of the runs").
-.PHONY: pipeline-scheduled pipeline-chain-beside pipeline-chain
+# (The empty recipes keep make from listing what is up to date.)
+.PHONY: pipeline-scheduled pipeline-first pipeline-chain-beside pipeline-chain pipeline-chain-goals
 pipeline-scheduled:
-	+@$(if $(strip $(PIPELINE_FIRST)),$(MAKE) --no-print-directory $(PIPELINE_FIRST),:)
+	+@$(MAKE) --no-print-directory pipeline-first
 	+@$(MAKE) --no-print-directory pipeline-chain-beside
 	+@$(MAKE) --no-print-directory pipeline
-pipeline-chain-beside: pipeline-chain $(PIPELINE_BESIDE)
+pipeline-first: $(PIPELINE_FIRST) ; @:
+pipeline-chain-beside: pipeline-chain $(PIPELINE_BESIDE) ; @:
 pipeline-chain:
-	+@$(if $(strip $(PIPELINE_CHAIN)),$(MAKE) --no-print-directory $(PIPELINE_CHAIN),:)
+	+@$(MAKE) --no-print-directory pipeline-chain-goals
+pipeline-chain-goals: $(PIPELINE_CHAIN) ; @:
 
 pipeline: $(PIPELINE_GOALS) $(REPORT_DIR)/index.html
 	@echo; echo "report: $(CURDIR)/$(REPORT_DIR)/index.html"
