@@ -153,7 +153,7 @@ reproduce-quick: build
 #                    leaves (both makes share them: -j stays the number of runs at once);
 #   PIPELINE_FIRST   the inputs both read (made first, before either starts).
 # No target may be in (or under) both PIPELINE_CHAIN and PIPELINE_BESIDE: two makes would make it
-# at once. A last pass, make pipeline, makes what needs both (PCC, tables, the report) and anything a
+# at once (scripts/check-pipeline checks that their dry runs share no tool run). A last pass, make pipeline, makes what needs both (PCC, tables, the report) and anything a
 # study did not name; so a study that names nothing gets the same results, only later.
 PIPELINE_FIRST :=
 PIPELINE_CHAIN :=
@@ -171,16 +171,17 @@ include pipeline/report.mk
 
 # The schedule's rules (above: "The order of the runs").
 # (The empty recipes keep make from listing what is up to date.)
-.PHONY: pipeline-scheduled pipeline-first pipeline-chain-beside pipeline-chain pipeline-chain-goals
+.PHONY: pipeline-scheduled pipeline-first pipeline-chain-beside pipeline-chain pipeline-chain-goals pipeline-beside-goals
 pipeline-scheduled:
 	+@$(MAKE) --no-print-directory pipeline-first
 	+@$(MAKE) --no-print-directory pipeline-chain-beside
 	+@$(MAKE) --no-print-directory pipeline
 pipeline-first: $(PIPELINE_FIRST) ; @:
-pipeline-chain-beside: pipeline-chain $(PIPELINE_BESIDE) ; @:
+pipeline-chain-beside: pipeline-chain pipeline-beside-goals ; @:
 pipeline-chain:
 	+@$(MAKE) --no-print-directory pipeline-chain-goals
 pipeline-chain-goals: $(PIPELINE_CHAIN) ; @:
+pipeline-beside-goals: $(PIPELINE_BESIDE) ; @:
 
 pipeline: $(PIPELINE_GOALS) $(REPORT_DIR)/index.html
 	@echo; echo "report: $(CURDIR)/$(REPORT_DIR)/index.html"
