@@ -28,6 +28,13 @@ MESOWAVE_KERNEL_CLONES void add_scaled(double s, const double* __restrict in, do
   for (std::int64_t k = 0; k < count; ++k) out[k] += s * in[k];
 }
 
+// out += s (a prev + b here + c next): a y sweep straight into a term's sum.
+MESOWAVE_KERNEL_CLONES void add_combined_rows(double s, double a, const double* __restrict prev, double b,
+                                              const double* __restrict here, double c, const double* __restrict next,
+                                              double* __restrict out, std::int64_t count) {
+  for (std::int64_t k = 0; k < count; ++k) out[k] += s * (a * prev[k] + b * here[k] + c * next[k]);
+}
+
 }  // namespace
 
 BoxOperator::BoxOperator(const BoxGrid& grid, const wave::IsotropicMaterial& material) {
@@ -90,14 +97,13 @@ void BoxOperator::apply(const double* u, double* f, std::int64_t plane_begin, st
   const std::int64_t nx = n_[0] + 1, ny = n_[1] + 1, nz = n_[2] + 1, node_plane = nx * ny;
   // Padded planes (a zero border: the 1-D operators' missing neighbours): u on the three planes
   // around c, deinterleaved (3 components x 3 planes, a ring: each plane is read from u once); 4
-  // z-fields; one y-field; 12 sums before the x-operator, one per (X op, d); two output rows.
+  // z-fields; 12 sums before the x-operator, one per (X op, d); two output rows.
   const std::size_t size = std::size_t(plane_);
-  const std::size_t need = size * 26 + 2 * std::size_t(row_);
+  const std::size_t need = size * 25 + 2 * std::size_t(row_);
   if (work.buffer.size() != need) work.buffer.assign(need, 0.0);
   double* ring = work.buffer.data();  // [plane % 3][component]
   double* zf = ring + 9 * size;
-  double* yf = zf + 4 * size;
-  double* pre = yf + size;
+  double* pre = zf + 4 * size;
   double* row_out = pre + 12 * size;
   double* row_sum = row_out + row_;
   const std::int64_t first_row = row_ + 1;                 // node (0, 0) in a padded plane
@@ -112,17 +118,18 @@ void BoxOperator::apply(const double* u, double* f, std::int64_t plane_begin, st
         for (std::int64_t i = 0; i < nx; ++i) dst[i] = src[3 * i];
       }
   };
-  const auto used = [&](int e, int z, int y) {  // y < 0: any
+  const auto used = [&](int e, int z) {
     for (const Term& t : terms_)
-      if (t.e == e && t.z == z && (y < 0 || t.y == y)) return true;
+      if (t.e == e && t.z == z) return true;
     return false;
   };
-  // A y-operator over a whole plane: its first and last rows, and the rows between at once.
-  const auto sweep_y = [&](const Tridiagonal& t, double* in, double* out) {
+  // out += s (a y-operator on in) over a whole plane: its first and last rows, and the rows between
+  // at once (the operators' interior rows are alike).
+  const auto sweep_y = [&](double s, const Tridiagonal& t, const double* in, double* out) {
     const auto rows = [&](std::int64_t j0, std::int64_t count) {
       const std::int64_t offset = first_row + j0 * row_, length = (count - 1) * row_ + nx;
-      combine_rows(t.lower[std::size_t(j0)], in + offset - row_, t.diagonal[std::size_t(j0)], in + offset,
-                   t.upper[std::size_t(j0)], in + offset + row_, out + offset, length);
+      add_combined_rows(s, t.lower[std::size_t(j0)], in + offset - row_, t.diagonal[std::size_t(j0)], in + offset,
+                        t.upper[std::size_t(j0)], in + offset + row_, out + offset, length);
     };
     rows(0, 1);
     if (ny > 2) rows(1, ny - 2);
@@ -141,20 +148,15 @@ void BoxOperator::apply(const double* u, double* f, std::int64_t plane_begin, st
       const double* prev = c > 0 ? slab(c - 1, e) : here;      // weight 0 where the plane is missing
       const double* next = c + 1 < nz ? slab(c + 1, e) : here;
       for (int z = K; z <= CT; ++z) {
-        if (!used(e, z, -1)) continue;
+        if (!used(e, z)) continue;
         // z: the operator's row c over the planes c - 1, c, c + 1.
         const Tridiagonal& tz = ops_[2][std::size_t(z)];
         double* out = zf + std::size_t(z) * size;
         combine_rows(tz.lower[std::size_t(c)], prev + first_row, tz.diagonal[std::size_t(c)], here + first_row,
                      tz.upper[std::size_t(c)], next + first_row, out + first_row, span);
-        // y: each y-operator a term takes after this z-operator, then into its (X op, d) sum.
-        for (int y = K; y <= CT; ++y) {
-          if (!used(e, z, y)) continue;
-          sweep_y(ops_[1][std::size_t(y)], out, yf);
-          for (const Term& t : terms_)
-            if (t.e == e && t.z == z && t.y == y)
-              add_scaled(t.coefficient, yf + first_row, pre + std::size_t(3 * t.x + t.d) * size + first_row, span);
-        }
+        // y: each term's y-operator after this z-operator, straight into its (X op, d) sum.
+        for (const Term& t : terms_)
+          if (t.e == e && t.z == z) sweep_y(t.coefficient, ops_[1][std::size_t(t.y)], out, pre + std::size_t(3 * t.x + t.d) * size);
       }
     }
     // x: each sum through its x-operator, the x-operators added in a fixed order, into f (interleaved).
