@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
   };
 
   double E_st_GPa = 0, nu_st = 0, sigma_MPa = 0, tol_E_pct = 1, tol_nu = 0.01, tol_sigma_pct = 2, c_over_t = 1, tol_rod_pct = 0.5;
-  std::optional<double> start_E, start_nu, start_T, friction_deg, E_rod_GPa, E_d_GPa, nu_d;
+  std::optional<double> start_E, start_nu, start_T, friction_deg, E_rod_GPa, E_d_GPa, nu_d, elastic_velocity;
   auto* cube = cli.add_subcommand("cube", "Compression test of a packed specimen: E_dem, nu_dem, T = C");
   common(cube);
   cube->add_option("--E-st-measured-GPa", E_st_GPa, "Target: the static modulus E_st [GPa] (static-test.toml, mw-compress)")->required();
@@ -80,6 +80,8 @@ int main(int argc, char** argv) {
   cube->add_option("--elastic-trials", elastic_trials, "dynamic: step the elastic trials (the linearised network to "
                    "sigma_max / 3); static: one linear solve each (mw-dem run --static, docs/calibration.md); failure "
                    "trials stay dynamic")->check(CLI::IsMember({"dynamic", "static"}))->capture_default_str();
+  cube->add_option("--elastic-velocity-mm-s", elastic_velocity, "Stepped elastic trials: the walls' speed [mm/s] (default: "
+                   "the scene's; their only rate effect is inertia, bounded by the test: docs/calibration.md)");
   cube->add_option("--plot-curves", plot_curves, "PNG: stress-strain curves of the calibrated test, with the moduli");
 
   auto* rod = cli.add_subcommand("rod", "Tension test of a chain: the contact modulus for the rod's E");
@@ -117,16 +119,14 @@ int main(int argc, char** argv) {
 
     const std::string E_option = E_d_GPa ? "--E-d-GPa" : "--E-st-measured-GPa", nu_option = nu_d ? "--nu-d" : "--nu-st";
     const dem::CalibrationTargets targets = dem::compression_targets(E_st_GPa, nu_st, sigma_MPa, E_d_GPa, nu_d);
-    const dem::CalibrationTolerances tolerances{require_positive("--tolerance-E-pct", tol_E_pct, "%") / 100,
-                                                require_positive("--tolerance-nu", tol_nu),
-                                                require_positive("--tolerance-sigma-pct", tol_sigma_pct, "%") / 100};
     if (scene.test.kind != dem::UniaxialTestSpec::Kind::compression) throw InputError("mw-calibrate cube needs a compression test scene");
     const double T0 = start_T ? *start_T * units::MPa : m.tensile_strength_Pa;
     if (!std::isfinite(T0)) throw InputError("the scene's bonds never break (no T_MPa): give --start-T-MPa");
     const dem::DemParameters start{start_E ? *start_E * units::GPa : m.E_dem_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
     const double mu_deg = friction_deg.value_or(m.friction_angle_rad * 180 / 3.141592653589793);
-    dem::CompressionCalibration calibration(targets, tolerances, start, max_trials);
-    dem::run_trials(calibration, run_trial, mu_deg, std::cerr, elastic_trials == "static", [&](int k) { return trial_command.file(k, "-intact.h5"); });
+    dem::CompressionCalibration calibration(targets, dem::compression_tolerances(tol_E_pct, tol_nu, tol_sigma_pct), start, max_trials);
+    const dem::ElasticTrials elastic = dem::elastic_trials(elastic_trials == "static", elastic_velocity);
+    dem::run_trials(calibration, run_trial, mu_deg, std::cerr, elastic, [&](int k) { return trial_command.file(k, "-intact.h5"); });
     const dem::CalibrationTrial& best = calibration.result();
     run.metric("E_glob", best.E_glob_Pa / 1e9, "GPa"), run.metric("nu_glob", best.nu_glob, "");
     run.metric("sigma_dem", best.peak_Pa / 1e6, "MPa"), run.metric("trials", double(calibration.trials().size()), "");
@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
                                                 run.output(plot_curves), "Virtual compression test, calibrated parameters"));
     }
     auto summary = dem::calibration_summary(calibration, mu_deg, {run.origin(E_option), run.origin(nu_option),
-                                            run.origin("--sigma-max-MPa")}, elastic_trials);
+                                            run.origin("--sigma-max-MPa")}, elastic);
     if (!targets_csv.empty()) run.write_text(targets_csv, dem::calibration_targets_csv(summary));
     // The five values the wave runs take (mw-dem --from calibration.json); the rest is the record.
     app::declare_products(summary, {"E_dem_GPa", "nu_dem", "T_MPa", "C_MPa", "friction_angle_deg"});

@@ -224,3 +224,37 @@ TEST(CompressionCalibration, TheDynamicCalibrationsSummaryNamesItsTargetsEdAndNu
   EXPECT_TRUE(j.at("targets").contains("E_d") && j.at("targets").contains("nu_d"));
   EXPECT_FALSE(j.at("targets").contains("E_st"));
 }
+
+TEST(CompressionCalibration, TheElasticTrialsRunAtTheirOwnSpeedAndTheFailureTrialsAtTheScenes) {
+  // mw-calibrate --elastic-velocity-mm-s 100: the elastic trials' mw-dem runs get --velocity-mm-s 100,
+  // the failure trials none (the strength depends on the rate; docs/calibration.md), and the summary
+  // says how the elastic trials ran.
+  CalibrationTrial elastic, failure;
+  elastic.kind = CalibrationTrial::Kind::elastic;
+  failure.kind = CalibrationTrial::Kind::failure;
+  elastic.parameters = failure.parameters = {26.9e9, 0.296, 33.8e6, 1.0};
+  const CalibrationTargets targets{27.42e9, 0.16, 66e6};
+  const ElasticTrials fast = elastic_trials(false, 100.0);
+  const auto has_speed = [](const std::vector<std::string>& o) {
+    const auto at = std::find(o.begin(), o.end(), "--velocity-mm-s");
+    return at != o.end() && at + 1 != o.end() && *(at + 1) == "100";
+  };
+  EXPECT_TRUE(has_speed(compression_trial_options(elastic, targets, 18, fast)));
+  EXPECT_FALSE(has_speed(compression_trial_options(failure, targets, 18, fast)));
+  const auto scene_speed = compression_trial_options(elastic, targets, 18);
+  EXPECT_EQ(std::find(scene_speed.begin(), scene_speed.end(), "--velocity-mm-s"), scene_speed.end());
+
+  const SyntheticPacking packing;
+  CompressionCalibration c(packing.targets_of({26.9e9, 0.296, 33.8e6, 1.0}), {}, kPoorStart, 12);
+  calibrate(c, packing);
+  const auto j = calibration_summary(c, 18, {}, fast);
+  EXPECT_EQ(j.at("elastic_trials").get<std::string>(), "dynamic");
+  EXPECT_EQ(j.at("elastic_trials_velocity_mm_s").get<double>(), 100.0);
+  EXPECT_FALSE(calibration_summary(c, 18).contains("elastic_trials_velocity_mm_s"));
+
+  // One line naming the option: a speed that is not positive, or one given to solved trials.
+  EXPECT_NE(test::input_error_of([] { elastic_trials(false, 0.0); }).find("--elastic-velocity-mm-s"), std::string::npos);
+  const std::string both = test::input_error_of([] { elastic_trials(true, 100.0); });
+  EXPECT_NE(both.find("--elastic-velocity-mm-s"), std::string::npos);
+  EXPECT_NE(both.find("static"), std::string::npos);
+}

@@ -34,6 +34,11 @@ CalibrationTargets compression_targets(double E_st_GPa, double nu_st, double sig
           E_d_GPa ? "E_d" : "E_st", nu_d ? "nu_d" : "nu_st"};
 }
 
+CalibrationTolerances compression_tolerances(double E_pct, double nu, double sigma_pct) {
+  return {require_positive("--tolerance-E-pct", E_pct, "%") / 100, require_positive("--tolerance-nu", nu),
+          require_positive("--tolerance-sigma-pct", sigma_pct, "%") / 100};
+}
+
 CompressionCalibration::CompressionCalibration(const CalibrationTargets& targets,
                                                const CalibrationTolerances& tolerances, const DemParameters& start,
                                                int max_trials)

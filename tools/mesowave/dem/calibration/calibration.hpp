@@ -45,6 +45,10 @@ struct CalibrationTolerances {
   double sigma_relative = 0.02;  ///< 2 % on the peak stress
 };
 
+/// mw-calibrate's tolerances in its options' units (--tolerance-E-pct, --tolerance-nu,
+/// --tolerance-sigma-pct): InputError naming the option for one <= 0.
+CalibrationTolerances compression_tolerances(double E_pct, double nu, double sigma_pct);
+
 struct DemParameters {
   double E_dem_Pa = 0;
   double nu_dem = 0;      ///< K_s / K_n

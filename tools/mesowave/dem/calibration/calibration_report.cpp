@@ -4,6 +4,7 @@
 #include <fstream>
 #include <ostream>
 
+#include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/dem/contact/material_parameters.hpp"
@@ -27,8 +28,16 @@ std::vector<std::string> TrialCommand::argv(int k, const std::vector<std::string
   return a;
 }
 
+ElasticTrials elastic_trials(bool static_solve, std::optional<double> velocity_mm_s) {
+  if (velocity_mm_s) {
+    require_positive("--elastic-velocity-mm-s", *velocity_mm_s, "mm/s");
+    if (static_solve) throw InputError("--elastic-velocity-mm-s is the speed of stepped elastic trials: --elastic-trials static has none");
+  }
+  return {static_solve, velocity_mm_s};
+}
+
 std::vector<std::string> compression_trial_options(const CalibrationTrial& t, const CalibrationTargets& targets,
-                                                   double friction_deg, bool static_elastic) {
+                                                   double friction_deg, const ElasticTrials& elastic) {
   const auto& p = t.parameters;
   const auto option = [](const char* key) { return material_parameter(key).option; };
   std::vector<std::string> options = {option("E_dem_GPa"), format_exact(p.E_dem_Pa / 1e9), option("nu_dem"),
@@ -38,7 +47,8 @@ std::vector<std::string> compression_trial_options(const CalibrationTrial& t, co
     const double b = 0.1 * targets.sigma_Pa / 1e6, a = targets.sigma_Pa / 3 / 1e6;
     options.insert(options.end(), {"--unbreakable-bonds", "--model", "linear", "--modulus-levels-MPa",
                                    format_exact(b) + "," + format_exact(a), "--stop-at-MPa", format_exact(1.02 * a)});
-    if (static_elastic) options.push_back("--static");
+    if (elastic.static_solve) options.push_back("--static");
+    else if (elastic.velocity_mm_s) options.insert(options.end(), {"--velocity-mm-s", format_exact(*elastic.velocity_mm_s)});
   } else {
     options.insert(options.end(), {"--T-MPa", format_exact(p.T_Pa / 1e6), "--C-MPa", format_exact(p.c_over_t * p.T_Pa / 1e6)});
   }
@@ -119,9 +129,9 @@ std::vector<std::string> shared_prefix_options(const CalibrationTrial& t, const 
 }
 
 void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_deg, std::ostream& log,
-                bool static_elastic, const IntactCheckpointFile& intact_file) {
+                const ElasticTrials& elastic, const IntactCheckpointFile& intact_file) {
   while (auto trial = c.next()) {
-    auto options = compression_trial_options(*trial, c.targets(), friction_deg, static_elastic);
+    auto options = compression_trial_options(*trial, c.targets(), friction_deg, elastic);
     const auto shared = shared_prefix_options(*trial, c.trials(), intact_file);
     options.insert(options.end(), shared.begin(), shared.end());
     auto done = with_results(*trial, run(trial->number, options));
@@ -142,7 +152,7 @@ void run_trials(RodCalibration& c, const TrialRunner& run, std::ostream& log) {
 }
 
 nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_deg,
-                                           const TargetOrigins& origins, const std::string& elastic_trials) {
+                                           const TargetOrigins& origins, const ElasticTrials& elastic) {
   const CalibrationTrial& best = c.result();
   const auto& p = best.parameters;
   const auto& targets = c.targets();
@@ -166,7 +176,8 @@ nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, doub
   j["trial_count"] = c.trials().size();
   j["calibrated_by_trial"] = best.summary_file;
   j["trials_wall_s"] = total_wall;
-  j["elastic_trials"] = elastic_trials;  // dynamic (stepped) or static (one solve of the linearised network)
+  j["elastic_trials"] = elastic.static_solve ? "static" : "dynamic";  // stepped, or one solve of the linearised network
+  if (!elastic.static_solve && elastic.velocity_mm_s) j["elastic_trials_velocity_mm_s"] = *elastic.velocity_mm_s;
   const auto& tol = c.tolerances();
   const auto target = [](double value, const char* unit, const std::string& tolerance, double calibrated,
                          const nlohmann::ordered_json& origin) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,8 +39,22 @@ struct TrialCommand {
 /// just above; a failure trial runs the full law with T and C = (C/T) T.
 /// `static_elastic`: the elastic trials as one static solve of the same network
 /// (mw-dem run --static, static_elastic.hpp) instead of stepped; failure trials stay dynamic.
+/// How the elastic trials run: stepped, or solved (mw-dem run --static); stepped, the moving walls'
+/// speed when not the scene's (mw-dem run --velocity-mm-s). The linearised network's only rate
+/// effect is inertia, held below the scene's quasi-static bound by the test itself: on the 50 mm
+/// cube at 100 mm/s, four times the shipped scene's 25 mm/s, E_glob and nu_glob moved by -1.4e-5
+/// (relative) and -1.1e-5 in 3.7x fewer steps (docs/calibration.md, "The elastic trials' speed").
+struct ElasticTrials {
+  bool static_solve = false;
+  std::optional<double> velocity_mm_s;
+};
+
+/// mw-calibrate's --elastic-trials static and --elastic-velocity-mm-s, checked: a speed must be
+/// positive and is for stepped trials only (InputError naming the option).
+ElasticTrials elastic_trials(bool static_solve, std::optional<double> velocity_mm_s);
+
 std::vector<std::string> compression_trial_options(const CalibrationTrial& trial, const CalibrationTargets& targets,
-                                                   double friction_angle_deg, bool static_elastic = false);
+                                                   double friction_angle_deg, const ElasticTrials& elastic = {});
 /// The trial with the results of its mw-dem summary (the JSON file `summary_file`).
 CalibrationTrial with_results(CalibrationTrial trial, const std::filesystem::path& summary_file);
 /// The rod trial with the results of its mw-dem summary (E_fit_GPa, wall_s).
@@ -65,7 +80,7 @@ std::vector<std::string> shared_prefix_options(const CalibrationTrial& trial, co
 /// ("mw-calibrate: trial 3 (elastic): ...", describe()); with `intact_file` the failure
 /// trials share their elastic prefix (shared_prefix_options).
 void run_trials(CompressionCalibration& c, const TrialRunner& run, double friction_angle_deg, std::ostream& log,
-                bool static_elastic = false, const IntactCheckpointFile& intact_file = {});
+                const ElasticTrials& elastic = {}, const IntactCheckpointFile& intact_file = {});
 /// The rod's trials ("mw-calibrate rod: trial 1: E_dem 660 GPa -> E_DEM 220.6 GPa").
 void run_trials(RodCalibration& c, const TrialRunner& run, std::ostream& log);
 
@@ -85,9 +100,10 @@ struct TargetOrigins {
 /// CalibrationTargets::E_name, nu_name, which also name the flat `<name>_target` keys) its value, unit, tolerance, the
 /// calibrated model's value and `origins`' record of where it was read from (nested: data for
 /// the reader, never an option value of `mw-dem --from`).
-/// `elastic_trials`: how the elastic trials ran ("dynamic" or "static"), recorded as elastic_trials.
+/// `elastic`: how the elastic trials ran, recorded as elastic_trials ("dynamic" or "static") and,
+/// when not the scene's, elastic_trials_velocity_mm_s.
 nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, double friction_angle_deg,
-                                           const TargetOrigins& origins = {}, const std::string& elastic_trials = "dynamic");
+                                           const TargetOrigins& origins = {}, const ElasticTrials& elastic = {});
 /// The "targets" of a calibration_summary as a table, one row per target: target, value,
 /// unit, tolerance, calibrated (the model's E_glob, nu_glob, sigma_dem), read_from (the file or
 /// "command line"), entry, source, cite and the first 12 hex digits of the file's SHA-256 (the
