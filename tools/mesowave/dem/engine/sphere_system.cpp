@@ -238,10 +238,13 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
         const unsigned side = code & 1u;
         const double sign = side ? 1.0 : -1.0;
         f += sign * o.f;
-        t -= o.arm[side] * o.c;
+        t -= o.t[side];
         if (moment) t += sign * moment[code >> 1];
       }
-      f_acc_[k] = f + f_ext_[k];
+      // Only forced spheres read their external force: f + 0 would be f anyway (f is never -0:
+      // it is summed from +0, and a sum is -0 only when both terms are).
+      if (is_forced_[k]) f += f_ext_[k];
+      f_acc_[k] = f;
       t_acc_[k] = t;
     }
     update_motion(begin, end, blk, dt, evaluate_energy);
