@@ -243,7 +243,12 @@ private:
   EnergyAccount energy_;
 
   void integrate(double dt, bool evaluate_energy);
-  void update_motion(std::size_t begin, std::size_t end, std::size_t block, double dt, bool evaluate_energy);
+  /// Moves the spheres of one block; writes its damping terms (Eq. 7's work, per component:
+  /// translations, then rotations, each padded to 3 kSphereBlock with +0) to `damping_terms`.
+  void update_motion(std::size_t begin, std::size_t end, std::size_t block, double dt, bool evaluate_energy,
+                     double* damping_terms);
+  static constexpr std::size_t kDampingGroup = 4;
+  static constexpr std::size_t kDampingTerms = 6 * kSphereBlock;
 
   std::size_t partitions_ = 1, sphere_chunk_ = 1, cross_begin_ = 0, cross_blocks_ = 0;
   std::vector<std::uint32_t> interior_start_;  ///< partitions + 1
@@ -356,11 +361,6 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
         for (std::size_t q = 0; q < m; ++q) peak2 = std::max(peak2, results.ratio2[q]);
       }
       if (interior) {
-        // The second spheres' sums of the next chunk, asked for now (L2 -> L1 while this one is added).
-        for (std::size_t b = chunk + kChunk, e = std::min(end, chunk + 2 * kChunk); b < e; ++b) {
-          __builtin_prefetch(&f[second[b]], 1);
-          __builtin_prefetch(&t[second[b]], 1);
-        }
         for (std::size_t q = 0; q < m; ++q) {
           const std::size_t b = chunk + q;
           const std::uint32_t i = first[b], j = second[b];
