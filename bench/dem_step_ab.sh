@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Two builds' DEM step timed against each other on a shared machine (docs/benchmarks.md, "The step
 # near the memory limit"): bench_dem of build A and of build B alternated A, B, A, B, ... in one
-# script, so that both see the same load; the 1-minute load average is printed before each run.
+# script, benchmark by benchmark, so that both see the same load; the 1-minute load average is
+# printed before each run.
 # Medians over the rounds (the `median` lines at the end), per benchmark and build.
 #
 #   MESOWAVE_BENCH_PACKING=cube.h5 bench/dem_step_ab.sh OLD/bin/bench_dem NEW/bin/bench_dem [rounds] [filter] [min_time]
@@ -15,13 +16,17 @@ MIN_TIME=${5:-1}
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 echo "# $(date -u +%FT%TZ) A=$A B=$B rounds=$ROUNDS filter=$FILTER min_time=$MIN_TIME"
+# Alternated per benchmark (A, B on one benchmark, then the next), so that a pair sees the same load.
+names=$("$A" --benchmark_list_tests=true --benchmark_filter="$FILTER" 2>/dev/null)
 for round in $(seq 1 "$ROUNDS"); do
-  for side in A B; do
-    bin=$A
-    [ "$side" = B ] && bin=$B
-    echo "# round $round $side load $(cut -d' ' -f1 /proc/loadavg)"
-    "$bin" --benchmark_filter="$FILTER" --benchmark_min_time="$MIN_TIME" 2>/dev/null | grep '^BM_' |
-      sed "s/^/$side /" | tee -a "$out"
+  for name in $names; do
+    for side in A B; do
+      bin=$A
+      [ "$side" = B ] && bin=$B
+      echo "# round $round $side load $(cut -d' ' -f1 /proc/loadavg)"
+      "$bin" --benchmark_filter="^$name\$" --benchmark_min_time="$MIN_TIME" 2>/dev/null | grep '^BM_' |
+        sed "s/^/$side /" | tee -a "$out"
+    done
   done
 done
 # Median of the wall and CPU ms per benchmark and side.

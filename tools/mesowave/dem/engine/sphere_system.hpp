@@ -321,9 +321,10 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
     Vec3* t = t_acc_.data();
     // Inside a partition the contacts come in runs of one first sphere (the pairs are sorted by
     // it, bonds and detected contacts each): that sphere's force and torque are summed in
-    // registers over the run and stored when the run ends. Each sphere still gets the same
-    // terms in the same order (slot order): within a run the first sphere is no contact's
-    // second (first < second), so no other term reaches it between.
+    // registers over the run and stored when the run ends, so a contact reads and writes only
+    // its second sphere's sums in memory. Each sphere still gets the same terms in the same order
+    // (slot order): within a run the first sphere is no contact's second (first < second), so no
+    // other term reaches it in between. (Unsorted contacts would only make the runs shorter.)
     std::uint32_t run = begin < end ? first[begin] : 0;
     Vec3 run_f = interior && begin < end ? f[run] : Vec3{}, run_t = interior && begin < end ? t[run] : Vec3{};
     ChunkResults<moments> results;
