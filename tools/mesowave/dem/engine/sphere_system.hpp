@@ -353,12 +353,9 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
         // that dissipate), which changes nothing that is read.
         if (sum_elastic)
           for (std::size_t q = 0; q < m; ++q) elastic += results.elastic[q];
-        // Zero terms (no sliding: nearly every contact of a wave run) are skipped, which takes the
-        // sum's chain of additions off the loop and changes no bit: x + 0 is x, and the sum starts
-        // at +0, which stays +0 when -0 is added.
+        // (Skipping the plastic sum's zero terms, exact too, measured slower: docs/benchmarks.md.)
         if (sum_plastic)
-          for (std::size_t q = 0; q < m; ++q)
-            if (results.plastic[q] != 0) plastic += results.plastic[q];
+          for (std::size_t q = 0; q < m; ++q) plastic += results.plastic[q];
         for (std::size_t q = 0; q < m; ++q) peak2 = std::max(peak2, results.ratio2[q]);
       }
       if (interior) {
