@@ -109,7 +109,6 @@ inline void CohesiveFrictionalContact::run(SphereSystem& system, double dt, bool
   const double T_ref = std::isfinite(T) ? T : 0.0, C_ref = std::isfinite(C) ? C : 0.0;
   const double T_none = std::isfinite(T) ? 0.0 : 1.0, C_none = std::isfinite(C) ? 0.0 : 1.0;
   const double half_dt = 0.5 * dt;
-  const double energy_on = evaluate_energy ? 1.0 : 0.0;
   const double* radius = system.spheres().radius_m.data();
   const Vec3* x = system.positions();
   const Vec3* v = system.velocities();
@@ -121,68 +120,79 @@ inline void CohesiveFrictionalContact::run(SphereSystem& system, double dt, bool
   const std::uint32_t* first = system.first();
   const std::uint32_t* second = system.second();
 
-  system.template for_each_contact<Result>([&](std::size_t b, Result& r) __attribute__((always_inline)) {
-    const std::uint32_t i = first[b], j = second[b];
-    const Vec3 d = x[j] - x[i];
-    const double dist = std::sqrt(norm2(d));
-    const double ri = radius[i], rj = radius[j], sum = ri + rj;
-    const double inv = 1.0 / (sum * dist);  // one division: 1/dist, K_n and the factor a
-    const Vec3 n = (sum * inv) * d;
-    const double u = sum - dist;
-    const double kn = two_E_dem * ri * rj * dist * inv, ks = ratio * kn;
+  // Two versions of the loop, the energy's divisions only in the one for energy steps (on the
+  // others nothing reads the elastic energy).
+  const auto contacts = [&](auto energy) __attribute__((always_inline)) {
+    [[maybe_unused]] constexpr double energy_on = decltype(energy)::value ? 1.0 : 0.0;
+    system.template for_each_contact<Result>([&](std::size_t b, Result& r) __attribute__((always_inline)) {
+      const std::uint32_t i = first[b], j = second[b];
+      const Vec3 d = x[j] - x[i];
+      const double dist = std::sqrt(norm2(d));
+      const double ri = radius[i], rj = radius[j], sum = ri + rj;
+      const double inv = 1.0 / (sum * dist);  // one division: 1/dist, K_n and the factor a
+      const Vec3 n = (sum * inv) * d;
+      const double u = sum - dist;
+      const double kn = two_E_dem * ri * rj * dist * inv, ks = ratio * kn;
 
-    // ScGeom::precompute + rotate: carry the shear force with the contact frame.
-    const Vec3 n_prev{nx[b], ny[b], nz[b]};
-    Vec3 fs{sx[b], sy[b], sz[b]};
-    const Vec3 wi = w[i], wj = w[j];
-    fs -= cross(fs, cross(n_prev, n));
-    fs -= cross(fs, (half_dt * dot(n_prev, wi + wj)) * n_prev);
-    // Shear increment, Eq. (2): ScGeom::getIncidentVel with avoidGranularRatcheting.
-    Vec3 v_rel = (sum * sum * inv) * (v[j] - v[i]) - rj * cross(wj, n) - ri * cross(wi, n);
-    v_rel -= dot(n, v_rel) * n;
-    fs -= (ks * dt) * v_rel;
-    const double fn = kn * (u - overlap0[b]);  // Eq. (1)
-    const double fs2 = norm2(fs);
+      // ScGeom::precompute + rotate: carry the shear force with the contact frame.
+      const Vec3 n_prev{nx[b], ny[b], nz[b]};
+      Vec3 fs{sx[b], sy[b], sz[b]};
+      const Vec3 wi = w[i], wj = w[j];
+      fs -= cross(fs, cross(n_prev, n));
+      fs -= cross(fs, (half_dt * dot(n_prev, wi + wj)) * n_prev);
+      // Shear increment, Eq. (2): ScGeom::getIncidentVel with avoidGranularRatcheting.
+      Vec3 v_rel = (sum * sum * inv) * (v[j] - v[i]) - rj * cross(wj, n) - ri * cross(wi, n);
+      v_rel -= dot(n, v_rel) * n;
+      fs -= (ks * dt) * v_rel;
+      const double fn = kn * (u - overlap0[b]);  // Eq. (1)
+      const double fs2 = norm2(fs);
 
-    // Strength and friction (Eqs. 4-6) as 0/1 flags and selects on doubles, no
-    // branches, so the chunk runs as one vector loop.
-    const double r_min = std::min(ri, rj), r2 = r_min * r_min;
-    const double cohesive = cohesion[b];                                  // 1 while the bond holds
-    const double tension_break = cohesive * (-fn > T * r2 ? 1.0 : 0.0);   // Eq. (6); Yade removes the interaction
-    const double cohesive_max = std::max(0.0, C * r2 + fn * tan_mu);      // Eq. (4)
-    double shear_break = (cohesive - tension_break) * (fs2 > cohesive_max * cohesive_max ? 1.0 : 0.0);
-    // An extension's own strengths (moments) break the bond as a shear failure does (Yade's checkPlasticity).
-    if constexpr (extended)
-      shear_break = std::max(shear_break, (cohesive - tension_break) *
-                                              extension.trial(b, i, j, n, n_prev, wi, wj, kn, ks, fn, r_min, dt));
-    const double intact = cohesive - tension_break - shear_break;
-    const double open = tension_break + (1.0 - cohesive) * (fn <= 0.0 ? 1.0 : 0.0);  // no force, shear history reset
-    const double max_fs = intact != 0.0 ? cohesive_max : std::max(0.0, fn * tan_mu);  // Eq. (5) once cohesion is gone
-    const double slip = (1.0 - open) * (fs2 > max_fs * max_fs ? 1.0 : 0.0);
-    const double slip_scale = max_fs / std::sqrt(fs2);
-    const double scale = open != 0.0 ? 0.0 : (slip != 0.0 ? slip_scale : 1.0);
-    const Vec3 fs_new = scale * fs;
-    const double no_normal = std::max(open, shear_break * (fn < 0.0 ? 1.0 : 0.0));
-    const double fn_new = no_normal != 0.0 ? 0.0 : fn;
-    cohesion[b] = intact;
-    nx[b] = n.x, ny[b] = n.y, nz[b] = n.z;
-    sx[b] = fs_new.x, sy[b] = fs_new.y, sz[b] = fs_new.z;
+      // Strength and friction (Eqs. 4-6) as 0/1 flags and selects on doubles, no
+      // branches, so the chunk runs as one vector loop.
+      const double r_min = std::min(ri, rj), r2 = r_min * r_min;
+      const double cohesive = cohesion[b];                                  // 1 while the bond holds
+      const double tension_break = cohesive * (-fn > T * r2 ? 1.0 : 0.0);   // Eq. (6); Yade removes the interaction
+      const double cohesive_max = std::max(0.0, C * r2 + fn * tan_mu);      // Eq. (4)
+      double shear_break = (cohesive - tension_break) * (fs2 > cohesive_max * cohesive_max ? 1.0 : 0.0);
+      // An extension's own strengths (moments) break the bond as a shear failure does (Yade's checkPlasticity).
+      if constexpr (extended)
+        shear_break = std::max(shear_break, (cohesive - tension_break) *
+                                                extension.trial(b, i, j, n, n_prev, wi, wj, kn, ks, fn, r_min, dt));
+      const double intact = cohesive - tension_break - shear_break;
+      const double open = tension_break + (1.0 - cohesive) * (fn <= 0.0 ? 1.0 : 0.0);  // no force, shear history reset
+      const double max_fs = intact != 0.0 ? cohesive_max : std::max(0.0, fn * tan_mu);  // Eq. (5) once cohesion is gone
+      const double slip = (1.0 - open) * (fs2 > max_fs * max_fs ? 1.0 : 0.0);
+      const double slip_scale = max_fs / std::sqrt(fs2);
+      const double scale = open != 0.0 ? 0.0 : (slip != 0.0 ? slip_scale : 1.0);
+      const Vec3 fs_new = scale * fs;
+      const double no_normal = std::max(open, shear_break * (fn < 0.0 ? 1.0 : 0.0));
+      const double fn_new = no_normal != 0.0 ? 0.0 : fn;
+      cohesion[b] = intact;
+      nx[b] = n.x, ny[b] = n.y, nz[b] = n.z;
+      sx[b] = fs_new.x, sy[b] = fs_new.y, sz[b] = fs_new.z;
 
-    r.f = fn_new * n + fs_new;
-    r.c = cross(n, fs_new);
-    r.arm[0] = ri - 0.5 * u;
-    r.arm[1] = rj - 0.5 * u;
-    const double inv_ks_raw = 1.0 / ks;
-    const double inv_ks = ks > 0.0 ? inv_ks_raw : 0.0;
-    // Excess shear sheared off (Yade's plasticDissipation); zero without sliding.
-    r.plastic = dot(fs - fs_new, fs_new) * inv_ks;
-    // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
-    const double sn = T_ref * r2 + T_none * kn * r_min, ss = C_ref * r2 + C_none * kn * r_min;
-    r.ratio2 = intact * std::max(fn * fn / (sn * sn), fs2 / (ss * ss));
-    // The shear increment carries the factor (r_i + r_j)/|x_j - x_i|: the spring is that times K_s.
-    r.elastic = energy_on * (0.5 * fn_new * fn_new / kn + 0.5 * norm2(fs_new) * dist * inv * dist * inv_ks);
-    if constexpr (extended) extension.finish(b, intact, energy_on, ks, r);
-  });
+      r.f = fn_new * n + fs_new;
+      r.c = cross(n, fs_new);
+      r.arm[0] = ri - 0.5 * u;
+      r.arm[1] = rj - 0.5 * u;
+      const double inv_ks_raw = 1.0 / ks;
+      const double inv_ks = ks > 0.0 ? inv_ks_raw : 0.0;
+      // Excess shear sheared off (Yade's plasticDissipation); zero without sliding.
+      r.plastic = dot(fs - fs_new, fs_new) * inv_ks;
+      // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
+      const double sn = T_ref * r2 + T_none * kn * r_min, ss = C_ref * r2 + C_none * kn * r_min;
+      r.ratio2 = intact * std::max(fn * fn / (sn * sn), fs2 / (ss * ss));
+      // The shear increment carries the factor (r_i + r_j)/|x_j - x_i|: the spring is that times K_s.
+      r.elastic = 0;
+      if constexpr (decltype(energy)::value)
+        r.elastic = 0.5 * fn_new * fn_new / kn + 0.5 * norm2(fs_new) * dist * inv * dist * inv_ks;
+      if constexpr (extended) extension.finish(b, intact, energy_on, ks, r);
+    }, decltype(energy)::value, true);
+  };
+  if (evaluate_energy)
+    contacts(std::true_type{});
+  else
+    contacts(std::false_type{});
 }
 
 }  // namespace mesowave::dem

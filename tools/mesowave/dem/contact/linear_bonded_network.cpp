@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "mesowave/core/kernel_clones.hpp"
 
@@ -30,11 +31,10 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
   const CohesiveFrictionalMaterial& material = system.material();
   const double two_E_dem = 2.0 * material.E_dem_Pa, ratio = material.stiffness_ratio;
   const double T = material.tensile_strength_Pa, C = material.cohesion_Pa;
-  // The strengths' and the energy's choices as 0/1 factors, not bools: the vectoriser cannot select
-  // on a scalar bool inside the vector loop (GCC 12 left the whole loop scalar).
+  // The strengths' choices as 0/1 factors, not bools: the vectoriser cannot select on a scalar bool
+  // inside the vector loop (GCC 12 left the whole loop scalar).
   const double T_ref = std::isfinite(T) ? T : 0.0, C_ref = std::isfinite(C) ? C : 0.0;
   const double T_none = std::isfinite(T) ? 0.0 : 1.0, C_none = std::isfinite(C) ? 0.0 : 1.0;
-  const double energy_on = evaluate_energy ? 1.0 : 0.0;
   const double* radius = system.spheres().radius_m.data();
   const Vec3* d = system.positions();
   const Vec3* theta = system.rotations();
@@ -42,28 +42,39 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
   const std::uint32_t* first = system.first();
   const std::uint32_t* second = system.second();
 
-  system.for_each_contact([&](std::size_t b, SphereSystem::ContactResult& r) __attribute__((always_inline)) {
-    const std::uint32_t i = first[b], j = second[b];
-    const double ri = radius[i], rj = radius[j];
-    const LinearBondResponse q =
-        linear_bond_response(two_E_dem, ratio, ri, rj, overlap0[b], Vec3{nx[b], ny[b], nz[b]}, d[j] - d[i], theta[i], theta[j]);
-    const double fn = q.fn, kn = q.kn, ks = q.ks, a0 = q.a0;
-    const Vec3 fs = q.fs;
-    r.f = q.f;
-    r.c = q.c;
-    r.arm[0] = q.arm_i;
-    r.arm[1] = q.arm_j;
-    const double fs2 = norm2(fs);
-    // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
-    const double r_min = std::min(ri, rj);
-    // (x + 0 and 1 x are exact: the same bits as choosing with a branch.)
-    const double sn = T_ref * r_min * r_min + T_none * (kn * r_min), ss = C_ref * r_min * r_min + C_none * (kn * r_min);
-    r.ratio2 = std::max(fn * fn / (sn * sn), fs2 / (ss * ss));
-    r.plastic = 0;
-    // The shear spring acting on a0 P_t dd is a0 K_s (Yade's incident-velocity factor).
-    const double shear_energy = 0.5 * fs2 / (a0 * ks);
-    r.elastic = energy_on * (0.5 * fn * fn / kn + (ks > 0 ? shear_energy : 0.0));
-  });
+  // Two versions of the loop, the energy's divisions only in the one for energy steps (on the
+  // others nothing reads the elastic energy).
+  const auto contacts = [&](auto energy) __attribute__((always_inline)) {
+    system.for_each_contact([&](std::size_t b, SphereSystem::ContactResult& r) __attribute__((always_inline)) {
+      const std::uint32_t i = first[b], j = second[b];
+      const double ri = radius[i], rj = radius[j];
+      const LinearBondResponse q = linear_bond_response(two_E_dem, ratio, ri, rj, overlap0[b], Vec3{nx[b], ny[b], nz[b]},
+                                                        d[j] - d[i], theta[i], theta[j]);
+      const double fn = q.fn, kn = q.kn, ks = q.ks, a0 = q.a0;
+      const Vec3 fs = q.fs;
+      r.f = q.f;
+      r.c = q.c;
+      r.arm[0] = q.arm_i;
+      r.arm[1] = q.arm_j;
+      const double fs2 = norm2(fs);
+      // Bond force / strength (T R^2, C R^2; K_n R for bonds that never break).
+      const double r_min = std::min(ri, rj);
+      // (x + 0 and 1 x are exact: the same bits as choosing with a branch.)
+      const double sn = T_ref * r_min * r_min + T_none * (kn * r_min), ss = C_ref * r_min * r_min + C_none * (kn * r_min);
+      r.ratio2 = std::max(fn * fn / (sn * sn), fs2 / (ss * ss));
+      r.plastic = 0;
+      r.elastic = 0;
+      if constexpr (decltype(energy)::value) {
+        // The shear spring acting on a0 P_t dd is a0 K_s (Yade's incident-velocity factor).
+        const double shear_energy = 0.5 * fs2 / (a0 * ks);
+        r.elastic = 0.5 * fn * fn / kn + (ks > 0 ? shear_energy : 0.0);
+      }
+    }, decltype(energy)::value, false);
+  };
+  if (evaluate_energy)
+    contacts(std::true_type{});
+  else
+    contacts(std::false_type{});
 }
 
 }  // namespace mesowave::dem

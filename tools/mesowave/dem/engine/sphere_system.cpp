@@ -224,44 +224,69 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
   const ContactOut* out = out_.data();
   const Vec3* moment = out_moment_.empty() ? nullptr : out_moment_.data();
 
+  // The blocks in groups of kDampingGroup: each block's damping terms are summed in component
+  // order, as one chain of additions (the order fixes the bits); the chains of a group's blocks
+  // are independent, so they are added side by side (kDampingGroup additions in flight instead
+  // of one waiting for the last).
+  const std::size_t groups = (blocks - first_block + kDampingGroup - 1) / kDampingGroup;
+  const bool damped = material_.damping != 0 || material_.viscous_damping_1_s != 0;
 #pragma omp for schedule(static)
-  for (std::size_t blk = first_block; blk < blocks; ++blk) {
-    const std::size_t begin = blk * kSphereBlock, end = std::min(n, begin + kSphereBlock);
-    // Total force and torque, in a fixed order: contacts inside the partition
-    // (summed in slot order by for_each_contact), those across partitions,
-    // then external loads.
-    for (std::size_t k = begin; k < end; ++k) {
-      Vec3 f = f_acc_[k], t = t_acc_[k];
-      for (std::uint32_t e = offset[k]; e < offset[k + 1]; ++e) {
-        const std::uint32_t code = entry[e];
-        const ContactOut& o = out[code >> 1];
-        const unsigned side = code & 1u;
-        const double sign = side ? 1.0 : -1.0;
-        f += sign * o.f;
-        t -= o.arm[side] * o.c;
-        if (moment) t += sign * moment[code >> 1];
+  for (std::size_t group = 0; group < groups; ++group) {
+    const std::size_t b0 = first_block + group * kDampingGroup, b1 = std::min(blocks, b0 + kDampingGroup);
+    alignas(64) double damping[kDampingGroup][kDampingTerms];
+    for (std::size_t blk = b0; blk < b1; ++blk) {
+      const std::size_t begin = blk * kSphereBlock, end = std::min(n, begin + kSphereBlock);
+      // Total force and torque, in a fixed order: contacts inside the partition
+      // (summed in slot order by for_each_contact), those across partitions,
+      // then external loads.
+      for (std::size_t k = begin; k < end; ++k) {
+        Vec3 f = f_acc_[k], t = t_acc_[k];
+        for (std::uint32_t e = offset[k]; e < offset[k + 1]; ++e) {
+          const std::uint32_t code = entry[e];
+          const ContactOut& o = out[code >> 1];
+          const unsigned side = code & 1u;
+          const double sign = side ? 1.0 : -1.0;
+          f += sign * o.f;
+          t -= o.t[side];
+          if (moment) t += sign * moment[code >> 1];
+        }
+        // Only forced spheres read their external force: f + 0 would be f anyway (f is never -0:
+        // it is summed from +0, and a sum is -0 only when both terms are).
+        if (is_forced_[k]) f += f_ext_[k];
+        f_acc_[k] = f;
+        t_acc_[k] = t;
       }
-      f_acc_[k] = f + f_ext_[k];
-      t_acc_[k] = t;
+      update_motion(begin, end, blk, dt, evaluate_energy, damping[blk - b0]);
     }
-    update_motion(begin, end, blk, dt, evaluate_energy);
+    if (!damped) continue;
+    double sum[kDampingGroup] = {};
+    if (b1 - b0 == kDampingGroup) {
+      for (std::size_t c = 0; c < kDampingTerms; ++c)
+        for (std::size_t g = 0; g < kDampingGroup; ++g) sum[g] += damping[g][c];
+    } else {
+      for (std::size_t g = 0; g < b1 - b0; ++g)
+        for (std::size_t c = 0; c < kDampingTerms; ++c) sum[g] += damping[g][c];
+    }
+    for (std::size_t blk = b0; blk < b1; ++blk) sphere_block_damping_[blk] += sum[blk - b0];
   }
 }
 
 // Eq. (7) and leapfrog, per Cartesian component, over the flat arrays of one
 // block: one vector loop for the translations, one for the rotations. The
-// per-component energy terms go through a small buffer and are added in
-// component order, so the sums do not depend on the vector width.
+// per-component energy terms go through a buffer and are added in component
+// order, so the sums do not depend on the vector width: the kinetic energy
+// here, the damping terms by the caller (integrate), translations then rotations.
 MESOWAVE_KERNEL_CLONES
-void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t blk, double dt, bool evaluate_energy) {
+void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t blk, double dt, bool evaluate_energy,
+                                 double* damping_terms) {
   const double alpha = material_.damping, half_dt = 0.5 * dt;
   // Mass-proportional viscous damping (scene.hpp, damping_law viscous), implicit midpoint:
   // v_{n+1/2} = ((1 - c dt/2) v_{n-1/2} + dt F/m) / (1 + c dt/2), i.e. a = (a - c v_{n-1/2}) / (1 + c dt/2).
   const double c_visc = material_.viscous_damping_1_s, inv_den = 1.0 / (1.0 + half_dt * c_visc);
   const bool viscous = c_visc != 0;
   const std::size_t m = 3 * (end - begin);
-  double terms[2][3 * kSphereBlock];
-  double vmax2 = 0, kinetic = 0, damping = 0;
+  double kin[3 * kSphereBlock];
+  double vmax2 = 0, kinetic = 0;
   for (int part = 0; part < 2; ++part) {
     const bool rotation = part == 1;
     double* f = &(rotation ? t_acc_ : f_acc_)[begin].x;
@@ -270,8 +295,7 @@ void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t
     double* a_free_out = &a_undamped_[begin].x;
     double* x = rotation ? (track_rotation_ ? &theta_[begin].x : nullptr) : &x_[begin].x;
     const double* inv_m = &(rotation ? inv_inertia3_ : inv_mass3_)[3 * begin];
-    double* kin = terms[0];
-    double* dmp = terms[1];
+    double* dmp = damping_terms + part * 3 * kSphereBlock;
     double part_vmax2 = 0;
 #pragma omp simd reduction(max : part_vmax2)
     for (std::size_t c = 0; c < m; ++c) {
@@ -298,13 +322,12 @@ void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t
 #pragma omp simd
       for (std::size_t c = 0; c < m; ++c) x[c] += dt * v[c];
     if (!rotation) vmax2 = part_vmax2;
+    // A short block's terms end in +0: adding it changes no sum (sums here are never -0).
+    std::fill(dmp + m, dmp + 3 * kSphereBlock, 0.0);
     if (evaluate_energy)
       for (std::size_t c = 0; c < m; ++c) kinetic += kin[c];
-    if (alpha != 0 || viscous)
-      for (std::size_t c = 0; c < m; ++c) damping += dmp[c];
   }
   sphere_block_kinetic_[blk] = kinetic;
-  sphere_block_damping_[blk] += damping;
   sphere_block_vmax2_[blk] = 3.0 * vmax2;  // |v|^2 <= 3 max_k v_k^2: a safe bound for contact detection
 }
 

@@ -146,17 +146,18 @@ public:
   /// Largest |v| after the last step.
   double max_speed() const { return max_speed_; }
 
-  /// Per contact: force on the second sphere (the first gets -f), c = n x f,
-  /// and the lever arms: the torque on the first sphere is -arm[0] c, on the
-  /// second -arm[1] c (Yade's applyForceAtContactPoint at the contact point).
-  struct alignas(64) ContactOut {
+  /// Per contact between partitions, what its two spheres gather: the force f on the
+  /// second sphere (the first gets -f) and the torques' parts t[0] = arm_0 c, t[1] = arm_1 c
+  /// (the torque on the first sphere is -t[0], on the second -t[1]).
+  struct ContactOut {
     Vec3 f;
-    Vec3 c;
-    double arm[2];
+    Vec3 t[2];
   };
-  /// What a law computes for one contact: the record above plus what the
-  /// simulation adds up (summed in slot order, never inside a vector loop, so
-  /// the sums do not depend on the vector width either).
+  /// What a law computes for one contact: the force on the second sphere (the first gets -f),
+  /// c = n x f and the lever arms - the torque on the first sphere is -arm[0] c, on the second
+  /// -arm[1] c (Yade's applyForceAtContactPoint at the contact point) - and what the simulation
+  /// adds up (summed in slot order, never inside a vector loop, so the sums do not depend on the
+  /// vector width either).
   struct ContactResult {
     Vec3 f;
     Vec3 c;
@@ -191,8 +192,10 @@ public:
   /// order on any number of threads.
   /// `Result` is ContactResult, or MomentContactResult for a law with moments
   /// (set_contacts(..., true) then keeps room for them).
+  /// `sum_elastic`: add up the elastic energies (energy steps); `sum_plastic`: the dissipation
+  /// (laws that slide).
   template <class Result = ContactResult, class Kernel>
-  void for_each_contact(Kernel&& kernel) __attribute__((always_inline));
+  void for_each_contact(Kernel&& kernel, bool sum_elastic, bool sum_plastic) __attribute__((always_inline));
 
   /// The integrator's blocking (kernels size their chunks by it).
   static constexpr std::size_t kContactBlock = 2048;
@@ -201,21 +204,24 @@ public:
   static constexpr std::size_t kSpheresPerPartition = 4096;
 
   /// One chunk's results, one array per component (structure of arrays), so that the kernel's
-  /// vector loop stores each component of kChunk contacts with contiguous vector stores.
+  /// vector loop stores each component of kChunk contacts with contiguous vector stores. The
+  /// torques' parts arm c are formed there too (ti = arm_0 c, tj = arm_1 c: the same products the
+  /// spheres' sums then subtract), so that the scalar pass that adds them up only adds.
   template <bool Moments>
-  struct ChunkResults {
-    double f[3][kChunk], c[3][kChunk], arm[2][kChunk], elastic[kChunk], plastic[kChunk], ratio2[kChunk];
+  struct alignas(64) ChunkResults {
+    double f[3][kChunk], ti[3][kChunk], tj[3][kChunk], elastic[kChunk], plastic[kChunk], ratio2[kChunk];
     double m[Moments ? 3 : 1][Moments ? kChunk : 1];
     template <class Result>
     __attribute__((always_inline)) void store(std::size_t q, const Result& r) {
       f[0][q] = r.f.x, f[1][q] = r.f.y, f[2][q] = r.f.z;
-      c[0][q] = r.c.x, c[1][q] = r.c.y, c[2][q] = r.c.z;
-      arm[0][q] = r.arm[0], arm[1][q] = r.arm[1];
+      ti[0][q] = r.arm[0] * r.c.x, ti[1][q] = r.arm[0] * r.c.y, ti[2][q] = r.arm[0] * r.c.z;
+      tj[0][q] = r.arm[1] * r.c.x, tj[1][q] = r.arm[1] * r.c.y, tj[2][q] = r.arm[1] * r.c.z;
       elastic[q] = r.elastic, plastic[q] = r.plastic, ratio2[q] = r.ratio2;
       if constexpr (Moments) m[0][q] = r.m.x, m[1][q] = r.m.y, m[2][q] = r.m.z;
     }
     Vec3 force(std::size_t q) const { return {f[0][q], f[1][q], f[2][q]}; }
-    Vec3 torque_factor(std::size_t q) const { return {c[0][q], c[1][q], c[2][q]}; }
+    Vec3 torque_first(std::size_t q) const { return {ti[0][q], ti[1][q], ti[2][q]}; }
+    Vec3 torque_second(std::size_t q) const { return {tj[0][q], tj[1][q], tj[2][q]}; }
     Vec3 moment(std::size_t q) const { return {m[0][q], m[1][q], m[2][q]}; }
   };
 
@@ -237,7 +243,12 @@ private:
   EnergyAccount energy_;
 
   void integrate(double dt, bool evaluate_energy);
-  void update_motion(std::size_t begin, std::size_t end, std::size_t block, double dt, bool evaluate_energy);
+  /// Moves the spheres of one block; writes its damping terms (Eq. 7's work, per component:
+  /// translations, then rotations, each padded to 3 kSphereBlock with +0) to `damping_terms`.
+  void update_motion(std::size_t begin, std::size_t end, std::size_t block, double dt, bool evaluate_energy,
+                     double* damping_terms);
+  static constexpr std::size_t kDampingGroup = 4;
+  static constexpr std::size_t kDampingTerms = 6 * kSphereBlock;
 
   std::size_t partitions_ = 1, sphere_chunk_ = 1, cross_begin_ = 0, cross_blocks_ = 0;
   std::vector<std::uint32_t> interior_start_;  ///< partitions + 1
@@ -292,11 +303,13 @@ private:
 };
 
 template <class Result, class Kernel>
-inline void SphereSystem::for_each_contact(Kernel&& kernel) {
+inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bool sum_plastic) {
   constexpr bool moments = std::is_same_v<Result, MomentContactResult>;
   const std::size_t tasks = partitions_ + cross_blocks_;
   const std::size_t count = first_.size();
   const bool distributed = domain_ != nullptr;
+  const std::uint32_t* first = first_.data();
+  const std::uint32_t* second = second_.data();
 #pragma omp for schedule(dynamic, 1)
   for (std::size_t task = 0; task < tasks; ++task) {
     const bool interior = task < partitions_;
@@ -306,6 +319,14 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel) {
     double elastic = 0, plastic = 0, peak2 = 0;
     Vec3* f = f_acc_.data();
     Vec3* t = t_acc_.data();
+    // Inside a partition the contacts come in runs of one first sphere (the pairs are sorted by
+    // it, bonds and detected contacts each): that sphere's force and torque are summed in
+    // registers over the run and stored when the run ends, so a contact reads and writes only
+    // its second sphere's sums in memory. Each sphere still gets the same terms in the same order
+    // (slot order): within a run the first sphere is no contact's second (first < second), so no
+    // other term reaches it in between. (Unsorted contacts would only make the runs shorter.)
+    std::uint32_t run = begin < end ? first[begin] : 0;
+    Vec3 run_f = interior && begin < end ? f[run] : Vec3{}, run_t = interior && begin < end ? t[run] : Vec3{};
     ChunkResults<moments> results;
     for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
       const std::size_t m = std::min(kChunk, end - chunk);
@@ -321,40 +342,54 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel) {
         kernel(chunk + q, r);
         results.store(q, r);
       }
-      for (std::size_t q = 0; q < m; ++q) {
-        const Vec3 rf = results.force(q), rc = results.torque_factor(q);
-        const double arm0 = results.arm[0][q], arm1 = results.arm[1][q];
-        const std::size_t b = chunk + q;
-        if (distributed) {  // summed in slot order by share_step, over every rank's values
-          slot_elastic_[b] = results.elastic[q];
-          slot_plastic_[b] = results.plastic[q];
-          slot_ratio2_[b] = results.ratio2[q];
-        } else {
-          elastic += results.elastic[q];
-          plastic += results.plastic[q];
-          peak2 = std::max(peak2, results.ratio2[q]);
+      if (distributed)  // summed in slot order by share_step, over every rank's values
+        for (std::size_t q = 0; q < m; ++q) {
+          slot_elastic_[chunk + q] = results.elastic[q];
+          slot_plastic_[chunk + q] = results.plastic[q];
+          slot_ratio2_[chunk + q] = results.ratio2[q];
         }
-        if (interior) {
-          const std::uint32_t i = first_[b], j = second_[b];
-          f[i] -= rf;
+      // The task's sums, in slot order, in the same loop as the forces, so that their chains of
+      // dependent additions overlap with the scatter's work. The sums a step does not read are left
+      // out (elastic: energy steps only; plastic: laws that slide), which changes nothing read.
+      // (Skipping the plastic sum's zero terms, exact too, measured slower: docs/benchmarks.md.)
+      const auto add_sums = [&](std::size_t q) __attribute__((always_inline)) {
+        if (distributed) return;
+        if (sum_elastic) elastic += results.elastic[q];
+        if (sum_plastic) plastic += results.plastic[q];
+        peak2 = std::max(peak2, results.ratio2[q]);
+      };
+      if (interior) {
+        for (std::size_t q = 0; q < m; ++q) {
+          add_sums(q);
+          const std::size_t b = chunk + q;
+          const std::uint32_t i = first[b], j = second[b];
+          if (i != run) {
+            f[run] = run_f, t[run] = run_t;
+            run = i, run_f = f[i], run_t = t[i];
+          }
+          const Vec3 rf = results.force(q);
+          run_f -= rf;
           f[j] += rf;
-          t[i] -= arm0 * rc;
-          t[j] -= arm1 * rc;
+          run_t -= results.torque_first(q);
+          t[j] -= results.torque_second(q);
           if constexpr (moments) {
             const Vec3 rm = results.moment(q);
-            t[i] -= rm;
+            run_t -= rm;
             t[j] += rm;
           }
-        } else {
-          ContactOut& o = out_[b - cross_begin_];
-          o.f = rf;
-          o.c = rc;
-          o.arm[0] = arm0;
-          o.arm[1] = arm1;
-          if constexpr (moments) out_moment_[b - cross_begin_] = results.moment(q);
+        }
+      } else {
+        for (std::size_t q = 0; q < m; ++q) {
+          add_sums(q);
+          ContactOut& o = out_[chunk + q - cross_begin_];
+          o.f = results.force(q);
+          o.t[0] = results.torque_first(q);
+          o.t[1] = results.torque_second(q);
+          if constexpr (moments) out_moment_[chunk + q - cross_begin_] = results.moment(q);
         }
       }
     }
+    if (interior && begin < end) f[run] = run_f, t[run] = run_t;
     task_elastic_[task] = elastic;
     task_plastic_[task] += plastic;
     task_peak2_[task] = peak2;

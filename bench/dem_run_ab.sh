@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Whole cube-wave runs of two mw-dem builds alternated (docs/benchmarks.md, "The step near the
+# memory limit"): A, B, A, B, ... with the 1-minute load average before each; prints each run's
+# wall (the step loop's, from the run record), setup and process time, and whether its signals
+# are byte-identical to A's first run.
+#
+#   bench/dem_run_ab.sh OLD/bin/mw-dem NEW/bin/mw-dem packing.h5 [rounds] [model] [threads]
+set -euo pipefail
+A=$1
+B=$2
+PACKING=$3
+ROUNDS=${4:-2}
+MODEL=${5:-linear}
+THREADS=${6:-2}
+SCENE=pipeline/concrete-cube/scenes/cube-wave.toml
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+echo "# $(date -u +%FT%TZ) A=$A B=$B $SCENE --model $MODEL --threads $THREADS --frequency-kHz 100 (30,000 steps)"
+for round in $(seq 1 "$ROUNDS"); do
+  for side in A B; do
+    bin=$A
+    [ "$side" = B ] && bin=$B
+    load=$(cut -d' ' -f1 /proc/loadavg)
+    start=$(date +%s.%N)
+    "$bin" run $SCENE --packing "$PACKING" --model "$MODEL" --threads "$THREADS" --frequency-kHz 100 \
+      --signals "$tmp/$side-$round.h5" --quiet > "$tmp/$side-$round.json"
+    end=$(date +%s.%N)
+    same=identical
+    cmp -s "$tmp/A-1.h5" "$tmp/$side-$round.h5" || same=DIFFERENT
+    python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print('$side round $round load $load: steps', d['steps'], 'threads', d['threads'], 'loop wall %.2f s, setup %.2f s, process %.2f s, signals $same' % (d['wall_s'], d['setup_s'], $end - $start))" "$tmp/$side-$round.json"
+  done
+done
