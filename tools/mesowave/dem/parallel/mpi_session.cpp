@@ -1,8 +1,8 @@
 #include "mesowave/dem/parallel/mpi_session.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
-#include <iostream>
 #include <string>
 #include <thread>
 
@@ -81,15 +81,19 @@ MpiSession::MpiSession(int& argc, char**& argv) {
 }
 
 void MpiSession::report_error(const std::string& line, int status) {
+  // One write of the whole line: unbuffered std::cerr writes each << apart, and the launcher
+  // forwards each write as it comes, so MPI_Abort's banner could land inside the line.
+  const std::string text = "error: " + line + "\n";
 #ifdef MESOWAVE_HAVE_MPI
   if (size_ > 1) {
     if (rank_ != 0 && !waited_) std::this_thread::sleep_for(std::chrono::seconds(3));
-    std::cerr << "error: " << line << std::endl;
+    std::fwrite(text.data(), 1, text.size(), stderr);
+    std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, status);
   }
 #endif
   (void)status;
-  std::cerr << "error: " << line << "\n";
+  std::fwrite(text.data(), 1, text.size(), stderr);
 }
 
 bool MpiSession::outlive_root_report() {
