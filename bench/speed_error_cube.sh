@@ -19,7 +19,8 @@
 #
 #   bench/speed_error_cube.sh OUT_DIR CALIBRATION.json [PACKING_2MM.h5]
 #   D_MAX_MM="2.0 1.5 1.0" DT_FRACTIONS="0.1 0.2 0.4 0.8" FREQUENCY_KHZ=250 DURATION_MS=0.3 BIN=build/bin
-# A quiet machine wants about an hour for the defaults (the 1.0 mm cube: about 300,000 spheres).
+# One quiet core: 29 min with DURATION_MS=0.1 (2026-12-05, docs/benchmarks.md), so about 1.5 h for
+# the defaults (the 1.0 mm cube: 300,816 spheres, 59 ms a full-law step), plus 7 min of packing.
 set -euo pipefail
 out=${1:?OUT_DIR}; material=${2:?CALIBRATION.json}; given_packing=${3:-}
 BIN=${BIN:-build/bin}
