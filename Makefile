@@ -145,7 +145,7 @@ reproduce-quick: build
 # The order of the runs. GNU make starts targets in the order it walks the graph, and one that
 # becomes ready waits until the walk comes round again - in the whole pipeline, until every other
 # ready run has started (on 2026-12-05 the cube's calibration, the longest chain's second link,
-# started 3 minutes after its packing). So the studies name (in their study.mk):
+# started 2.5 minutes after its packing). So the studies name (in their study.mk):
 #   PIPELINE_CHAIN   the end of their longest chain of dependent runs (the cube: packing ->
 #                    calibration -> DEM waves); it runs in a make of its own, which starts each
 #                    link as soon as the one before ends;
@@ -153,8 +153,9 @@ reproduce-quick: build
 #                    leaves (both makes share them: -j stays the number of runs at once);
 #   PIPELINE_FIRST   the inputs both read (made first, before either starts).
 # No target may be in (or under) both PIPELINE_CHAIN and PIPELINE_BESIDE: two makes would make it
-# at once (scripts/check-pipeline checks that their dry runs share no tool run). A last pass, make pipeline, makes what needs both (PCC, tables, the report) and anything a
-# study did not name; so a study that names nothing gets the same results, only later.
+# at once (scripts/check-pipeline checks that their dry runs share no tool run). A last pass, make
+# pipeline, makes what needs both (PCC, tables, the report) and anything a study did not name; so a
+# study that names nothing gets the same results, only later.
 PIPELINE_FIRST :=
 PIPELINE_CHAIN :=
 PIPELINE_BESIDE :=

@@ -9,7 +9,7 @@
 # (the cheapest run for its accuracy).
 # 0.1 ms: 25 periods, eight P transits of the 50 mm cube. The full-scale campaign measured these
 # errors on 0.1 ms records (bench/speed_error_cube.sh; docs/benchmarks.md, "The campaign at full
-# scale"); 0.3 ms cost the pipeline 190 s more of CPU for the same ordering of the runs.
+# scale"); 0.3 ms cost the pipeline about 220 s more of CPU (299 s against 82 s on 2026-12-05).
 CC_SPEED_F := 250
 CC_SPEED_RECORD := --duration-ms 0.1
 CC_SPEED_REFERENCE := full-25ns-1t

@@ -89,6 +89,10 @@ BoxOperator::BoxOperator(const BoxGrid& grid, const wave::IsotropicMaterial& mat
         term(d, e, mu, b);
       }
     }
+  for (const Term& t : terms_) {
+    z_used_[std::size_t(t.e)][std::size_t(t.z)] = true;
+    x_used_[std::size_t(t.d)][std::size_t(t.x)] = true;
+  }
   row_ = n_[0] + 3;
   plane_ = (n_[1] + 3) * row_;
 }
@@ -118,11 +122,6 @@ void BoxOperator::apply(const double* u, double* f, std::int64_t plane_begin, st
         for (std::int64_t i = 0; i < nx; ++i) dst[i] = src[3 * i];
       }
   };
-  const auto used = [&](int e, int z) {
-    for (const Term& t : terms_)
-      if (t.e == e && t.z == z) return true;
-    return false;
-  };
   // out += s (a y-operator on in) over a whole plane: its first and last rows, and the rows between
   // at once (the operators' interior rows are alike).
   const auto sweep_y = [&](double s, const Tridiagonal& t, const double* in, double* out) {
@@ -148,7 +147,7 @@ void BoxOperator::apply(const double* u, double* f, std::int64_t plane_begin, st
       const double* prev = c > 0 ? slab(c - 1, e) : here;      // weight 0 where the plane is missing
       const double* next = c + 1 < nz ? slab(c + 1, e) : here;
       for (int z = K; z <= CT; ++z) {
-        if (!used(e, z)) continue;
+        if (!z_used_[std::size_t(e)][std::size_t(z)]) continue;
         // z: the operator's row c over the planes c - 1, c, c + 1.
         const Tridiagonal& tz = ops_[2][std::size_t(z)];
         double* out = zf + std::size_t(z) * size;
@@ -164,9 +163,7 @@ void BoxOperator::apply(const double* u, double* f, std::int64_t plane_begin, st
       for (std::int64_t j = 0; j < ny; ++j) {
         bool first = true;
         for (int x = K; x <= CT; ++x) {
-          bool any = false;
-          for (const Term& t : terms_) any = any || (t.d == d && t.x == x);
-          if (!any) continue;
+          if (!x_used_[std::size_t(d)][std::size_t(x)]) continue;
           const Tridiagonal& tx = ops_[0][std::size_t(x)];
           sweep_row(tx.lower.data(), tx.diagonal.data(), tx.upper.data(), at(pre + std::size_t(3 * x + d) * size, 0, j),
                     first ? row_sum : row_out, nx);

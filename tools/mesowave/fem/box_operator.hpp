@@ -57,6 +57,9 @@ private:
   std::array<std::int64_t, 3> n_{};      // cells per axis
   std::array<std::array<Tridiagonal, 4>, 3> ops_;  // [axis][Op]
   std::vector<Term> terms_;
+  // Which z-operators act on u_e ([e][Op]) and which x-operators reach f_d ([d][Op]): the sweeps
+  // apply() runs, read off terms_.
+  std::array<std::array<bool, 4>, 3> z_used_{}, x_used_{};
   std::int64_t row_, plane_;  // padded row length (nx + 1 nodes and a zero at each end) and plane size
 };
 

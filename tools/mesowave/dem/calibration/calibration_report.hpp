@@ -33,12 +33,6 @@ struct TrialCommand {
   std::vector<std::string> argv(int trial, const std::vector<std::string>& options) const;
 };
 
-/// The `mw-dem run` options of a cube trial. An elastic trial reads the
-/// response where the lab reads it, between 10 % and 1/3 of the target
-/// strength (EN 12390-13), on unbreakable linearised bonds, the run ending
-/// just above; a failure trial runs the full law with T and C = (C/T) T.
-/// `static_elastic`: the elastic trials as one static solve of the same network
-/// (mw-dem run --static, static_elastic.hpp) instead of stepped; failure trials stay dynamic.
 /// How the elastic trials run: stepped, or solved (mw-dem run --static); stepped, the moving walls'
 /// speed when not the scene's (mw-dem run --velocity-mm-s). The linearised network's only rate
 /// effect is inertia, held below the scene's quasi-static bound by the test itself: on the 50 mm
@@ -53,6 +47,11 @@ struct ElasticTrials {
 /// positive and is for stepped trials only (InputError naming the option).
 ElasticTrials elastic_trials(bool static_solve, std::optional<double> velocity_mm_s);
 
+/// The `mw-dem run` options of a cube trial. An elastic trial reads the
+/// response where the lab reads it, between 10 % and 1/3 of the target
+/// strength (EN 12390-13), on unbreakable linearised bonds, the run ending
+/// just above, stepped or solved as `elastic` says (static_elastic.hpp); a failure
+/// trial runs the full law with T and C = (C/T) T, always stepped at the scene's speed.
 std::vector<std::string> compression_trial_options(const CalibrationTrial& trial, const CalibrationTargets& targets,
                                                    double friction_angle_deg, const ElasticTrials& elastic = {});
 /// The trial with the results of its mw-dem summary (the JSON file `summary_file`).
