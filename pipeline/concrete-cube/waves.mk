@@ -75,12 +75,19 @@ CC_DEM_FREQS := $(sort $(CC_FREQS) $(CC_MEASURED_FREQS))
 cc_comma := ,
 cc_empty :=
 cc_space := $(cc_empty) $(cc_empty)
-CC_DEM_RECORDS := $(foreach f,$(CC_DEM_FREQS),$(CC_OUT)/dem-$(f)kHz.h5 $(CC_OUT)/dem-$(f)kHz.json)
-$(CC_DEM_RECORDS) $(CC_OUT)/dem-waves.json &: $(CC_SCENE) $(CC_EXPERIMENT) $(CC_OUT)/packing.h5 $(CC_MATERIAL) $(BIN)/mw-dem
-	$(BIN)/mw-dem --from $(CC_MATERIAL) run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --damping-law viscous \
+# The rule is a function of the folder ($1) and the material ($2), so that cube-150.mk makes the
+# same records with its second calibration.
+cc_dem_records = $(foreach f,$(CC_DEM_FREQS),$1/dem-$(f)kHz.h5 $1/dem-$(f)kHz.json)
+define CC_DEM_WAVES
+$(call cc_dem_records,$1) $1/dem-waves.json &: $(CC_SCENE) $(CC_EXPERIMENT) $(CC_OUT)/packing.h5 $2 $(BIN)/mw-dem
+	@mkdir -p $1
+	$(BIN)/mw-dem --from $2 run $(CC_SCENE) --packing $(CC_OUT)/packing.h5 --damping-law viscous \
 	  --frequencies-kHz $(subst $(cc_space),$(cc_comma),$(CC_DEM_FREQS)) --check-unproven $(CC_RECORD) --quiet \
-	  --signals-pattern '$(CC_OUT)/dem-{f}kHz.h5' --summary-pattern '$(CC_OUT)/dem-{f}kHz.json' \
-	  --summary $(CC_OUT)/dem-waves.json > /dev/null
+	  --signals-pattern '$1/dem-{f}kHz.h5' --summary-pattern '$1/dem-{f}kHz.json' \
+	  --summary $1/dem-waves.json > /dev/null
+endef
+CC_DEM_RECORDS := $(call cc_dem_records,$(CC_OUT))
+$(eval $(call CC_DEM_WAVES,$(CC_OUT),$(CC_MATERIAL)))
 
 # One superposed mw-fem run: $1 the files' prefix, $2 the mesh [mm], $3 its frequencies, $4 the record options.
 define CC_FEM_RUN
@@ -104,21 +111,28 @@ $(eval $(call CC_FEM_RUN,fem-early,$(CC_FEM_EARLY_MESH),$(CC_FREQS),$(CC_EARLY_R
 # record, with the signals (Figs. 12-13) and spectra (Fig. 15). The envelopes are
 # computed zero-padded to twice the record (--pad double), so that the end of a
 # record does not wrap onto its start.
-$(CC_OUT)/pcc-early-%kHz.csv $(CC_OUT)/pcc-early-%kHz.json $(CC_OUT)/signals-early-%kHz.png \
-    $(CC_OUT)/envelopes-early-%kHz.png: $(CC_OUT)/fem-early-%kHz.h5 $(CC_OUT)/dem-%kHz.h5 $(BIN)/mw-pcc
-	$(BIN)/mw-pcc --a $(CC_OUT)/fem-early-$*kHz.h5 --b $(CC_OUT)/dem-$*kHz.h5 --resample linear --pad double \
-	  --window-end-us $(CC_EARLY_US) --csv $(CC_OUT)/pcc-early-$*kHz.csv --out $(CC_OUT)/pcc-early-$*kHz.json \
-	  --labels FEM,DEM --title "Concrete cube, $* kHz burst, first $(CC_EARLY_US) us: DEM against the continuum reference (FEM)" \
-	  --plot-window-us 0,$(CC_EARLY_US) --plot-signals $(CC_OUT)/signals-early-$*kHz.png \
-	  --plot-envelopes $(CC_OUT)/envelopes-early-$*kHz.png > /dev/null
+# The rules are a function of the folder of the DEM records, which gets the PCC files and
+# Table 3 ($1), and a label for the figures' titles ($2, none here), so that cube-150.mk compares
+# its second calibration's records with the same references.
+define CC_WAVE_PCC
+$1/pcc-early-%kHz.csv $1/pcc-early-%kHz.json $1/signals-early-%kHz.png \
+    $1/envelopes-early-%kHz.png: $(CC_OUT)/fem-early-%kHz.h5 $1/dem-%kHz.h5 $(BIN)/mw-pcc
+	$(BIN)/mw-pcc --a $(CC_OUT)/fem-early-$$*kHz.h5 --b $1/dem-$$*kHz.h5 --resample linear --pad double \
+	  --window-end-us $(CC_EARLY_US) --csv $1/pcc-early-$$*kHz.csv --out $1/pcc-early-$$*kHz.json \
+	  --labels FEM,DEM --title "Concrete cube$(if $2, ($2)), $$* kHz burst, first $(CC_EARLY_US) us: DEM against the continuum reference (FEM)" \
+	  --plot-window-us 0,$(CC_EARLY_US) --plot-signals $1/signals-early-$$*kHz.png \
+	  --plot-envelopes $1/envelopes-early-$$*kHz.png > /dev/null
 
-$(CC_OUT)/pcc-%kHz.csv $(CC_OUT)/pcc-%kHz.json $(CC_OUT)/spectra-%kHz.csv $(CC_OUT)/signals-%kHz.png \
-    $(CC_OUT)/spectra-%kHz.png: $(CC_OUT)/fem-%kHz.h5 $(CC_OUT)/dem-%kHz.h5 $(BIN)/mw-pcc
-	$(BIN)/mw-pcc --a $(CC_OUT)/fem-$*kHz.h5 --b $(CC_OUT)/dem-$*kHz.h5 --resample linear --pad double \
-	  --csv $(CC_OUT)/pcc-$*kHz.csv --out $(CC_OUT)/pcc-$*kHz.json \
-	  --spectra $(CC_OUT)/spectra-$*kHz.csv --max-frequency-kHz $$(( 2 * $* )) \
-	  --labels FEM,DEM --title "Concrete cube, $* kHz burst, whole record: DEM against the continuum reference (FEM)" \
-	  --plot-signals $(CC_OUT)/signals-$*kHz.png --plot-spectra $(CC_OUT)/spectra-$*kHz.png > /dev/null
+$1/pcc-%kHz.csv $1/pcc-%kHz.json $1/spectra-%kHz.csv $1/signals-%kHz.png \
+    $1/spectra-%kHz.png: $(CC_OUT)/fem-%kHz.h5 $1/dem-%kHz.h5 $(BIN)/mw-pcc
+	$(BIN)/mw-pcc --a $(CC_OUT)/fem-$$*kHz.h5 --b $1/dem-$$*kHz.h5 --resample linear --pad double \
+	  --csv $1/pcc-$$*kHz.csv --out $1/pcc-$$*kHz.json \
+	  --spectra $1/spectra-$$*kHz.csv --max-frequency-kHz $$$$(( 2 * $$* )) \
+	  --labels FEM,DEM --title "Concrete cube$(if $2, ($2)), $$* kHz burst, whole record: DEM against the continuum reference (FEM)" \
+	  --plot-signals $1/signals-$$*kHz.png --plot-spectra $1/spectra-$$*kHz.png > /dev/null
+
+endef
+$(eval $(call CC_WAVE_PCC,$(CC_OUT),))
 
 # Each measured file against the DEM record at its frequency (the DEM interpolated
 # onto the measured samples).
@@ -133,7 +147,7 @@ $(foreach m,$(CC_MEASURED),$(eval $(call CC_MEASURED_PCC,$m)))
 # Table 3: the mean PCC over sensors per frequency, beside the paper's (which is
 # experiment against DEM), the measured comparison where there is one; the PCC of
 # every sensor; both as figures.
-cc_rows = $(foreach f,$(CC_FREQS),--row $f=$(CC_OUT)/pcc-$1$(f)kHz.csv)
+cc_rows = $(foreach f,$(CC_FREQS),--row $f=$(or $2,$(CC_OUT))/pcc-$1$(f)kHz.csv)
 CC_SENSORS := B C D E F G
 ifneq ($(CC_MEASURED),)
 $(CC_OUT)/table3-measured.csv: $(foreach f,$(CC_MEASURED_FREQS),$(CC_OUT)/pcc-measured-$(f)kHz.csv) $(BIN)/mw-table
@@ -143,18 +157,25 @@ CC_TABLE3_MEASURED := $(CC_OUT)/table3-measured.csv
 CC_JOIN_MEASURED := --join $(CC_TABLE3_MEASURED):measured_vs_dem_pcc_signals=pcc_signal,measured_vs_dem_pcc_envelopes=pcc_envelope
 CC_MEASURED_Y := --y "measured_vs_dem_pcc_signals=measured vs DEM, signals"
 endif
-# The measured folder itself: a file dropped in or taken out re-makes Table 3.
-# The whole-record table first, then the first-packets columns joined to it.
-$(CC_OUT)/table3-early.csv: $(foreach f,$(CC_FREQS),$(CC_OUT)/pcc-early-$(f)kHz.csv) $(BIN)/mw-table
-	$(BIN)/mw-table gather --key-name f_kHz $(call cc_rows,early-) --where sensor=mean \
-	  --column pcc_signal --column pcc_envelope --csv $@ > /dev/null
+# The first-packets table, then the whole-record one with the first-packets columns joined to it.
+# $1 the folder (as CC_WAVE_PCC's), $2 and $3 the names of variables that hold more prerequisites
+# and more options of the whole table (the measured comparison).
+define CC_TABLE3
+$1/table3-early.csv: $(foreach f,$(CC_FREQS),$1/pcc-early-$(f)kHz.csv) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name f_kHz $(call cc_rows,early-,$1) --where sensor=mean \
+	  --column pcc_signal --column pcc_envelope --csv $$@ > /dev/null
 
-$(CC_OUT)/table3.csv: $(foreach f,$(CC_FREQS),$(CC_OUT)/pcc-$(f)kHz.csv) $(CC_OUT)/table3-early.csv \
-    $(CC_LAB)/paper/table3.csv $(CC_TABLE3_MEASURED) $(wildcard $(CC_MEASURED_DIR)) $(BIN)/mw-table
-	$(BIN)/mw-table gather --key-name f_kHz $(call cc_rows,) --where sensor=mean \
+$1/table3.csv: $(foreach f,$(CC_FREQS),$1/pcc-$(f)kHz.csv) $1/table3-early.csv \
+    $(CC_LAB)/paper/table3.csv $($2) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name f_kHz $(call cc_rows,,$1) --where sensor=mean \
 	  --column dem_vs_fem_pcc_signals=pcc_signal --column dem_vs_fem_pcc_envelopes=pcc_envelope \
-	  --join $(CC_OUT)/table3-early.csv:dem_vs_fem_first_$(CC_EARLY_US)us_pcc_signals=pcc_signal,dem_vs_fem_first_$(CC_EARLY_US)us_pcc_envelopes=pcc_envelope \
-	  --join $(CC_LAB)/paper/table3.csv:paper_experiment_vs_dem_pcc=pcc_mean $(CC_JOIN_MEASURED) --csv $@ > /dev/null
+	  --join $1/table3-early.csv:dem_vs_fem_first_$(CC_EARLY_US)us_pcc_signals=pcc_signal,dem_vs_fem_first_$(CC_EARLY_US)us_pcc_envelopes=pcc_envelope \
+	  --join $(CC_LAB)/paper/table3.csv:paper_experiment_vs_dem_pcc=pcc_mean $($3) --csv $$@ > /dev/null
+
+endef
+# The measured folder itself: a file dropped in or taken out re-makes Table 3.
+CC_TABLE3_MEASURED_INPUTS := $(CC_TABLE3_MEASURED) $(wildcard $(CC_MEASURED_DIR))
+$(eval $(call CC_TABLE3,$(CC_OUT),CC_TABLE3_MEASURED_INPUTS,CC_JOIN_MEASURED))
 
 $(CC_OUT)/pcc-sensors.csv: $(foreach f,$(CC_FREQS),$(CC_OUT)/pcc-early-$(f)kHz.csv) $(BIN)/mw-table
 	$(BIN)/mw-table gather --key-name f_kHz $(call cc_rows,early-) \

@@ -51,6 +51,17 @@ TEST(Plot, OptionsReachTheScript) {
   EXPECT_NE(s.find("set xrange [45:155]\n"), std::string::npos);
 }
 
+// Below the plot the key takes a line per titled series: six of them need 4 more lines of margin
+// than the ticks and the axis label leave (gnuplot drew them over the tick labels at 7).
+TEST(Plot, AKeyBelowThePlotGetsALineOfMarginPerTitledSeries) {
+  auto spec = two_series();
+  spec.key = "below";
+  for (int i = 0; i < 5; ++i) spec.series.push_back({"run " + std::to_string(i), {1}, {1}, "lines"});
+  EXPECT_NE(plot_script(spec, "fig.png", "stage.png").find("set bmargin 10\n"), std::string::npos);
+  spec.key = "outside right top";
+  EXPECT_EQ(plot_script(spec, "fig.png", "stage.png").find("set bmargin"), std::string::npos);
+}
+
 TEST(Plot, OnlyPngAndSvg) {
   EXPECT_THROW(plot_script(two_series(), "fig.pdf", "stage.pdf"), InputError);
   EXPECT_THROW(require_plot_extension("fig"), InputError);

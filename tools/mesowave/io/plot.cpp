@@ -1,5 +1,6 @@
 #include "mesowave/io/plot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -15,8 +16,13 @@ std::string plot_script(const PlotSpec& spec, const std::filesystem::path& final
   s << "set title " << gnuplot_text(spec.title) << "\nset xlabel " << gnuplot_text(spec.x_label) << "\nset ylabel "
     << gnuplot_text(spec.y_label) << "\nset grid\nset key " << spec.key << " box opaque\nset datafile missing 'NaN'\n";
   if (!spec.logscale.empty()) s << "set logscale " << spec.logscale << "\n";
-  // gnuplot's pngcairo puts a key below the plot on top of the x label unless the margin makes room.
-  if (spec.key.rfind("below", 0) == 0) s << "set bmargin 7\n";
+  // gnuplot's pngcairo puts a key below the plot on top of the x label and the tick labels unless
+  // the margin makes room: a line a titled series (the key's one column), the ticks and the label.
+  if (spec.key.rfind("below", 0) == 0) {
+    const auto titled = std::count_if(spec.series.begin(), spec.series.end(),
+                                      [](const PlotSeries& ser) { return !ser.label.empty(); });
+    s << "set bmargin " << std::max<std::ptrdiff_t>(7, 4 + titled) << "\n";
+  }
   if (spec.margins) s << "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
   if (spec.x_range) s << "set xrange [" << spec.x_range->first << ":" << spec.x_range->second << "]\n";
   if (spec.y_range) s << "set yrange [" << spec.y_range->first << ":" << spec.y_range->second << "]\n";
