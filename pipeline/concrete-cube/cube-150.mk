@@ -167,8 +167,15 @@ $(CC_C150_OUT)/table3-calibrations.png: $(CC_C150_OUT)/table3-calibrations.csv $
 	  --y-range -0.2,1 --x-label "burst centre frequency [kHz]" --y-label "mean PCC over sensors B-G, DEM against FEM" \
 	  --key below --title "Concrete cube: Table 3 with each calibration (the FEM reference has E_d, nu_d)" --out $@ > /dev/null
 
+# Its report, apart from make reproduce's: report/concrete-cube-150/index.html.
+CC_C150_REPORT_SPEC := $(CC_NOTES)/report-150.toml
+CC_C150_REPORT := $(REPORT_DIR)/concrete-cube-150/index.html
+$(CC_C150_REPORT): $(CC_C150_REPORT_SPEC) $(shell sed -n 's/^\(table\|figure\) = "\(.*\)"/\2/p' $(CC_C150_REPORT_SPEC)) \
+    $(BIN)/mw-report
+	$(BIN)/mw-report --spec $(CC_C150_REPORT_SPEC) --out-dir $(@D) > /dev/null
+
 CC_C150_RESULTS := $(CC_C150_OUT)/packing150.csv $(CC_C150_OUT)/upv150.csv $(CC_C150_OUT)/upv150-cost.csv \
-  $(CC_C150_OUT)/table3-calibrations.csv $(CC_C150_OUT)/table3-calibrations.png \
+  $(CC_C150_OUT)/table3-calibrations.csv $(CC_C150_OUT)/table3-calibrations.png $(CC_C150_REPORT) \
   $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(CC_C150_OUT)/upv$z-p-$c.png $(CC_C150_OUT)/upv$z-s-$c.png \
     $(CC_C150_OUT)/upv$z-p-noisy-$c.png $(CC_C150_OUT)/upv$z-s-noisy-$c.png))
 
@@ -186,3 +193,5 @@ concrete-cube-150: $(CC_C150_RESULTS)
 	@echo
 	@echo "== Table 3 with each calibration: mean PCC of DEM against the continuum (E_d, nu_d) =="
 	@$(CC_PRINT_CSV) $(CC_C150_OUT)/table3-calibrations.csv
+	@echo
+	@echo "report: $(CURDIR)/$(CC_C150_REPORT)"
