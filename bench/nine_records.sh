@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Issue 17 item 1's target, "the cube's nine DEM wave records from one run in at most 90 s": the
+# pipeline's own command (waves.mk, CC_DEM_WAVES) run alone, at 1 and at 2 threads, alternated,
+# on a make reproduce tree's packing and calibration; each run's records compared with the tree's
+# own (cmp: the same bits whatever the thread count). docs/benchmarks.md, "One run, every frequency".
+#
+#   bench/nine_records.sh RESULTS [OUT] [REPS]   RESULTS: a tree's results/concrete-cube
+set -euo pipefail
+R=${1:?usage: bench/nine_records.sh RESULTS [OUT] [REPS]}
+O=${2:-results/bench/nine-records}
+N=${3:-2}
+B=${BIN:-build/bin}
+mkdir -p "$O"
+freqs=100,150,200,250,300,350,400,450,500
+for rep in $(seq 1 "$N"); do
+  for threads in 1 2; do
+    out="$O/t$threads-r$rep"
+    mkdir -p "$out"
+    load=$(cut -d' ' -f1 /proc/loadavg)
+    MESOWAVE_THREADS=$threads /usr/bin/time -f "%e %U %S %M" -o "$out/time.txt" "$B/mw-dem" --from "$R/calibration.json" \
+      run pipeline/concrete-cube/scenes/cube-wave.toml --packing "$R/packing.h5" --damping-law viscous \
+      --frequencies-kHz $freqs --check-unproven --quiet --signals-pattern "$out/dem-{f}kHz.h5" \
+      --summary "$out/dem-waves.json" > /dev/null
+    same=yes
+    for f in ${freqs//,/ }; do
+      cmp -s "$out/dem-${f}kHz.h5" "$R/dem-${f}kHz.h5" || same=no
+    done
+    read -r wall user sys rss < "$out/time.txt"
+    printf '%s threads=%s rep=%s load_at_start=%s wall_s=%s cpu_s=%.1f peak_MiB=%d records_equal_to_tree=%s\n' \
+      "$(date -u +%FT%TZ)" "$threads" "$rep" "$load" "$wall" "$(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }')" "$((rss / 1024))" "$same"
+  done
+done
