@@ -164,7 +164,7 @@ $(CC_C150_OUT)/table3-calibrations.png: $(CC_C150_OUT)/table3-calibrations.csv $
 	  $(foreach c,$(CC_C150_TABLE3_CHOICES),--y "$c_first_$(CC_EARLY_US)us_pcc_signals=calibrated to $c: first $(CC_EARLY_US) us, signals" \
 	    --y "$c_first_$(CC_EARLY_US)us_pcc_envelopes=calibrated to $c: first $(CC_EARLY_US) us, envelopes" \
 	    --y "$c_pcc_signals=calibrated to $c: whole record, signals") \
-	  --y-range -0.2,1 --x-label "burst centre frequency [kHz]" --y-label "mean PCC over sensors B-G, DEM against FEM" \
+	  --y-range -0.4,1 --x-label "burst centre frequency [kHz]" --y-label "mean PCC over sensors B-G, DEM against FEM" \
 	  --key below --title "Concrete cube: Table 3 with each calibration (the FEM reference has E_d, nu_d)" --out $@ > /dev/null
 
 # Its report, apart from make reproduce's: report/concrete-cube-150/index.html.
