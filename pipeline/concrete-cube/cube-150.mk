@@ -107,11 +107,13 @@ $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,$(ev
 
 # The picks beside the lab's (upv.toml: t_p, t_s; upv.json: v_p, v_s, E_d, nu_d of step 3); the
 # 50 mm rows' times are over 50 mm (x 3 for the 150 mm path), their velocities compare directly.
+# A DEM row reads its material before its picks: "E_glob_GPa|E_d_GPa" takes the first file that
+# holds either, so the calibrated E_glob, not the picks' E_d (the measured row has only E_d).
 $(CC_C150_OUT)/upv150.csv: $(CC_LAB)/upv.toml $(CC_OUT)/upv.json $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),\
     $(CC_C150_OUT)/upv$z-picks-$c.json $(CC_C150_OUT)/upv$z-picks-noisy-$c.json) $(CC_C150_MATERIAL.$c)) $(BIN)/mw-table
 	$(BIN)/mw-table gather --key-name record --row "measured (upv.toml; step 3)=$(CC_LAB)/upv.toml,$(CC_OUT)/upv.json" \
-	  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),--row "DEM $z mm; calibrated to $c=$(CC_C150_OUT)/upv$z-picks-$c.json,$(CC_C150_MATERIAL.$c)" \
-	    --row "DEM $z mm; calibrated to $c; + $(CC_C150_NOISE_SNR_DB) dB noise; AIC=$(CC_C150_OUT)/upv$z-picks-noisy-$c.json,$(CC_C150_MATERIAL.$c)")) \
+	  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),--row "DEM $z mm; calibrated to $c=$(CC_C150_MATERIAL.$c),$(CC_C150_OUT)/upv$z-picks-$c.json" \
+	    --row "DEM $z mm; calibrated to $c; + $(CC_C150_NOISE_SNR_DB) dB noise; AIC=$(CC_C150_MATERIAL.$c),$(CC_C150_OUT)/upv$z-picks-noisy-$c.json")) \
 	  --column path_mm --column "t_p_us=t_p_us|t_p" --column "t_s_us=t_s_us|t_s" --column v_p_m_s --column v_s_m_s \
 	  --column E_d_GPa --column nu_d --column "E_glob_GPa=E_glob_GPa|E_d_GPa" --column "nu_glob=nu_glob|nu_d" \
 	  --significant-digits 4 --csv $@ > /dev/null
