@@ -49,8 +49,8 @@ void add_run_options(CLI::App& run_cmd, RunCommandLine& v) {
       "stepping (dem/calibration/static_elastic.hpp): E_glob and nu_glob between --modulus-levels-MPa, "
       "walls as one-sided springs, the same extensometers; --signals and --curves get the two levels");
   run_cmd.add_option("--static-preconditioner", v.static_preconditioner,
-                     "--static's BiCGSTAB preconditioner: jacobi | ilut (incomplete LU) | amg (hypre's BoomerAMG "
-                     "with the rigid-body modes; docs/calibration.md, \"Elastic trials as a static solve\")")
+                     "--static's BiCGSTAB preconditioner: jacobi | ilut (incomplete LU) | amg (hypre's BoomerAMG, "
+                     "systems AMG over the spheres' 6 DOFs; docs/calibration.md, \"Elastic trials as a static solve\")")
       ->check(CLI::IsMember({"jacobi", "ilut", "amg"}))
       ->needs(static_opt)
       ->capture_default_str();
