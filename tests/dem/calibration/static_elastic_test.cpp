@@ -9,6 +9,8 @@
 #include <cstring>
 
 #include "dem/test_packings.hpp"
+#include "mesowave/core/error.hpp"
+#include "mesowave/dem/calibration/boomeramg.hpp"
 #include "mesowave/dem/calibration/static_elastic.hpp"
 #include "mesowave/dem/engine/simulation.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
@@ -35,6 +37,28 @@ Simulation linear_simulation(const Packing& p, double dt = 1e-8) {
 
 // The lattice compression of dem/test_packings.hpp, with the modulus levels as stresses.
 const std::string kCompression = dem::testing::lattice_compression_toml("modulus_levels_MPa = [1.0, 4.0]");
+
+// A 16 mm mw-pack cube (d = 1.6-2.0 mm: unequal radii, so K is unsymmetric).
+Packing small_cube_packing() {
+  PackingOptions po;
+  po.porosity = 0.07;
+  po.sizes = SizeDistribution::uniform(1.6e-3, 2.0e-3);
+  Packing p = generate_packing(box_container({0, 0, 0}, {16e-3, 16e-3, 16e-3}), po);
+  p.particle_density_kg_m3 = 2290;
+  return p;
+}
+
+// The shipped compression scene as mw-calibrate's elastic trial runs it (unbreakable bonds, the
+// modulus between 5 and 16.67 MPa, the run ending at 17 MPa).
+Scene elastic_trial_scene() {
+  Scene scene = read_scene_file(std::filesystem::path(MESOWAVE_SOURCE_DIR) / "pipeline/concrete-cube/scenes/cube-compression.toml");
+  scene.material.tensile_strength_Pa = scene.material.cohesion_Pa = std::numeric_limits<double>::infinity();
+  scene.test.levels_absolute = true;
+  scene.test.levels[0] = 5e6;
+  scene.test.levels[1] = 50e6 / 3;
+  scene.test.stop_at_Pa = 17e6;
+  return scene;
+}
 
 }  // namespace
 
@@ -145,17 +169,8 @@ TEST(StaticElastic, SmallCubeMatchesTheDynamicTest) {
   // nu_glob. Measured: 23.35869 against 23.35877 GPa (3.5e-6), nu_glob 0.153785
   // against 0.153788 (3e-6); on the 20 mm cube nu_glob differs by 4e-5
   // (docs/calibration.md, "Elastic trials as a static solve").
-  PackingOptions po;
-  po.porosity = 0.07;
-  po.sizes = SizeDistribution::uniform(1.6e-3, 2.0e-3);
-  Packing p = generate_packing(box_container({0, 0, 0}, {16e-3, 16e-3, 16e-3}), po);
-  p.particle_density_kg_m3 = 2290;
-  Scene scene = read_scene_file(std::filesystem::path(MESOWAVE_SOURCE_DIR) / "pipeline/concrete-cube/scenes/cube-compression.toml");
-  scene.material.tensile_strength_Pa = scene.material.cohesion_Pa = std::numeric_limits<double>::infinity();
-  scene.test.levels_absolute = true;
-  scene.test.levels[0] = 5e6;
-  scene.test.levels[1] = 50e6 / 3;
-  scene.test.stop_at_Pa = 17e6;
+  const Packing p = small_cube_packing();
+  const Scene scene = elastic_trial_scene();
   SimulationOptions o;
   o.model = "linear";
   Simulation sim(scene, p, o);
@@ -167,4 +182,46 @@ TEST(StaticElastic, SmallCubeMatchesTheDynamicTest) {
   EXPECT_NEAR(r.E_glob_Pa / dynamic.test->E_secant_Pa, 1.0, 1e-4);
   ASSERT_TRUE(r.nu_glob && dynamic.test->nu_secant);
   EXPECT_NEAR(*r.nu_glob, *dynamic.test->nu_secant, 1e-4);
+}
+
+TEST(StaticElastic, AmgGivesTheJacobiSolution) {
+  // hypre's BoomerAMG as BiCGSTAB's preconditioner (boomeramg.hpp) solves the
+  // same systems as the Jacobi-preconditioned solve, each to a relative residual
+  // of 1e-10, so E_glob and nu_glob agree to what that residual leaves: on the
+  // 50 mm cube 1e-10 relative in E_glob and 1.2e-9 in nu_glob (docs/calibration.md,
+  // "Elastic trials as a static solve"). The bound 1e-7 is a thousand times that
+  // and a thousand times below the 1e-4 the static trial must meet.
+  if (!BoomerAmg::available()) GTEST_SKIP() << "built without hypre (libhypre-dev)";
+  const Packing p = small_cube_packing();
+  const Scene scene = elastic_trial_scene();
+  const StaticElasticResult jacobi = static_compression_test(scene, p);
+  StaticElasticOptions options;
+  options.preconditioner = "amg";
+  const StaticElasticResult amg = static_compression_test(scene, p, options);
+  std::printf("E_glob %.12g / %.12g GPa, nu_glob %.12g / %.12g, iterations %d / %d (Jacobi / AMG)\n",
+              jacobi.E_glob_Pa / 1e9, amg.E_glob_Pa / 1e9, *jacobi.nu_glob, *amg.nu_glob, jacobi.iterations_total,
+              amg.iterations_total);
+  EXPECT_EQ(amg.solver, "BiCGSTAB (BoomerAMG)");
+  EXPECT_NEAR(amg.E_glob_Pa / jacobi.E_glob_Pa, 1.0, 1e-7);
+  ASSERT_TRUE(amg.nu_glob && jacobi.nu_glob);
+  EXPECT_NEAR(*amg.nu_glob, *jacobi.nu_glob, 1e-7);
+  EXPECT_LE(amg.residual_max, 100 * options.tolerance);
+  // The multigrid is what cuts the iterations (the 50 mm cube: 76 against 1,325).
+  EXPECT_LT(4 * amg.iterations_total, jacobi.iterations_total);
+  // One process, no random coarsening: the same bits again.
+  const StaticElasticResult again = static_compression_test(scene, p, options);
+  EXPECT_EQ(again.E_glob_Pa, amg.E_glob_Pa);
+  EXPECT_EQ(*again.nu_glob, *amg.nu_glob);
+  EXPECT_EQ(again.iterations_total, amg.iterations_total);
+}
+
+TEST(StaticElastic, UnknownPreconditionerIsRefused) {
+  StaticElasticOptions options;
+  options.preconditioner = "multigrid";
+  try {
+    static_compression_test(elastic_trial_scene(), small_cube_packing(), options);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"multigrid\""), std::string::npos) << e.what();
+  }
 }

@@ -8,6 +8,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/dem/calibration/boomeramg.hpp"
 #include "mesowave/dem/contact/linear_bonded_network.hpp"
 #include "mesowave/dem/engine/simulation.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
@@ -103,8 +104,8 @@ Matrix linear_network_stiffness(const SphereSystem& system) {
 StaticElasticResult static_compression_test(const Scene& scene_in, const Packing& packing,
                                             const StaticElasticOptions& options_in) {
   const StaticElasticOptions& options = options_in;
-  if (options.preconditioner != "jacobi" && options.preconditioner != "ilut")
-    throw InputError("static solve: preconditioner \"" + options.preconditioner + "\" is neither jacobi nor ilut");
+  if (options.preconditioner != "jacobi" && options.preconditioner != "ilut" && options.preconditioner != "amg")
+    throw InputError("static solve: preconditioner \"" + options.preconditioner + "\" is none of jacobi, ilut, amg");
   const auto start = Clock::now();
   const UniaxialTestSpec& spec = scene_in.test;
   if (spec.kind != UniaxialTestSpec::Kind::compression)
@@ -126,7 +127,9 @@ StaticElasticResult static_compression_test(const Scene& scene_in, const Packing
   result.spheres = system->sphere_count();
   result.bonds = system->bond_count();
   result.dofs = system->degrees_of_freedom();
-  result.solver = options.preconditioner == "ilut" ? "BiCGSTAB (ILUT)" : "BiCGSTAB (Jacobi)";
+  result.solver = options.preconditioner == "ilut"  ? "BiCGSTAB (ILUT)"
+                  : options.preconditioner == "amg" ? "BiCGSTAB (BoomerAMG)"
+                                                    : "BiCGSTAB (Jacobi)";
   result.setup_s = seconds_since(start);
 
   // The walls: which move (their travel in proportion to their speeds) and which the load sensors read.
@@ -193,7 +196,7 @@ StaticElasticResult static_compression_test(const Scene& scene_in, const Packing
     const double residual = rhs.norm() > 0 ? (rhs - A * x).norm() / rhs.norm() : 0;
     if (solver.info() != Eigen::Success || !(residual <= 100 * options.tolerance))
       throw InputError("the static solve did not converge (" + std::to_string(solver.iterations()) +
-                       " BiCGSTAB iterations, relative residual " + format_number(residual) +
+                       " iterations, relative residual " + format_number(residual) +
                        "): the network with its wall contacts may be a mechanism (spheres or clusters held by no bond)");
     ++result.solves;
     result.iterations_total += int(solver.iterations());
@@ -202,21 +205,34 @@ StaticElasticResult static_compression_test(const Scene& scene_in, const Packing
   };
   // Both right-hand sides with one preconditioner.
   const auto solve = [&](const Matrix& A, const Vector& rhs1, Vector& x1, const Vector& rhs0, Vector& x0) {
-    if (options.preconditioner == "ilut") {
+    if (options.preconditioner == "ilut" || options.preconditioner == "amg") {
       // Scaled to a unit diagonal first (S A S y = S b, x = S y, S = |diag A|^-1/2): the rows
       // of the rotations (diagonal ~ K_s r^2) and of the translations (~ K_n) then weigh
-      // alike in the incomplete factors' drop rule.
+      // alike in the incomplete factors' drop rule and in AMG's strength of connection.
       Vector scale = A.diagonal().cwiseAbs().cwiseSqrt().cwiseInverse();
       const Matrix scaled = scale.asDiagonal() * A * scale.asDiagonal();
-      Eigen::BiCGSTAB<Matrix, Eigen::IncompleteLUT<double>> solver;
-      solver.preconditioner().setDroptol(options.ilut_droptol);
-      solver.preconditioner().setFillfactor(options.ilut_fill);
-      solver.compute(scaled);
-      Vector y1 = x1.cwiseQuotient(scale), y0 = x0.cwiseQuotient(scale);
-      solve_with(solver, scaled, Vector(scale.cwiseProduct(rhs1)), y1);
-      solve_with(solver, scaled, Vector(scale.cwiseProduct(rhs0)), y0);
-      x1 = scale.cwiseProduct(y1);
-      x0 = scale.cwiseProduct(y0);
+      const auto run = [&](auto& solver) {
+        Vector y1 = x1.cwiseQuotient(scale), y0 = x0.cwiseQuotient(scale);
+        solve_with(solver, scaled, Vector(scale.cwiseProduct(rhs1)), y1);
+        solve_with(solver, scaled, Vector(scale.cwiseProduct(rhs0)), y0);
+        x1 = scale.cwiseProduct(y1);
+        x0 = scale.cwiseProduct(y0);
+      };
+      if (options.preconditioner == "amg") {
+        Eigen::BiCGSTAB<Matrix, BoomerAmg> solver;
+        solver.preconditioner().set_settings(options.amg);
+        solver.compute(scaled);
+        result.preconditioner_s += solver.preconditioner().setup_s();
+        run(solver);
+      } else {
+        const auto t_ilut = Clock::now();
+        Eigen::BiCGSTAB<Matrix, Eigen::IncompleteLUT<double>> solver;
+        solver.preconditioner().setDroptol(options.ilut_droptol);
+        solver.preconditioner().setFillfactor(options.ilut_fill);
+        solver.compute(scaled);
+        result.preconditioner_s += seconds_since(t_ilut);
+        run(solver);
+      }
     } else {
       Eigen::BiCGSTAB<Matrix, Eigen::DiagonalPreconditioner<double>> solver;
       solver.compute(A);

@@ -43,10 +43,17 @@ void add_run_options(CLI::App& run_cmd, RunCommandLine& v) {
   run_cmd.add_option("--snapshots", v.snapshot_dir, "Folder for ParaView snapshots (.vtp per instant + snapshots.pvd)");
   run_cmd.add_option("--snapshot-interval-us", v.overrides.snapshot_us, "Time between snapshots [us] (default: the scene's)");
   run_cmd.add_flag("--quiet", v.quiet, "No progress bar");
-  run_cmd.add_flag("--static", v.static_solve,
-                   "A compression [test]'s elastic part as one static solve of the linearised network instead of "
-                   "stepping (dem/calibration/static_elastic.hpp): E_glob and nu_glob between --modulus-levels-MPa, "
-                   "walls as one-sided springs, the same extensometers; --signals and --curves get the two levels");
+  auto* static_opt = run_cmd.add_flag(
+      "--static", v.static_solve,
+      "A compression [test]'s elastic part as one static solve of the linearised network instead of "
+      "stepping (dem/calibration/static_elastic.hpp): E_glob and nu_glob between --modulus-levels-MPa, "
+      "walls as one-sided springs, the same extensometers; --signals and --curves get the two levels");
+  run_cmd.add_option("--static-preconditioner", v.static_preconditioner,
+                     "--static's BiCGSTAB preconditioner: jacobi | ilut (incomplete LU) | amg (hypre's BoomerAMG, "
+                     "systems AMG over the spheres' 6 DOFs; docs/calibration.md, \"Elastic trials as a static solve\")")
+      ->check(CLI::IsMember({"jacobi", "ilut", "amg"}))
+      ->needs(static_opt)
+      ->capture_default_str();
   run_cmd.add_option("--curves", v.curves_path,
                      "A [test]'s stress-strain curves as CSV (t_s, stress_MPa, axial_strain, lateral_strain, "
                      "broken_bonds); the signal file holds them too (test.stress, test.axial_strain, ...)");
@@ -98,7 +105,9 @@ void run_static(const RunCommandLine& v, const Inputs& in, app::Run& run, const 
   if (!v.snapshot_dir.empty() || !v.csv_path.empty())
     throw InputError("--static solves for equilibrium: it has no --snapshots or --signals-csv");
   if (v.model != "auto" && v.model != "linear") throw InputError("--static solves the linearised network, not --model " + v.model);
-  const StaticElasticResult r = static_compression_test(in.scene, in.packing);
+  StaticElasticOptions options;
+  options.preconditioner = v.static_preconditioner;
+  const StaticElasticResult r = static_compression_test(in.scene, in.packing, options);
   if (!v.curves_path.empty()) run.write_text(v.curves_path, uniaxial_curves_csv(r.test));
   signal::write_signal_file(run.output(v.signals_path), uniaxial_curve_signals(r.test),
                             {{"scene", in.scene.name}, {"model", "linear"}, {"method", "static"},

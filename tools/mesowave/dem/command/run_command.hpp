@@ -32,6 +32,7 @@ struct RunCommandLine {
   std::int64_t checkpoint_every = 0, intact_checkpoint_every = 1000;
   std::vector<double> frequencies_kHz, check_kHz;
   std::string signals_pattern, summary_pattern;
+  std::string static_preconditioner = "jacobi";  ///< --static's (StaticElasticOptions::preconditioner)
 };
 
 /// The scene and what changes it (both subcommands): the scene file, --model, the scene overrides.

@@ -145,6 +145,7 @@ nlohmann::ordered_json to_json(const StaticElasticResult& r) {
   j["setup_s"] = r.setup_s;
   j["assemble_s"] = r.assemble_s;
   j["solve_s"] = r.solve_s;
+  j["preconditioner_s"] = r.preconditioner_s;
   j["wall_s"] = r.wall_s;
   j["test"] = to_json(r.test);
   return j;
