@@ -3,7 +3,8 @@
 # target and the variables carry the study's name and prefix (CC_C150_*), so that a study copied by
 # `make new-study` gets its own.
 # ==== The lab's 150 mm cube against its own UPV test (issue 18, item 1) =========
-#   make concrete-cube-150   the packing, the dynamic calibration, four wave runs, the picks, the tables
+#   make concrete-cube-150   the packing, the dynamic calibration, four wave runs, the picks, the tables,
+#                            Table 3 with each calibration, the report (report/concrete-cube-150/)
 #
 # The lab measured t_p = 35.0 us and t_s = 55.1 us on 150 mm cubes (upv.toml), the only wave data
 # of this concrete; the paper modelled a 50 mm cube. Here:
