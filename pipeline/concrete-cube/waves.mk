@@ -188,7 +188,7 @@ $(CC_OUT)/table3.png: $(CC_OUT)/table3.csv $(BIN)/mw-table
 	  --y "dem_vs_fem_pcc_signals=DEM vs FEM, whole record, signals" \
 	  --y "dem_vs_fem_pcc_envelopes=DEM vs FEM, whole record, envelopes" --y "paper_experiment_vs_dem_pcc=paper: experiment vs DEM" \
 	  $(CC_MEASURED_Y) \
-	  --y-range -0.2,1 --x-label "burst centre frequency [kHz]" --y-label "mean PCC over sensors B-G" \
+	  --y-range -0.3,1 --x-label "burst centre frequency [kHz]" --y-label "mean PCC over sensors B-G" \
 	  --key below --title "Concrete cube: Table 3 (mean PCC over the sensors)" --out $@ > /dev/null
 
 $(CC_OUT)/pcc-sensors.png: $(CC_OUT)/pcc-sensors.csv $(BIN)/mw-table
