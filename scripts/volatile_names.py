@@ -5,4 +5,4 @@ time loop; convolution_s: a superposed run's convolutions; 'per second': mw-fem'
 second'."""
 import re
 
-VOLATILE = re.compile(r'(wall|setup_s|run_s$|convolution_s$|per_s\b|per_s$|per second|ns_per|thread|rss|memory|cpu_s|load)', re.I)
+VOLATILE = re.compile(r'(wall|setup_s|run_s$|convolution_s$|per_s\b|per second|ns_per|thread|rss|memory|cpu_s|load)', re.I)

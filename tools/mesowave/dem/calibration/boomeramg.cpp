@@ -1,6 +1,5 @@
 #include "mesowave/dem/calibration/boomeramg.hpp"
 
-#include <chrono>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -120,7 +119,6 @@ bool BoomerAmg::available() { return true; }
 
 void BoomerAmg::setup(Eigen::Index n, const StorageIndex* outer, const StorageIndex* counts, const StorageIndex* inner,
                       const double* values) {
-  const auto start = std::chrono::steady_clock::now();
   start_hypre();
   h_.reset();  // a new matrix: the old hierarchy goes first (memory)
   h_ = std::make_unique<Hypre>();
@@ -178,7 +176,6 @@ void BoomerAmg::setup(Eigen::Index n, const StorageIndex* outer, const StorageIn
     MW_HYPRE(HYPRE_BoomerAMGSetNodal(h.amg, s.nodal));
   }
   MW_HYPRE(HYPRE_BoomerAMGSetup(h.amg, h.par, h.b->par, h.x->par));
-  setup_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 Eigen::VectorXd BoomerAmg::solve(const Eigen::VectorXd& b) const {

@@ -76,9 +76,6 @@ public:
   Eigen::Index rows() const { return n_; }
   Eigen::Index cols() const { return n_; }
 
-  /// The last compute's wall time (MPI's start the first time, the copy into hypre, the hierarchy).
-  double setup_s() const { return setup_s_; }
-
 private:
   // Row r holds inner[outer[r] .. outer[r] + (counts ? counts[r] : outer[r + 1] - outer[r])).
   void setup(Eigen::Index n, const StorageIndex* outer, const StorageIndex* counts, const StorageIndex* inner,
@@ -87,7 +84,6 @@ private:
   std::unique_ptr<Hypre> h_;
   BoomerAmgSettings settings_;
   Eigen::Index n_ = 0;
-  double setup_s_ = 0;
 };
 
 }  // namespace mesowave::dem
