@@ -187,13 +187,15 @@ ExplicitDynamics::NodeGather ExplicitDynamics::build_gather(const std::vector<Sh
     for (std::int32_t i : sf.nodes) ++g.start[std::size_t(i) + 1];
   for (std::size_t i = 0; i < nodes; ++i) g.start[i + 1] += g.start[i];
   g.point.resize(std::size_t(g.start[nodes]));
-  g.local.resize(g.point.size());
+  g.dphi_dx.resize(g.point.size());
+  g.dphi_dy.resize(g.point.size());
   std::vector<std::int64_t> fill(g.start.begin(), g.start.end() - 1);
   for (std::size_t p = 0; p < shape.size(); ++p)  // ascending p within each node: the summation order
     for (std::size_t a = 0; a < shape[p].nodes.size(); ++a) {
       const auto k = std::size_t(fill[std::size_t(shape[p].nodes[a])]++);
       g.point[k] = std::int32_t(p);
-      g.local[k] = std::int32_t(a);
+      g.dphi_dx[k] = shape[p].dphi_dx[a];
+      g.dphi_dy[k] = shape[p].dphi_dy[a];
     }
   return g;
 }
@@ -204,25 +206,21 @@ Eigen::Vector2d ExplicitDynamics::node_internal_force(std::int64_t i, const std:
 
 Eigen::Vector2d ExplicitDynamics::node_internal_force(const NodeGather& g, std::int64_t i,
                                                       const std::vector<Eigen::Vector3d>& s) const {
-  const auto& shape = model_->shape_functions();
   double fx = 0, fy = 0;
-  for (std::int64_t k = g.start[std::size_t(i)]; k < g.start[std::size_t(i) + 1]; ++k) {
-    const auto p = std::size_t(g.point[std::size_t(k)]);
-    const auto a = std::size_t(g.local[std::size_t(k)]);
-    fx += shape[p].dphi_dx[a] * s[p][0] + shape[p].dphi_dy[a] * s[p][2];
-    fy += shape[p].dphi_dy[a] * s[p][1] + shape[p].dphi_dx[a] * s[p][2];
+  for (auto k = std::size_t(g.start[std::size_t(i)]); k < std::size_t(g.start[std::size_t(i) + 1]); ++k) {
+    const Eigen::Vector3d& sp = s[std::size_t(g.point[k])];
+    fx += g.dphi_dx[k] * sp[0] + g.dphi_dy[k] * sp[2];
+    fy += g.dphi_dy[k] * sp[1] + g.dphi_dx[k] * sp[2];
   }
   return {fx, fy};
 }
 
 Eigen::Vector2d ExplicitDynamics::node_viscous_force(const NodeGather& g, std::int64_t i, const std::vector<double>& qwt) const {
-  const auto& shape = model_->shape_functions();
   double fx = 0, fy = 0;  // B^T (-q, -q, 0) w t
-  for (std::int64_t k = g.start[std::size_t(i)]; k < g.start[std::size_t(i) + 1]; ++k) {
-    const auto p = std::size_t(g.point[std::size_t(k)]);
-    const auto a = std::size_t(g.local[std::size_t(k)]);
-    fx -= shape[p].dphi_dx[a] * qwt[p];
-    fy -= shape[p].dphi_dy[a] * qwt[p];
+  for (auto k = std::size_t(g.start[std::size_t(i)]); k < std::size_t(g.start[std::size_t(i) + 1]); ++k) {
+    const double q = qwt[std::size_t(g.point[k])];
+    fx -= g.dphi_dx[k] * q;
+    fy -= g.dphi_dy[k] * q;
   }
   return {fx, fy};
 }

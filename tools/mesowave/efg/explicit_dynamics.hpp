@@ -257,10 +257,13 @@ class ExplicitDynamics {
   Eigen::VectorXd internal_force_with(const Eigen::VectorXd& u, const Eigen::VectorXd* v, std::vector<PointState>& states) const;
   /// Node i's f_int from the points' s_g, summed in point order (the same bits for any thread count).
   Eigen::Vector2d node_internal_force(std::int64_t i, const std::vector<Eigen::Vector3d>& s) const;
-  /// per node: (point, local index) of the points whose support holds it, ascending points
+  /// per node: the points whose support holds it, ascending, with their shape-function derivatives
+  /// at the node (copies of dphi_dx, dphi_dy, so that a node's sum streams its entries instead of
+  /// chasing each point's arrays: the same products in the same order, the same bits)
   struct NodeGather {
     std::vector<std::int64_t> start;
-    std::vector<std::int32_t> point, local;
+    std::vector<std::int32_t> point;
+    std::vector<double> dphi_dx, dphi_dy;
   };
   static NodeGather build_gather(const std::vector<ShapeFunctions>& shape, std::size_t nodes);
   Eigen::Vector2d node_internal_force(const NodeGather& g, std::int64_t i, const std::vector<Eigen::Vector3d>& s) const;
