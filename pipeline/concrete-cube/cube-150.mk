@@ -170,10 +170,21 @@ $(CC_C150_OUT)/table3-calibrations.png: $(CC_C150_OUT)/table3-calibrations.csv $
 	  --y-range -0.4,1 --x-label "burst centre frequency [kHz]" --y-label "mean PCC over sensors B-G, DEM against FEM" \
 	  --key below --title "Concrete cube: Table 3 with each calibration (the FEM reference has E_d, nu_d)" --out $@ > /dev/null
 
-# Its report, apart from make reproduce's: report/concrete-cube-150/index.html.
-CC_C150_REPORT_SPEC := $(CC_NOTES)/report-150.toml
+# Its report, apart from make reproduce's: report/concrete-cube-150/index.html. The quick tree's reads
+# the same spec with its files in $(RESULTS)/ (a copy made by sed, as pipeline/report.mk's).
+CC_C150_REPORT_SOURCE := $(CC_NOTES)/report-150.toml
 CC_C150_REPORT := $(REPORT_DIR)/concrete-cube-150/index.html
-$(CC_C150_REPORT): $(CC_C150_REPORT_SPEC) $(shell sed -n 's/^\(table\|figure\) = "\(.*\)"/\2/p' $(CC_C150_REPORT_SPEC)) \
+ifeq ($(QUICK),1)
+CC_C150_REPORT_SPEC := $(CC_C150_OUT)/report-150.toml
+$(CC_C150_REPORT_SPEC): $(CC_C150_REPORT_SOURCE)
+	@mkdir -p $(@D)
+	sed -e '0,/^title = "\(.*\)"/s//title = "\1 - quick look (small models, short records)"/' \
+	  -e 's#^\(table\|figure\) = "results/#\1 = "$(RESULTS)/#' $< > $@
+else
+CC_C150_REPORT_SPEC := $(CC_C150_REPORT_SOURCE)
+endif
+$(CC_C150_REPORT): $(CC_C150_REPORT_SPEC) \
+    $(patsubst results/%,$(RESULTS)/%,$(shell sed -n 's/^\(table\|figure\) = "\(.*\)"/\2/p' $(CC_C150_REPORT_SOURCE))) \
     $(BIN)/mw-report
 	$(BIN)/mw-report --spec $(CC_C150_REPORT_SPEC) --out-dir $(@D) > /dev/null
 
