@@ -99,6 +99,31 @@ TEST(TableGather, AlternativeSourcesTakeTheFirstNameAFileHolds) {
   EXPECT_THROW(gather_rows(spec), InputError);
 }
 
+// A row of several files: the first name wins in whichever file holds it, whatever the files'
+// order (cube-150.mk's upv150.csv: a DEM row's picks hold E_d_GPa, its material E_glob_GPa; with
+// the picks listed first, a search file by file gave E_d in the E_glob column).
+TEST(TableGather, AlternativeSourcesAreSearchedByNameAcrossTheRowsFiles) {
+  TempDir dir;
+  write_file(dir / "picks.json", R"({"t_p_us": 36.18, "E_d_GPa": 36.71})");
+  write_file(dir / "material.json", R"({"E_glob_GPa": 36.66})");
+  write_file(dir / "upv.json", R"({"t_p_us": 35.0, "E_d_GPa": 36.70})");
+  GatherSpec spec;
+  spec.rows = {parse_gather_row("DEM=" + (dir / "picks.json").string() + "," + (dir / "material.json").string()),
+               parse_gather_row("DEM reversed=" + (dir / "material.json").string() + "," + (dir / "picks.json").string()),
+               parse_gather_row("measured=" + (dir / "upv.json").string())};
+  spec.columns = {parse_column_source("E_glob_GPa=E_glob_GPa|E_d_GPa"), parse_column_source("t_p_us")};
+  const auto t = gather_rows(spec);
+  ASSERT_EQ(t.rows.size(), 3u);
+  EXPECT_EQ(t.rows[0][1], "36.66");  // the material's E_glob, though the picks come first
+  EXPECT_EQ(t.rows[1][1], "36.66");
+  EXPECT_EQ(t.rows[2][1], "36.7");   // no file of the row holds E_glob: the second name
+  EXPECT_EQ(t.rows[0][2], "36.18");
+  // mean(): each file gives its own first name, as before
+  spec.rows = {parse_gather_row("both=" + (dir / "picks.json").string() + "," + (dir / "upv.json").string())};
+  spec.columns = {parse_column_source("E=mean(E_glob_GPa|E_d_GPa)")};
+  EXPECT_DOUBLE_EQ(std::stod(gather_rows(spec).rows[0][1]), (36.71 + 36.70) / 2);
+}
+
 TEST(TableGather, AmbiguousOrMissingValuesAreErrorsNamingTheFile) {
   TempDir dir;
   const auto pcc = (dir / "pcc.csv").string();

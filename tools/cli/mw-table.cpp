@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   gather->add_option("--key-name", key_name, "Header of the key column (e.g. f_kHz; A,B: two, and rows A_VALUE,B_VALUE=FILE)")->capture_default_str();
   gather->add_option("--row", row_texts, "KEY=FILE[,FILE...]: one row; repeatable, in order")->required();
   gather->add_option("--column", column_texts,
-                     "NAME[=SOURCE][@COLUMN=VALUE]: an output column from a CSV column or JSON/TOML key (SOURCE may be A|B: A, else B, for a quantity named differently in different files; mean(S) or median(S): over all the row's files; a VALUE {K}: the row's key K); repeatable")
+                     "NAME[=SOURCE][@COLUMN=VALUE]: an output column from a CSV column or JSON/TOML key (SOURCE may be A|B: A in any of the row's files, else B, for a quantity named differently in different files; mean(S) or median(S): over all the row's files; a VALUE {K}: the row's key K); repeatable")
       ->required();
   gather->add_option("--where", where_text, "COLUMN=VALUE: the row of every CSV file to take values from");
   gather->add_option("--join", join_texts,

@@ -278,13 +278,26 @@ CsvTable gather_rows(const GatherSpec& spec) {
     for (const auto& c : spec.columns) {
       const auto where = for_row(c.where ? c.where : spec.where, key_names, key);
       const auto alternatives = split_alternatives(c.source);
-      std::vector<std::string> found;  // one value per file that holds the source
-      for (const auto& s : sources) {
-        std::optional<std::string> v;
-        for (const auto& a : alternatives)
-          if ((v = s.value(a, where, spec.significant_digits))) break;
-        if (v) found.push_back(*v);
-        if (v && c.aggregate == ColumnSource::Aggregate::first) break;
+      std::vector<std::string> found;
+      if (c.aggregate == ColumnSource::Aggregate::first) {
+        // "A|B": A in any of the row's files, else B - by name first, so that the order of the
+        // row's files does not decide between two names (a row listing a run's picks, which hold
+        // E_d, before its material, which holds E_glob, still gets E_glob for "E_glob|E_d").
+        for (const auto& a : alternatives) {
+          for (const auto& s : sources)
+            if (auto v = s.value(a, where, spec.significant_digits)) {
+              found.push_back(*v);
+              break;
+            }
+          if (!found.empty()) break;
+        }
+      } else {
+        for (const auto& s : sources) {  // one value per file that holds the source (its first name)
+          std::optional<std::string> v;
+          for (const auto& a : alternatives)
+            if ((v = s.value(a, where, spec.significant_digits))) break;
+          if (v) found.push_back(*v);
+        }
       }
       if (found.empty()) {
         std::string names;

@@ -38,7 +38,8 @@ struct ColumnSource {
   /// How a row's values become one: the first file's, or the mean or median of them all.
   enum class Aggregate { first, mean, median };
   std::string name;                   ///< the output column
-  std::string source;                 ///< column (CSV) or key (JSON, TOML) in the files; "A|B": A, else B
+  std::string source;                 ///< column (CSV) or key (JSON, TOML) in the files; "A|B": A in any of
+                                      ///< the row's files, else B (mean/median: per file, its first name)
   std::optional<RowSelector> where;   ///< CSV: the row; default: the gather's selector. A value
                                       ///< "{KEY}" stands for the row's value of key column KEY
   Aggregate aggregate = Aggregate::first;  ///< SOURCE written "mean(...)" or "median(...)"
