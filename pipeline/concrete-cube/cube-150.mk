@@ -18,9 +18,27 @@
 #     picks beside the measured ones.
 # Every tool run is recorded in $(MESOWAVE_DB); the runs' wall time and peak memory are there
 # (mw-prov runs), their spheres, bonds and steps in the summaries gathered in upv150-cost.csv.
+# The quick tree (QUICK=1) runs the same rules on small cubes (below), so that a test
+# (tests/pipeline/cube_150_test.cpp) makes the whole chain in a minute.
 
 CC_C150_OUT := $(CC_OUT)/cube-150
-CC_C150_SIDE_MM := 150
+# The sizes, named by the lab's test: 150 the lab's cube, packed here; 50 the same test at 1/3 scale on
+# step 5's packing. Each size's cube side (= the transducers' path) [mm], its scenes (scenes/<name>-p.toml,
+# -s.toml) and its packing (the 50 mm one's row in packing150.csv named for where it comes from).
+CC_C150_SIZES := 150 50
+CC_C150_SIDE_MM.150 := 150
+CC_C150_SIDE_MM.50 := 50
+CC_C150_SCENE.150 := upv150
+CC_C150_SCENE.50 := upv50
+CC_C150_PACKING.150 := $(CC_C150_OUT)/packing.h5
+CC_C150_PACKING.50 := $(CC_OUT)/packing.h5
+CC_C150_PACKING_ROW.50 := 50 mm cube (step 5)
+# The bursts [kHz] (the experiment files' [burst]: lab-data/concrete-cube/upv-experiment-{p,s}*.toml),
+# for the S pick's matched filter and the summary's headings.
+CC_C150_BURST_KHZ.150.p := 54
+CC_C150_BURST_KHZ.150.s := 40
+CC_C150_BURST_KHZ.50.p := 162
+CC_C150_BURST_KHZ.50.s := 120
 CC_C150_CHOICE_STATIC := $(CC_CALIBRATION_TARGETS)
 CC_C150_CHOICE_DYNAMIC := dynamic
 CC_C150_MATERIAL.$(CC_C150_CHOICE_DYNAMIC) := $(CC_C150_OUT)/calibration-dynamic.json
@@ -42,8 +60,7 @@ CC_C150_S_PICK := --picker aic
 # cycles, and x 3 the frequency at 1/3 scale). The AIC places the onset at the burst's first large
 # half-cycle, which rides on the P wave's near field, 0.4 periods late (docs/upv-pickers.md, "The
 # DEM's S records"); the matched filter is 0.13-0.42 us after the continuum's S time on the 50 mm cube.
-CC_C150_S_WAVELET.150 := --s-wavelet-burst-kHz 40,2 --s-wavelet-derivative
-CC_C150_S_WAVELET.50 := --s-wavelet-burst-kHz 120,2 --s-wavelet-derivative
+cc_c150_s_wavelet = --s-wavelet-burst-kHz $(CC_C150_BURST_KHZ.$1.s),2 --s-wavelet-derivative
 # The lab's own chain beside it: white noise added to the record at a stated SNR (mw-upv
 # --add-noise-snr-dB: 20 log10(peak / noise RMS), seeded), then mw-upv's defaults, AIC for P and
 # the AIC-after-P chain for S, as on a lab record. 40 dB: source assumed, the middle of the picker
@@ -52,11 +69,52 @@ CC_C150_S_WAVELET.50 := --s-wavelet-burst-kHz 120,2 --s-wavelet-derivative
 CC_C150_NOISE_SNR_DB := 40
 CC_C150_NOISY_PICK := --picker aic --add-noise-snr-dB $(CC_C150_NOISE_SNR_DB) --add-noise-seed 1
 
-$(CC_C150_OUT)/packing.h5 $(CC_C150_OUT)/packing.json &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
+# The quick tree: the chain's rules on small cubes, a test of the rules and of the tables' numbers, not
+# a model of the lab's cube: the sizes are modelling choices for that test, not the paper's values.
+# The lab's cube at 37.5 mm (1/4 scale) and the 1/3-scale test on a 30 mm cube of its own: step 5's
+# quick cube (20 mm) is too small for mw-upv's noise window, 16 samples (0.8 us) before the far face
+# first moves (there at 0.63 us; on the 30 mm cube at 0.98 us, on the 37.5 mm one at 1.18 us). Both
+# run the 1/3-scale test's scenes: the DEM places the transducers at the experiment's fractions of the
+# packing's extent but keeps their patches' size, and the lab's 44.31 mm patches would take a whole
+# face of the 37.5 mm cube (where the matched filter found no S onset on the dynamic calibration's
+# record); the 14.77 mm ones are 0.39 and 0.49 of the faces. The bursts and records scale with the
+# side, so that every wavelength keeps its ratio to the path as in the lab's test (the experiment's
+# frequencies x 50 / side, its records x side / 50) and the same pickers read the records.
+ifeq ($(QUICK),1)
+CC_C150_SIDE_MM.150 := 37.5
+CC_C150_SIDE_MM.50 := 30
+CC_C150_SCENE.150 := upv50
+CC_C150_PACKING.50 := $(CC_C150_OUT)/packing-50.h5
+CC_C150_PACKING_ROW.50 := $(CC_C150_SIDE_MM.50) mm cube
+CC_C150_BURST_KHZ.150.p := 216
+CC_C150_BURST_KHZ.150.s := 160
+CC_C150_BURST_KHZ.50.p := 270
+CC_C150_BURST_KHZ.50.s := 200
+CC_C150_RECORD_MS.150.p := 0.02
+CC_C150_RECORD_MS.150.s := 0.03
+CC_C150_RECORD_MS.50.p := 0.016
+CC_C150_RECORD_MS.50.s := 0.024
+CC_C150_NOISE_US.150 := 0,1
+CC_C150_NOISE_US.50 := 0,0.9
+endif
+# mw-dem's burst and record instead of the experiment file's where a record is set (the quick tree);
+# $1 the size, $2 p or s.
+cc_c150_dem_record = $(if $(CC_C150_RECORD_MS.$1.$2), --frequency-kHz $(CC_C150_BURST_KHZ.$1.$2) --duration-ms $(CC_C150_RECORD_MS.$1.$2))
+cc_c150_packing_json = $(patsubst %.h5,%.json,$(CC_C150_PACKING.$1))
+
+# The lab's cube packed with step 5's inputs at its side (and so the quick tree's 1/3-scale cube, below).
+$(CC_C150_PACKING.150) $(call cc_c150_packing_json,150) &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
     $(CC_OUT)/density.json $(BIN)/mw-pack
 	@mkdir -p $(@D)
 	$(BIN)/mw-pack box --from $(CC_LAB)/porosity.toml --from $(CC_LAB)/dem-packing.toml --from $(CC_OUT)/density.json \
-	  --cube-side-mm $(CC_C150_SIDE_MM) --quiet --packing $(CC_C150_OUT)/packing.h5 --out $(CC_C150_OUT)/packing.json > /dev/null
+	  --cube-side-mm $(CC_C150_SIDE_MM.150) --quiet --packing $(CC_C150_PACKING.150) --out $(call cc_c150_packing_json,150) > /dev/null
+ifeq ($(QUICK),1)
+$(CC_C150_PACKING.50) $(call cc_c150_packing_json,50) &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
+    $(CC_OUT)/density.json $(BIN)/mw-pack
+	@mkdir -p $(@D)
+	$(BIN)/mw-pack box --from $(CC_LAB)/porosity.toml --from $(CC_LAB)/dem-packing.toml --from $(CC_OUT)/density.json \
+	  --cube-side-mm $(CC_C150_SIDE_MM.50) --quiet --packing $(CC_C150_PACKING.50) --out $(call cc_c150_packing_json,50) > /dev/null
+endif
 
 # The calibration to E_d and nu_d on the pipeline's 50 mm packing (the pipeline's own calibration
 # is this one when CC_CALIBRATION_TARGETS=dynamic; then the rule is not used).
@@ -70,38 +128,36 @@ $(CC_C150_OUT)/calibration-dynamic.json $(CC_C150_OUT)/calibration-dynamic-trial
 # upv<size>-s-<choice>.*; size 150 is the lab's cube, 50 the same test scaled by 1/3 on step 5's
 # packing (scenes/upv50-*.toml: three times the frequency, the same wavelengths per path), a check
 # at 1/30 of the cost. $1 the choice, $2 p or s, $3 the size.
-CC_C150_SIZES := 150 50
-CC_C150_PACKING.150 := $(CC_C150_OUT)/packing.h5
-CC_C150_PACKING.50 := $(CC_OUT)/packing.h5
 define CC_C150_RUNS
-$(CC_C150_OUT)/upv$3-$2-$1.h5 $(CC_C150_OUT)/upv$3-$2-$1.csv $(CC_C150_OUT)/upv$3-$2-$1.json &: $(CC_NOTES)/scenes/upv$3-$2.toml \
-    $(CC_LAB)/upv-experiment-$2$(if $(filter 50,$3),-50mm).toml $(CC_C150_PACKING.$3) $(CC_C150_MATERIAL.$1) $(BIN)/mw-dem
+$(CC_C150_OUT)/upv$3-$2-$1.h5 $(CC_C150_OUT)/upv$3-$2-$1.csv $(CC_C150_OUT)/upv$3-$2-$1.json &: \
+    $(CC_NOTES)/scenes/$(CC_C150_SCENE.$3)-$2.toml $(CC_LAB)/upv-experiment-$2$(if $(filter upv50,$(CC_C150_SCENE.$3)),-50mm).toml \
+    $(CC_C150_PACKING.$3) $(CC_C150_MATERIAL.$1) $(BIN)/mw-dem
 	@mkdir -p $$(@D)
-	$(BIN)/mw-dem --from $(CC_C150_MATERIAL.$1) run $(CC_NOTES)/scenes/upv$3-$2.toml --packing $(CC_C150_PACKING.$3) \
+	$(BIN)/mw-dem --from $(CC_C150_MATERIAL.$1) run $(CC_NOTES)/scenes/$(CC_C150_SCENE.$3)-$2.toml --packing $(CC_C150_PACKING.$3)$(call cc_c150_dem_record,$3,$2) \
 	  --quiet --signals $(CC_C150_OUT)/upv$3-$2-$1.h5 --signals-csv $(CC_C150_OUT)/upv$3-$2-$1.csv \
 	  --summary $(CC_C150_OUT)/upv$3-$2-$1.json > /dev/null
 endef
 # The P pick first (threshold), then the S chain after it (the matched filter); the second run reads the first's t_p.
 define CC_C150_PICKS
 $(CC_C150_OUT)/upv$2-tp-$1.json $(CC_C150_OUT)/upv$2-p-$1.png &: $(CC_C150_OUT)/upv$2-p-$1.csv $(BIN)/mw-upv
-	$(BIN)/mw-upv --path-mm $2 --p-wave $(CC_C150_OUT)/upv$2-p-$1.csv $(CC_C150_P_PICK) $(call cc_c150_record,$2) \
-	  --plot $(CC_C150_OUT)/upv$2-p-$1.png --title "$2 mm DEM cube, calibration '$1': P transducers, the pick" \
+	$(BIN)/mw-upv --path-mm $(CC_C150_SIDE_MM.$2) --p-wave $(CC_C150_OUT)/upv$2-p-$1.csv $(CC_C150_P_PICK) $(call cc_c150_record,$2) \
+	  --plot $(CC_C150_OUT)/upv$2-p-$1.png --title "$(CC_C150_SIDE_MM.$2) mm DEM cube, calibration '$1': P transducers, the pick" \
 	  --out $(CC_C150_OUT)/upv$2-tp-$1.json > /dev/null
 $(CC_C150_OUT)/upv$2-picks-$1.json $(CC_C150_OUT)/upv$2-s-$1.png &: $(CC_C150_OUT)/upv$2-tp-$1.json $(CC_C150_OUT)/upv$2-s-$1.csv \
     $(CC_OUT)/density.json $(BIN)/mw-upv
 	$(BIN)/mw-upv --from $(CC_C150_OUT)/upv$2-tp-$1.json --from $(CC_OUT)/density.json --s-wave $(CC_C150_OUT)/upv$2-s-$1.csv \
-	  $(CC_C150_S_PICK) $(CC_C150_S_WAVELET.$2) $(call cc_c150_record,$2) --plot $(CC_C150_OUT)/upv$2-s-$1.png \
-	  --title "$2 mm DEM cube, calibration '$1': S transducers, the matched filter's pick" --out $(CC_C150_OUT)/upv$2-picks-$1.json > /dev/null
+	  $(CC_C150_S_PICK) $(call cc_c150_s_wavelet,$2) $(call cc_c150_record,$2) --plot $(CC_C150_OUT)/upv$2-s-$1.png \
+	  --title "$(CC_C150_SIDE_MM.$2) mm DEM cube, calibration '$1': S transducers, the matched filter's pick" --out $(CC_C150_OUT)/upv$2-picks-$1.json > /dev/null
 $(CC_C150_OUT)/upv$2-tp-noisy-$1.json $(CC_C150_OUT)/upv$2-p-noisy-$1.png &: $(CC_C150_OUT)/upv$2-p-$1.csv $(BIN)/mw-upv
-	$(BIN)/mw-upv --path-mm $2 --p-wave $(CC_C150_OUT)/upv$2-p-$1.csv $(CC_C150_NOISY_PICK) $(call cc_c150_record,$2) \
+	$(BIN)/mw-upv --path-mm $(CC_C150_SIDE_MM.$2) --p-wave $(CC_C150_OUT)/upv$2-p-$1.csv $(CC_C150_NOISY_PICK) $(call cc_c150_record,$2) \
 	  --plot $(CC_C150_OUT)/upv$2-p-noisy-$1.png \
-	  --title "$2 mm DEM cube, calibration '$1': P record + noise at $(CC_C150_NOISE_SNR_DB) dB, AIC pick" \
+	  --title "$(CC_C150_SIDE_MM.$2) mm DEM cube, calibration '$1': P record + noise at $(CC_C150_NOISE_SNR_DB) dB, AIC pick" \
 	  --out $(CC_C150_OUT)/upv$2-tp-noisy-$1.json > /dev/null
 $(CC_C150_OUT)/upv$2-picks-noisy-$1.json $(CC_C150_OUT)/upv$2-s-noisy-$1.png &: $(CC_C150_OUT)/upv$2-tp-noisy-$1.json \
     $(CC_C150_OUT)/upv$2-s-$1.csv $(CC_OUT)/density.json $(BIN)/mw-upv
 	$(BIN)/mw-upv --from $(CC_C150_OUT)/upv$2-tp-noisy-$1.json --from $(CC_OUT)/density.json --s-wave $(CC_C150_OUT)/upv$2-s-$1.csv \
-	  $(CC_C150_NOISY_PICK) $(CC_C150_S_WAVELET.$2) $(call cc_c150_record,$2) --plot $(CC_C150_OUT)/upv$2-s-noisy-$1.png \
-	  --title "$2 mm DEM cube, calibration '$1': S record + noise at $(CC_C150_NOISE_SNR_DB) dB, matched filter after P" \
+	  $(CC_C150_NOISY_PICK) $(call cc_c150_s_wavelet,$2) $(call cc_c150_record,$2) --plot $(CC_C150_OUT)/upv$2-s-noisy-$1.png \
+	  --title "$(CC_C150_SIDE_MM.$2) mm DEM cube, calibration '$1': S record + noise at $(CC_C150_NOISE_SNR_DB) dB, matched filter after P" \
 	  --out $(CC_C150_OUT)/upv$2-picks-noisy-$1.json > /dev/null
 endef
 $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,$(eval $(call CC_C150_RUNS,$c,$k,$z)))$(eval $(call CC_C150_PICKS,$c,$z))))
@@ -113,8 +169,8 @@ $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,$(ev
 $(CC_C150_OUT)/upv150.csv: $(CC_LAB)/upv.toml $(CC_OUT)/upv.json $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),\
     $(CC_C150_OUT)/upv$z-picks-$c.json $(CC_C150_OUT)/upv$z-picks-noisy-$c.json) $(CC_C150_MATERIAL.$c)) $(BIN)/mw-table
 	$(BIN)/mw-table gather --key-name record --row "measured (upv.toml; step 3)=$(CC_LAB)/upv.toml,$(CC_OUT)/upv.json" \
-	  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),--row "DEM $z mm; calibrated to $c=$(CC_C150_MATERIAL.$c),$(CC_C150_OUT)/upv$z-picks-$c.json" \
-	    --row "DEM $z mm; calibrated to $c; + $(CC_C150_NOISE_SNR_DB) dB noise; AIC=$(CC_C150_MATERIAL.$c),$(CC_C150_OUT)/upv$z-picks-noisy-$c.json")) \
+	  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),--row "DEM $(CC_C150_SIDE_MM.$z) mm; calibrated to $c=$(CC_C150_MATERIAL.$c),$(CC_C150_OUT)/upv$z-picks-$c.json" \
+	    --row "DEM $(CC_C150_SIDE_MM.$z) mm; calibrated to $c; + $(CC_C150_NOISE_SNR_DB) dB noise; AIC=$(CC_C150_MATERIAL.$c),$(CC_C150_OUT)/upv$z-picks-noisy-$c.json")) \
 	  --column path_mm --column "t_p_us=t_p_us|t_p" --column "t_s_us=t_s_us|t_s" --column v_p_m_s --column v_s_m_s \
 	  --column E_d_GPa --column nu_d --column "E_glob_GPa=E_glob_GPa|E_d_GPa" --column "nu_glob=nu_glob|nu_d" \
 	  --significant-digits 4 --csv $@ > /dev/null
@@ -123,13 +179,13 @@ $(CC_C150_OUT)/upv150.csv: $(CC_LAB)/upv.toml $(CC_OUT)/upv.json $(foreach c,$(C
 $(CC_C150_OUT)/upv150-cost.csv: $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,$(CC_C150_OUT)/upv$z-$k-$c.json))) \
     $(BIN)/mw-table
 	$(BIN)/mw-table gather --key-name run \
-	  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,--row "$z mm $k; $c=$(CC_C150_OUT)/upv$z-$k-$c.json"))) \
+	  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,--row "$(CC_C150_SIDE_MM.$z) mm $k; $c=$(CC_C150_OUT)/upv$z-$k-$c.json"))) \
 	  --column model --column spheres --column bonds --column threads --column steps --column setup_s --column wall_s \
 	  --column steps_per_s --column memory_estimate_MiB --column peak_force_ratio --significant-digits 4 --csv $@ > /dev/null
 
-$(CC_C150_OUT)/packing150.csv: $(CC_C150_OUT)/packing.json $(CC_OUT)/packing.json $(BIN)/mw-table
-	$(BIN)/mw-table gather --key-name packing --row "150 mm cube=$(CC_C150_OUT)/packing.json" \
-	  --row "50 mm cube (step 5)=$(CC_OUT)/packing.json" --column spheres --column bonds --column coordination \
+$(CC_C150_OUT)/packing150.csv: $(foreach z,$(CC_C150_SIZES),$(call cc_c150_packing_json,$z)) $(BIN)/mw-table
+	$(BIN)/mw-table gather --key-name packing --row "$(CC_C150_SIDE_MM.150) mm cube=$(call cc_c150_packing_json,150)" \
+	  --row "$(CC_C150_PACKING_ROW.50)=$(call cc_c150_packing_json,50)" --column spheres --column bonds --column coordination \
 	  --column porosity_pct --column particle_density_kg_m3 --column relaxation_iterations --column threads \
 	  --column wall_time_s --significant-digits 5 --csv $@ > /dev/null
 
@@ -196,10 +252,10 @@ CC_C150_RESULTS := $(CC_C150_OUT)/packing150.csv $(CC_C150_OUT)/upv150.csv $(CC_
 .PHONY: concrete-cube-150
 concrete-cube-150: $(CC_C150_RESULTS)
 	@echo
-	@echo "== The 150 mm cube ($(CC_C150_OUT)): packing (wall time and peak memory: mw-prov runs --tool mw-pack) =="
+	@echo "== The $(CC_C150_SIDE_MM.150) mm cube ($(CC_C150_OUT)): packing (wall time and peak memory: mw-prov runs --tool mw-pack) =="
 	@$(CC_PRINT_CSV) $(CC_C150_OUT)/packing150.csv
 	@echo
-	@echo "== UPV on the 150 mm DEM cube against the lab's (P 54 kHz, S 40 kHz, 150 mm path) =="
+	@echo "== UPV on the $(CC_C150_SIDE_MM.150) mm DEM cube against the lab's (P $(CC_C150_BURST_KHZ.150.p) kHz, S $(CC_C150_BURST_KHZ.150.s) kHz, $(CC_C150_SIDE_MM.150) mm path) =="
 	@$(CC_PRINT_CSV) $(CC_C150_OUT)/upv150.csv
 	@echo
 	@echo "== The wave runs' cost (wall time and peak memory: mw-prov runs --tool mw-dem) =="
