@@ -11,17 +11,9 @@
 #include <HYPRE.h>
 #include <HYPRE_parcsr_ls.h>
 #include <mpi.h>  // the C API (OMPI_SKIP_MPICXX)
-#endif
 
-#if defined(__SANITIZE_ADDRESS__)
-#define MESOWAVE_LSAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define MESOWAVE_LSAN 1
-#endif
-#endif
-#ifdef MESOWAVE_LSAN
-#include <sanitizer/lsan_interface.h>
+#include "mesowave/core/leak_check.hpp"
+#include "mesowave/dem/parallel/mpi_session.hpp"
 #endif
 
 namespace mesowave::dem {
@@ -38,33 +30,13 @@ void check(HYPRE_Int code, const char* call) {
 }
 #define MW_HYPRE(call) check(call, #call)
 
-// OpenMPI's start and end leave about 120 kB that LeakSanitizer reports (theirs, once a process,
-// also under mpirun): a sanitizer build (make test-sanitize) leaves what they allocate out of its report.
-struct OutsideLeakCheck {
-#ifdef MESOWAVE_LSAN
-  OutsideLeakCheck() { __lsan_disable(); }
-  ~OutsideLeakCheck() { __lsan_enable(); }
-#endif
-};
-
-// MPI and hypre for the whole process, started on first use. A launcher's MPI
-// (MpiSession) is used as it is; a plain run's is started here and finalised at
-// exit, after hypre's (atexit runs in reverse order of registration).
+// hypre for the whole process, started on first use after MPI (start_mpi_for_library: a launcher's
+// as it is, a plain run's started there) and finalised at exit before MPI (atexit runs in reverse
+// order of registration).
 void start_hypre() {
   static const bool started = [] {
+    start_mpi_for_library();
     [[maybe_unused]] const OutsideLeakCheck outside;
-    int initialised = 0;
-    MPI_Initialized(&initialised);
-    if (!initialised) {
-      int provided = 0;
-      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-      std::atexit([] {
-        [[maybe_unused]] const OutsideLeakCheck outside;
-        int finalised = 0;
-        MPI_Finalized(&finalised);
-        if (!finalised) MPI_Finalize();
-      });
-    }
     MW_HYPRE(HYPRE_Init());
     std::atexit([] {
       [[maybe_unused]] const OutsideLeakCheck outside;

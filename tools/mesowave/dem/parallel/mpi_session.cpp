@@ -10,6 +10,8 @@
 
 #ifdef MESOWAVE_HAVE_MPI
 #include <mpi.h>  // the C API (OMPI_SKIP_MPICXX: no C++ bindings to link)
+
+#include "mesowave/core/leak_check.hpp"
 #endif
 
 namespace mesowave::dem {
@@ -63,6 +65,30 @@ private:
 #endif
 
 }  // namespace
+
+void start_mpi_for_library() {
+#ifdef MESOWAVE_HAVE_MPI
+  static const bool started = [] {
+    [[maybe_unused]] const OutsideLeakCheck outside;
+    int initialised = 0;
+    MPI_Initialized(&initialised);
+    if (!initialised) {
+      int provided = 0;
+      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+      std::atexit([] {
+        [[maybe_unused]] const OutsideLeakCheck outside;
+        int finalised = 0;
+        MPI_Finalized(&finalised);
+        if (!finalised) MPI_Finalize();
+      });
+    }
+    return true;
+  }();
+  (void)started;
+#else
+  throw InputError("this build has no MPI, which the solver asked for needs (install libopenmpi-dev and configure again)");
+#endif
+}
 
 MpiSession::MpiSession(int& argc, char**& argv) {
   if (launched_size() <= 1) return;

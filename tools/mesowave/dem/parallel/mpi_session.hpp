@@ -15,6 +15,12 @@
 
 namespace mesowave::dem {
 
+/// MPI for a library that needs it (hypre's BoomerAMG, dem/calibration/boomeramg.hpp) in a
+/// process no launcher started: initialised on the first call (a singleton: about 1 s of
+/// OpenMPI's start-up) and finalised at exit; under a launcher MpiSession's MPI is used as it is.
+/// The one place besides MpiSession where MPI starts. InputError in a build without MPI.
+void start_mpi_for_library();
+
 class MpiSession {
 public:
   /// InputError if started with several ranks by a build without MPI.
