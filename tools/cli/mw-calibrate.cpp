@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   fs::path scene_path, packing_path, work_dir, out, trials_csv, targets_csv, plot_trajectory, plot_curves, mw_dem_path, experiment_path;
   int threads = 0, max_trials = 12;
   std::string elastic_trials = "dynamic";
+  std::optional<std::string> static_preconditioner;
   auto common = [&](CLI::App* sub) {
     sub->add_option("--scene", scene_path, "The virtual test (TOML with a [test] table)")->required();
     sub->add_option("--packing", packing_path, "Packing instead of the scene's [packing] file");
@@ -82,6 +83,9 @@ int main(int argc, char** argv) {
                    "trials stay dynamic")->check(CLI::IsMember({"dynamic", "static"}))->capture_default_str();
   cube->add_option("--elastic-velocity-mm-s", elastic_velocity, "Stepped elastic trials: the walls' speed [mm/s] (default: "
                    "the scene's; their only rate effect is inertia, bounded by the test: docs/calibration.md)");
+  cube->add_option("--static-preconditioner", static_preconditioner,
+                   "Solved elastic trials: the BiCGSTAB preconditioner, passed to mw-dem run --static-preconditioner "
+                   "(jacobi | ilut | amg; default: mw-dem's, jacobi)");
   cube->add_option("--plot-curves", plot_curves, "PNG: stress-strain curves of the calibrated test, with the moduli");
 
   auto* rod = cli.add_subcommand("rod", "Tension test of a chain: the contact modulus for the rod's E");
@@ -125,7 +129,7 @@ int main(int argc, char** argv) {
     const dem::DemParameters start{start_E ? *start_E * units::GPa : m.E_dem_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
     const double mu_deg = friction_deg.value_or(m.friction_angle_rad * 180 / 3.141592653589793);
     dem::CompressionCalibration calibration(targets, dem::compression_tolerances(tol_E_pct, tol_nu, tol_sigma_pct), start, max_trials);
-    const dem::ElasticTrials elastic = dem::elastic_trials(elastic_trials == "static", elastic_velocity);
+    const dem::ElasticTrials elastic = dem::elastic_trials(elastic_trials == "static", elastic_velocity, static_preconditioner);
     dem::run_trials(calibration, run_trial, mu_deg, std::cerr, elastic, [&](int k) { return trial_command.file(k, "-intact.h5"); });
     const dem::CalibrationTrial& best = calibration.result();
     run.metric("E_glob", best.E_glob_Pa / 1e9, "GPa"), run.metric("nu_glob", best.nu_glob, "");

@@ -258,3 +258,34 @@ TEST(CompressionCalibration, TheElasticTrialsRunAtTheirOwnSpeedAndTheFailureTria
   EXPECT_NE(both.find("--elastic-velocity-mm-s"), std::string::npos);
   EXPECT_NE(both.find("static"), std::string::npos);
 }
+
+TEST(CompressionCalibration, SolvedElasticTrialsPassTheirPreconditionerToMwDem) {
+  // mw-calibrate --elastic-trials static --static-preconditioner amg: each elastic trial's mw-dem run
+  // gets --static --static-preconditioner amg (mw-dem checks the name), a failure trial neither, and
+  // the summary records it; a preconditioner for stepped trials is refused in one line.
+  CalibrationTrial elastic, failure;
+  elastic.kind = CalibrationTrial::Kind::elastic;
+  failure.kind = CalibrationTrial::Kind::failure;
+  elastic.parameters = failure.parameters = {26.9e9, 0.296, 33.8e6, 1.0};
+  const CalibrationTargets targets{27.42e9, 0.16, 66e6};
+  const ElasticTrials amg = elastic_trials(true, std::nullopt, "amg");
+  const auto preconditioner = [](const std::vector<std::string>& o) {
+    const auto at = std::find(o.begin(), o.end(), "--static-preconditioner");
+    return at != o.end() && at + 1 != o.end() ? *(at + 1) : std::string();
+  };
+  const auto options = compression_trial_options(elastic, targets, 18, amg);
+  EXPECT_NE(std::find(options.begin(), options.end(), "--static"), options.end());
+  EXPECT_EQ(preconditioner(options), "amg");
+  EXPECT_EQ(preconditioner(compression_trial_options(failure, targets, 18, amg)), "");
+  EXPECT_EQ(preconditioner(compression_trial_options(elastic, targets, 18, elastic_trials(true, std::nullopt))), "");
+
+  const SyntheticPacking packing;
+  CompressionCalibration c(packing.targets_of({26.9e9, 0.296, 33.8e6, 1.0}), {}, kPoorStart, 12);
+  calibrate(c, packing);
+  EXPECT_EQ(calibration_summary(c, 18, {}, amg).at("elastic_trials_preconditioner").get<std::string>(), "amg");
+  EXPECT_FALSE(calibration_summary(c, 18, {}, elastic_trials(true, std::nullopt)).contains("elastic_trials_preconditioner"));
+
+  const std::string stepped = test::input_error_of([] { elastic_trials(false, std::nullopt, "amg"); });
+  EXPECT_NE(stepped.find("--static-preconditioner amg"), std::string::npos);
+  EXPECT_NE(stepped.find("--elastic-trials static"), std::string::npos);
+}

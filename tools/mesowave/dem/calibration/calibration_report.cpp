@@ -28,12 +28,16 @@ std::vector<std::string> TrialCommand::argv(int k, const std::vector<std::string
   return a;
 }
 
-ElasticTrials elastic_trials(bool static_solve, std::optional<double> velocity_mm_s) {
+ElasticTrials elastic_trials(bool static_solve, std::optional<double> velocity_mm_s,
+                             std::optional<std::string> preconditioner) {
   if (velocity_mm_s) {
     require_positive("--elastic-velocity-mm-s", *velocity_mm_s, "mm/s");
     if (static_solve) throw InputError("--elastic-velocity-mm-s is the speed of stepped elastic trials: --elastic-trials static has none");
   }
-  return {static_solve, velocity_mm_s};
+  if (preconditioner && !static_solve)
+    throw InputError("--static-preconditioner " + *preconditioner +
+                     " is for solved elastic trials: give --elastic-trials static, or leave it out");
+  return {static_solve, velocity_mm_s, preconditioner};
 }
 
 std::vector<std::string> compression_trial_options(const CalibrationTrial& t, const CalibrationTargets& targets,
@@ -47,8 +51,10 @@ std::vector<std::string> compression_trial_options(const CalibrationTrial& t, co
     const double b = 0.1 * targets.sigma_Pa / 1e6, a = targets.sigma_Pa / 3 / 1e6;
     options.insert(options.end(), {"--unbreakable-bonds", "--model", "linear", "--modulus-levels-MPa",
                                    format_exact(b) + "," + format_exact(a), "--stop-at-MPa", format_exact(1.02 * a)});
-    if (elastic.static_solve) options.push_back("--static");
-    else if (elastic.velocity_mm_s) options.insert(options.end(), {"--velocity-mm-s", format_exact(*elastic.velocity_mm_s)});
+    if (elastic.static_solve) {
+      options.push_back("--static");
+      if (elastic.preconditioner) options.insert(options.end(), {"--static-preconditioner", *elastic.preconditioner});
+    } else if (elastic.velocity_mm_s) options.insert(options.end(), {"--velocity-mm-s", format_exact(*elastic.velocity_mm_s)});
   } else {
     options.insert(options.end(), {"--T-MPa", format_exact(p.T_Pa / 1e6), "--C-MPa", format_exact(p.c_over_t * p.T_Pa / 1e6)});
   }
@@ -178,6 +184,7 @@ nlohmann::ordered_json calibration_summary(const CompressionCalibration& c, doub
   j["trials_wall_s"] = total_wall;
   j["elastic_trials"] = elastic.static_solve ? "static" : "dynamic";  // stepped, or one solve of the linearised network
   if (!elastic.static_solve && elastic.velocity_mm_s) j["elastic_trials_velocity_mm_s"] = *elastic.velocity_mm_s;
+  if (elastic.static_solve && elastic.preconditioner) j["elastic_trials_preconditioner"] = *elastic.preconditioner;
   const auto& tol = c.tolerances();
   const auto target = [](double value, const char* unit, const std::string& tolerance, double calibrated,
                          const nlohmann::ordered_json& origin) {

@@ -41,11 +41,14 @@ struct TrialCommand {
 struct ElasticTrials {
   bool static_solve = false;
   std::optional<double> velocity_mm_s;
+  std::optional<std::string> preconditioner;  ///< solved trials: mw-dem's --static-preconditioner (its default: none given)
 };
 
-/// mw-calibrate's --elastic-trials static and --elastic-velocity-mm-s, checked: a speed must be
-/// positive and is for stepped trials only (InputError naming the option).
-ElasticTrials elastic_trials(bool static_solve, std::optional<double> velocity_mm_s);
+/// mw-calibrate's --elastic-trials static, --elastic-velocity-mm-s and --static-preconditioner,
+/// checked: a speed must be positive and is for stepped trials only, a preconditioner for solved
+/// ones only (InputError naming the option; mw-dem checks the preconditioner's name).
+ElasticTrials elastic_trials(bool static_solve, std::optional<double> velocity_mm_s,
+                             std::optional<std::string> preconditioner = std::nullopt);
 
 /// The `mw-dem run` options of a cube trial. An elastic trial reads the
 /// response where the lab reads it, between 10 % and 1/3 of the target
