@@ -12,6 +12,7 @@
 #include "mesowave/core/units.hpp"
 #include "mesowave/dem/calibration/calibration.hpp"
 #include "mesowave/dem/calibration/calibration_report.hpp"
+#include "mesowave/dem/calibration/static_elastic.hpp"
 #include "mesowave/dem/packing/packing_file.hpp"
 #include "mesowave/dem/scene/scene.hpp"
 #include "mesowave/io/gnuplot.hpp"
@@ -85,7 +86,8 @@ int main(int argc, char** argv) {
                    "the scene's; their only rate effect is inertia, bounded by the test: docs/calibration.md)");
   cube->add_option("--static-preconditioner", static_preconditioner,
                    "Solved elastic trials: the BiCGSTAB preconditioner, passed to mw-dem run --static-preconditioner "
-                   "(jacobi | ilut | amg; default: mw-dem's, jacobi)");
+                   "(jacobi | ilut | amg; default: mw-dem's, jacobi)")
+      ->check(CLI::IsMember(dem::static_preconditioners()));
   cube->add_option("--plot-curves", plot_curves, "PNG: stress-strain curves of the calibrated test, with the moduli");
 
   auto* rod = cli.add_subcommand("rod", "Tension test of a chain: the contact modulus for the rod's E");

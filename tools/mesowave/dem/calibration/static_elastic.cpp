@@ -23,12 +23,18 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The solver's name for each preconditioner StaticElasticOptions knows; InputError for any other.
+// Each preconditioner StaticElasticOptions knows, with the solver's name in the results.
+constexpr std::pair<const char*, const char*> kPreconditioners[] = {
+    {"jacobi", "BiCGSTAB (Jacobi)"}, {"ilut", "BiCGSTAB (ILUT)"}, {"amg", "BiCGSTAB (BoomerAMG)"}};
+
+// The solver's name for a preconditioner; InputError for an unknown one.
 std::string bicgstab_name(const std::string& preconditioner) {
-  if (preconditioner == "jacobi") return "BiCGSTAB (Jacobi)";
-  if (preconditioner == "ilut") return "BiCGSTAB (ILUT)";
-  if (preconditioner == "amg") return "BiCGSTAB (BoomerAMG)";
-  throw InputError("static solve: preconditioner \"" + preconditioner + "\" is none of jacobi, ilut, amg");
+  std::string known;
+  for (const auto& [name, solver] : kPreconditioners) {
+    if (preconditioner == name) return solver;
+    known += (known.empty() ? "" : ", ") + std::string(name);
+  }
+  throw InputError("static solve: preconditioner \"" + preconditioner + "\" is none of " + known);
 }
 
 // The model as the sensors see it, with the static solution as its displacement
@@ -75,6 +81,12 @@ struct Wall {
 };
 
 }  // namespace
+
+std::vector<std::string> static_preconditioners() {
+  std::vector<std::string> names;
+  for (const auto& entry : kPreconditioners) names.emplace_back(entry.first);
+  return names;
+}
 
 Matrix linear_network_stiffness(const SphereSystem& system) {
   const BondNetwork& bonds = system.bonds();

@@ -60,6 +60,9 @@ class SphereSystem;
 /// theta_y, theta_z; model numbering): K u = minus the bonds' generalized forces at u.
 Eigen::SparseMatrix<double, Eigen::RowMajor> linear_network_stiffness(const SphereSystem& system);
 
+/// The names StaticElasticOptions::preconditioner takes (jacobi, ilut, amg): the tools' option checks.
+std::vector<std::string> static_preconditioners();
+
 struct StaticElasticOptions {
   double tolerance = 1e-10;        ///< BiCGSTAB's relative residual |r| / |b|
   int max_iterations = 100000;     ///< per solve

@@ -51,7 +51,7 @@ void add_run_options(CLI::App& run_cmd, RunCommandLine& v) {
   run_cmd.add_option("--static-preconditioner", v.static_preconditioner,
                      "--static's BiCGSTAB preconditioner: jacobi | ilut (incomplete LU) | amg (hypre's BoomerAMG, "
                      "systems AMG over the spheres' 6 DOFs; docs/calibration.md, \"Elastic trials as a static solve\")")
-      ->check(CLI::IsMember({"jacobi", "ilut", "amg"}))
+      ->check(CLI::IsMember(static_preconditioners()))
       ->needs(static_opt)
       ->capture_default_str();
   run_cmd.add_option("--curves", v.curves_path,
