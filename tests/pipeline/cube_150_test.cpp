@@ -12,9 +12,9 @@
 //     its calibration's (not its picks' E_d, nu_d), its times its picks', the measured row's
 //     times upv.toml's; table3-calibrations.csv's columns each calibration's table3.csv;
 //  4. every tool run is in the quick provenance database, none failed, every output as recorded.
-// Measured on the 2-core development machine (2026-12-06, beside another engineer's benchmarks,
-// load 3-4.5): 44-74 s wall, 63-74 s of CPU (user + system; the tree's copy, 6 s, and the report's
-// rendering included). Of the tools' 46 s, the chain's own runs (both cubes' packings, the dynamic
+// Measured on the 2-core development machine (2026-12-06, five runs beside another engineer's
+// benchmarks, load 2.4-4.5): 37-74 s wall, 63-74 s of CPU (user + system; the tree's copy, 6 s, and
+// the report's rendering included). Of the tools' 46 s, the chain's own runs (both cubes' packings, the dynamic
 // calibration, the wave runs, the picks, the tables, the report) take 28 s, the upstream quick
 // pipeline they need 18 s.
 #include <gtest/gtest.h>
