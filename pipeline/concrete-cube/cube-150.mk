@@ -164,8 +164,9 @@ $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,$(ev
 
 # The picks beside the lab's (upv.toml: t_p, t_s; upv.json: v_p, v_s, E_d, nu_d of step 3); the
 # 50 mm rows' times are over 50 mm (x 3 for the 150 mm path), their velocities compare directly.
-# A DEM row reads its material before its picks: "E_glob_GPa|E_d_GPa" takes the first file that
-# holds either, so the calibrated E_glob, not the picks' E_d (the measured row has only E_d).
+# "E_glob_GPa|E_d_GPa": a DEM row's calibrated E_glob (its material file), not its picks' E_d (mw-table
+# looks for the first name in all of a row's files first); the measured row, which has no E_glob,
+# shows its E_d there.
 $(CC_C150_OUT)/upv150.csv: $(CC_LAB)/upv.toml $(CC_OUT)/upv.json $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),\
     $(CC_C150_OUT)/upv$z-picks-$c.json $(CC_C150_OUT)/upv$z-picks-noisy-$c.json) $(CC_C150_MATERIAL.$c)) $(BIN)/mw-table
 	$(BIN)/mw-table gather --key-name record --row "measured (upv.toml; step 3)=$(CC_LAB)/upv.toml,$(CC_OUT)/upv.json" \
