@@ -10,9 +10,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "mesowave/io/quantity_file.hpp"
 #include "mesowave/prov/run_record.hpp"
-#include "support/run_tool.hpp"
+#include "support/quick_tree.hpp"
 
 using namespace mesowave;
 using namespace mesowave::test;
@@ -21,13 +20,6 @@ namespace fs = std::filesystem;
 namespace {
 
 nlohmann::json json_file(const fs::path& path) { return nlohmann::json::parse(read_file(path)); }
-
-double entry(const fs::path& toml, const std::string& name) {
-  for (const auto& q : io::read_quantity_file(toml))
-    if (q.name == name) return std::stod(q.value);
-  ADD_FAILURE() << name << " is not in " << toml;
-  return NAN;
-}
 
 // What a run decided: the calibrated parameters, the model's response and the targets with
 // their origins; wall times (trials_wall_s) measure the machine, not the choice.
@@ -39,17 +31,13 @@ nlohmann::json decided(nlohmann::json c) {
 }  // namespace
 
 TEST(Pipeline, CalibratesToTheRawStepFourResultsWhenChosen) {
-  const fs::path source = MESOWAVE_SOURCE_DIR, build = fs::path(MESOWAVE_BIN_DIR).parent_path();
-  TempDir work;
-  const fs::path tree = work / "tree";
-  ASSERT_EQ(run_command(source / "scripts/copy-tree", {tree.string()}).exit_status, 0);
-  const fs::path out = tree / "results-quick/concrete-cube", db = tree / "db/provenance-quick.sqlite";
-  const auto make = [&](const std::vector<std::string>& choice) {
-    std::vector<std::string> args = {"-C", tree.string(), "--no-print-directory", "QUICK=1", "BUILD=" + build.string(),
-                                      "MESOWAVE_DB=" + db.string()};
-    args.insert(args.end(), choice.begin(), choice.end());
+  const QuickTree quick;
+  ASSERT_TRUE(quick.copied);
+  const fs::path& tree = quick.root;
+  const fs::path out = tree / "results-quick/concrete-cube", db = quick.db;
+  const auto make = [&](std::vector<std::string> args) {
     args.insert(args.end(), {"results-quick/concrete-cube/calibration.json", "results-quick/concrete-cube/calibration-targets.csv"});
-    const auto r = run_command("/usr/bin/make", args);
+    const auto r = quick.make(args);
     EXPECT_EQ(r.exit_status, 0) << r.out << r.err;
     return r;
   };
@@ -68,8 +56,8 @@ TEST(Pipeline, CalibratesToTheRawStepFourResultsWhenChosen) {
   EXPECT_EQ(by_default["targets"]["E_st"]["entry"], "E_st_measured");
   EXPECT_EQ(by_default["targets"]["sigma_max"]["entry"], "sigma_max");
   // DOUBLE_EQ (4 ulp): mw-calibrate holds the targets in Pa and writes them in GPa and MPa again.
-  EXPECT_DOUBLE_EQ(by_default["E_st_target_GPa"].get<double>(), entry(static_test, "E_st_measured"));
-  EXPECT_DOUBLE_EQ(by_default["sigma_max_target_MPa"].get<double>(), entry(static_test, "sigma_max"));
+  EXPECT_DOUBLE_EQ(by_default["E_st_target_GPa"].get<double>(), quantity_entry(static_test, "E_st_measured"));
+  EXPECT_DOUBLE_EQ(by_default["sigma_max_target_MPa"].get<double>(), quantity_entry(static_test, "sigma_max"));
   EXPECT_EQ(by_default["targets"]["E_st"]["sha256"], prov::describe_file(static_test).sha256);
 
   // The lab's own step 4: E_st and sigma_max from raw-compress.json, nu_st still static-test.toml's.
@@ -88,7 +76,7 @@ TEST(Pipeline, CalibratesToTheRawStepFourResultsWhenChosen) {
   ASSERT_EQ(synth.exit_status, 0) << synth.err;
   make({"CC_CALIBRATION_TARGETS=raw-step-4"});
   const auto raw = json_file(out / "raw-compress.json");
-  const double E_raw = raw["E_st_measured_GPa"], sigma_raw = raw["sigma_max_MPa"], nu_st = entry(static_test, "nu_st");
+  const double E_raw = raw["E_st_measured_GPa"], sigma_raw = raw["sigma_max_MPa"], nu_st = quantity_entry(static_test, "nu_st");
   // mw-compress recovers the records' truth (the shipped set: 27.4187 GPa and 65.965 MPa from 27.42
   // and 66.0, docs/tour/labraw.md); 1 % only checks that the records were made again.
   EXPECT_NEAR(E_raw / 25, 1, 0.01);

@@ -27,8 +27,7 @@
 #include <sstream>
 
 #include "mesowave/io/csv.hpp"
-#include "mesowave/io/quantity_file.hpp"
-#include "support/run_tool.hpp"
+#include "support/quick_tree.hpp"
 
 using namespace mesowave;
 using namespace mesowave::test;
@@ -64,25 +63,14 @@ double cell(const io::CsvTable& t, const std::string& key, const std::string& co
   return NAN;
 }
 
-double entry(const fs::path& toml, const std::string& name) {
-  for (const auto& q : io::read_quantity_file(toml))
-    if (q.name == name) return std::stod(q.value);
-  ADD_FAILURE() << name << " is not in " << toml;
-  return NAN;
-}
-
 }  // namespace
 
 TEST(Pipeline, Cube150ChainOnSmallModelsMakesEveryTableFromItsSources) {
-  const fs::path source = MESOWAVE_SOURCE_DIR, build = fs::path(MESOWAVE_BIN_DIR).parent_path();
-  TempDir work;
-  const fs::path tree = work / "tree";
-  ASSERT_EQ(run_command(source / "scripts/copy-tree", {tree.string()}).exit_status, 0);
-  const fs::path db = tree / "db/provenance-quick.sqlite";
+  const QuickTree quick;
+  ASSERT_TRUE(quick.copied);
+  const fs::path &source = quick.source, &build = quick.build, &tree = quick.root, &db = quick.db;
   const std::string R = "results-quick/concrete-cube/", C = R + "cube-150/";
-  const auto r = run_command("/usr/bin/make", {"-C", tree.string(), "--no-print-directory", "-j2", "--output-sync=target",
-                                               "QUICK=1", "BUILD=" + build.string(), "MESOWAVE_DB=" + db.string(),
-                                               "concrete-cube-150"});
+  const auto r = quick.make({"-j2", "--output-sync=target", "concrete-cube-150"});
   ASSERT_EQ(r.exit_status, 0) << "make concrete-cube-150 QUICK=1 failed:\n"
                               << r.out.substr(r.out.size() > 4000 ? r.out.size() - 4000 : 0) << r.err;
 
@@ -170,9 +158,9 @@ TEST(Pipeline, Cube150ChainOnSmallModelsMakesEveryTableFromItsSources) {
   const auto upv = io::read_csv(tree / C / "upv150.csv");
   const fs::path upv_toml = tree / "lab-data/concrete-cube/upv.toml";
   const std::string measured = "measured (upv.toml; step 3)";
-  EXPECT_EQ(cell(upv, measured, "t_p_us"), printed(entry(upv_toml, "t_p"))) << measured;
-  EXPECT_EQ(cell(upv, measured, "t_s_us"), printed(entry(upv_toml, "t_s"))) << measured;
-  EXPECT_EQ(cell(upv, measured, "path_mm"), printed(entry(upv_toml, "path"))) << measured;
+  EXPECT_EQ(cell(upv, measured, "t_p_us"), printed(quantity_entry(upv_toml, "t_p"))) << measured;
+  EXPECT_EQ(cell(upv, measured, "t_s_us"), printed(quantity_entry(upv_toml, "t_s"))) << measured;
+  EXPECT_EQ(cell(upv, measured, "path_mm"), printed(quantity_entry(upv_toml, "path"))) << measured;
   EXPECT_EQ(upv.rows.size(), 1 + choices.size() * sizes.size() * 2) << "upv150.csv: the measured row and each DEM row";
   const std::map<std::string, fs::path> material = {{"static-test", tree / R / "calibration.json"},
                                                     {"dynamic", tree / C / "calibration-dynamic.json"}};

@@ -225,14 +225,22 @@ TEST(CompressionCalibration, TheDynamicCalibrationsSummaryNamesItsTargetsEdAndNu
   EXPECT_FALSE(j.at("targets").contains("E_st"));
 }
 
-TEST(CompressionCalibration, TheElasticTrialsRunAtTheirOwnSpeedAndTheFailureTrialsAtTheScenes) {
-  // mw-calibrate --elastic-velocity-mm-s 100: the elastic trials' mw-dem runs get --velocity-mm-s 100,
-  // the failure trials none (the strength depends on the rate; docs/calibration.md), and the summary
-  // says how the elastic trials ran.
+namespace {
+// An elastic and a failure trial of one parameter set (the options mw-calibrate gives each).
+std::pair<CalibrationTrial, CalibrationTrial> elastic_and_failure_trials() {
   CalibrationTrial elastic, failure;
   elastic.kind = CalibrationTrial::Kind::elastic;
   failure.kind = CalibrationTrial::Kind::failure;
   elastic.parameters = failure.parameters = {26.9e9, 0.296, 33.8e6, 1.0};
+  return {elastic, failure};
+}
+}  // namespace
+
+TEST(CompressionCalibration, TheElasticTrialsRunAtTheirOwnSpeedAndTheFailureTrialsAtTheScenes) {
+  // mw-calibrate --elastic-velocity-mm-s 100: the elastic trials' mw-dem runs get --velocity-mm-s 100,
+  // the failure trials none (the strength depends on the rate; docs/calibration.md), and the summary
+  // says how the elastic trials ran.
+  const auto [elastic, failure] = elastic_and_failure_trials();
   const CalibrationTargets targets{27.42e9, 0.16, 66e6};
   const ElasticTrials fast = elastic_trials(false, 100.0);
   const auto has_speed = [](const std::vector<std::string>& o) {
@@ -263,10 +271,7 @@ TEST(CompressionCalibration, SolvedElasticTrialsPassTheirPreconditionerToMwDem) 
   // mw-calibrate --elastic-trials static --static-preconditioner amg: each elastic trial's mw-dem run
   // gets --static --static-preconditioner amg (mw-dem checks the name), a failure trial neither, and
   // the summary records it; a preconditioner for stepped trials is refused in one line.
-  CalibrationTrial elastic, failure;
-  elastic.kind = CalibrationTrial::Kind::elastic;
-  failure.kind = CalibrationTrial::Kind::failure;
-  elastic.parameters = failure.parameters = {26.9e9, 0.296, 33.8e6, 1.0};
+  const auto [elastic, failure] = elastic_and_failure_trials();
   const CalibrationTargets targets{27.42e9, 0.16, 66e6};
   const ElasticTrials amg = elastic_trials(true, std::nullopt, "amg");
   const auto preconditioner = [](const std::vector<std::string>& o) {
