@@ -102,18 +102,18 @@ endif
 cc_c150_dem_record = $(if $(CC_C150_RECORD_MS.$1.$2), --frequency-kHz $(CC_C150_BURST_KHZ.$1.$2) --duration-ms $(CC_C150_RECORD_MS.$1.$2))
 cc_c150_packing_json = $(patsubst %.h5,%.json,$(CC_C150_PACKING.$1))
 
-# The lab's cube packed with step 5's inputs at its side (and so the quick tree's 1/3-scale cube, below).
-$(CC_C150_PACKING.150) $(call cc_c150_packing_json,150) &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
+# A size's cube packed with step 5's inputs at its side: the lab's cube, and the quick tree's 1/3-scale
+# cube (the full tree's is step 5's own packing). $1 the size.
+define CC_C150_PACK
+$(CC_C150_PACKING.$1) $(call cc_c150_packing_json,$1) &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
     $(CC_OUT)/density.json $(BIN)/mw-pack
-	@mkdir -p $(@D)
+	@mkdir -p $$(@D)
 	$(BIN)/mw-pack box --from $(CC_LAB)/porosity.toml --from $(CC_LAB)/dem-packing.toml --from $(CC_OUT)/density.json \
-	  --cube-side-mm $(CC_C150_SIDE_MM.150) --quiet --packing $(CC_C150_PACKING.150) --out $(call cc_c150_packing_json,150) > /dev/null
+	  --cube-side-mm $(CC_C150_SIDE_MM.$1) --quiet --packing $(CC_C150_PACKING.$1) --out $(call cc_c150_packing_json,$1) > /dev/null
+endef
+$(eval $(call CC_C150_PACK,150))
 ifeq ($(QUICK),1)
-$(CC_C150_PACKING.50) $(call cc_c150_packing_json,50) &: $(CC_LAB)/porosity.toml $(CC_LAB)/dem-packing.toml \
-    $(CC_OUT)/density.json $(BIN)/mw-pack
-	@mkdir -p $(@D)
-	$(BIN)/mw-pack box --from $(CC_LAB)/porosity.toml --from $(CC_LAB)/dem-packing.toml --from $(CC_OUT)/density.json \
-	  --cube-side-mm $(CC_C150_SIDE_MM.50) --quiet --packing $(CC_C150_PACKING.50) --out $(call cc_c150_packing_json,50) > /dev/null
+$(eval $(call CC_C150_PACK,50))
 endif
 
 # The calibration to E_d and nu_d on the pipeline's 50 mm packing (the pipeline's own calibration

@@ -2,14 +2,12 @@
 // macro-parameters, found with virtual tests, each one `mw-dem run` of a test
 // scene; dem/calibration/calibration.hpp decides what to run next (CompressionCalibration,
 // RodCalibration), dem/calibration/calibration_report.hpp what the trials and the result say.
-#include <cmath>
 #include <iostream>
 #include <optional>
 
 #include "mesowave/app/subprocess.hpp"
 #include "mesowave/app/tool.hpp"
 #include "mesowave/core/check.hpp"
-#include "mesowave/core/units.hpp"
 #include "mesowave/dem/calibration/calibration.hpp"
 #include "mesowave/dem/calibration/calibration_report.hpp"
 #include "mesowave/dem/calibration/static_elastic.hpp"
@@ -84,10 +82,8 @@ int main(int argc, char** argv) {
                    "trials stay dynamic")->check(CLI::IsMember({"dynamic", "static"}))->capture_default_str();
   cube->add_option("--elastic-velocity-mm-s", elastic_velocity, "Stepped elastic trials: the walls' speed [mm/s] (default: "
                    "the scene's; their only rate effect is inertia, bounded by the test: docs/calibration.md)");
-  cube->add_option("--static-preconditioner", static_preconditioner,
-                   "Solved elastic trials: the BiCGSTAB preconditioner, passed to mw-dem run --static-preconditioner "
-                   "(jacobi | ilut | amg; default: mw-dem's, jacobi)")
-      ->check(CLI::IsMember(dem::static_preconditioners()));
+  cube->add_option("--static-preconditioner", static_preconditioner, "Solved elastic trials: the BiCGSTAB preconditioner "
+                   "(mw-dem run --static-preconditioner; default: mw-dem's, jacobi)")->check(CLI::IsMember(dem::static_preconditioners()));
   cube->add_option("--plot-curves", plot_curves, "PNG: stress-strain curves of the calibrated test, with the moduli");
 
   auto* rod = cli.add_subcommand("rod", "Tension test of a chain: the contact modulus for the rod's E");
@@ -126,9 +122,7 @@ int main(int argc, char** argv) {
     const std::string E_option = E_d_GPa ? "--E-d-GPa" : "--E-st-measured-GPa", nu_option = nu_d ? "--nu-d" : "--nu-st";
     const dem::CalibrationTargets targets = dem::compression_targets(E_st_GPa, nu_st, sigma_MPa, E_d_GPa, nu_d);
     if (scene.test.kind != dem::UniaxialTestSpec::Kind::compression) throw InputError("mw-calibrate cube needs a compression test scene");
-    const double T0 = start_T ? *start_T * units::MPa : m.tensile_strength_Pa;
-    if (!std::isfinite(T0)) throw InputError("the scene's bonds never break (no T_MPa): give --start-T-MPa");
-    const dem::DemParameters start{start_E ? *start_E * units::GPa : m.E_dem_Pa, start_nu.value_or(m.stiffness_ratio), T0, c_over_t};
+    const dem::DemParameters start = dem::compression_start(m, start_E, start_nu, start_T, c_over_t);
     const double mu_deg = friction_deg.value_or(m.friction_angle_rad * 180 / 3.141592653589793);
     dem::CompressionCalibration calibration(targets, dem::compression_tolerances(tol_E_pct, tol_nu, tol_sigma_pct), start, max_trials);
     const dem::ElasticTrials elastic = dem::elastic_trials(elastic_trials == "static", elastic_velocity, static_preconditioner);

@@ -294,3 +294,23 @@ TEST(CompressionCalibration, SolvedElasticTrialsPassTheirPreconditionerToMwDem) 
   EXPECT_NE(stepped.find("--static-preconditioner amg"), std::string::npos);
   EXPECT_NE(stepped.find("--elastic-trials static"), std::string::npos);
 }
+
+TEST(CompressionCalibration, TheFirstTrialTakesTheStartOptionsElseTheScenesMaterial) {
+  CohesiveFrictionalMaterial scene;
+  scene.E_dem_Pa = 23.31e9, scene.stiffness_ratio = 0.32, scene.tensile_strength_Pa = 24.4e6;
+  const DemParameters from_scene = compression_start(scene, std::nullopt, std::nullopt, std::nullopt, 1.0);
+  EXPECT_EQ(from_scene.E_dem_Pa, 23.31e9);
+  EXPECT_EQ(from_scene.nu_dem, 0.32);
+  EXPECT_EQ(from_scene.T_Pa, 24.4e6);
+  const DemParameters given = compression_start(scene, 10.0, 0.1, 12.5, 2.0);  // GPa, -, MPa
+  EXPECT_EQ(given.E_dem_Pa, 10e9);
+  EXPECT_EQ(given.nu_dem, 0.1);
+  EXPECT_EQ(given.T_Pa, 12.5e6);
+  EXPECT_EQ(given.c_over_t, 2.0);
+  // Bonds that never break (no T in the scene) and no --start-T-MPa: nothing to calibrate T from.
+  scene.tensile_strength_Pa = std::numeric_limits<double>::infinity();
+  EXPECT_NE(test::input_error_of([&] { compression_start(scene, std::nullopt, std::nullopt, std::nullopt, 1.0); })
+                .find("--start-T-MPa"),
+            std::string::npos);
+  EXPECT_EQ(compression_start(scene, std::nullopt, std::nullopt, 30.0, 1.0).T_Pa, 30e6);
+}

@@ -7,6 +7,7 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/core/units.hpp"
 #include "mesowave/dem/contact/material_parameters.hpp"
 #include "mesowave/dem/engine/vec3.hpp"
 #include "mesowave/io/csv.hpp"
@@ -26,6 +27,13 @@ std::vector<std::string> TrialCommand::argv(int k, const std::vector<std::string
   if (threads > 0) a.insert(a.end(), {"--threads", std::to_string(threads)});
   a.insert(a.end(), options.begin(), options.end());
   return a;
+}
+
+DemParameters compression_start(const CohesiveFrictionalMaterial& scene, std::optional<double> E_dem_GPa,
+                                std::optional<double> nu_dem, std::optional<double> T_MPa, double c_over_t) {
+  const double T = T_MPa ? *T_MPa * units::MPa : scene.tensile_strength_Pa;
+  if (!std::isfinite(T)) throw InputError("the scene's bonds never break (no T_MPa): give --start-T-MPa");
+  return {E_dem_GPa ? *E_dem_GPa * units::GPa : scene.E_dem_Pa, nu_dem.value_or(scene.stiffness_ratio), T, c_over_t};
 }
 
 ElasticTrials elastic_trials(bool static_solve, std::optional<double> velocity_mm_s,

@@ -33,6 +33,12 @@ struct TrialCommand {
   std::vector<std::string> argv(int trial, const std::vector<std::string>& options) const;
 };
 
+/// The cube calibration's first trial from mw-calibrate's --start-E-dem-GPa, --start-nu-dem,
+/// --start-T-MPa and --C-over-T, each not given taken from the scene's material. InputError when
+/// neither gives a finite T (the scene's bonds never break).
+DemParameters compression_start(const CohesiveFrictionalMaterial& scene, std::optional<double> E_dem_GPa,
+                                std::optional<double> nu_dem, std::optional<double> T_MPa, double c_over_t);
+
 /// How the elastic trials run: stepped, or solved (mw-dem run --static); stepped, the moving walls'
 /// speed when not the scene's (mw-dem run --velocity-mm-s). The linearised network's only rate
 /// effect is inertia, held below the scene's quasi-static bound by the test itself: on the 50 mm
