@@ -106,10 +106,11 @@ patch_mm = [3.0, 3.0]
 }
 
 // The summary without what differs between any two runs (timings, the machine's thread
-// choice) and the distributed run's description of its split.
+// choice), the distributed run's description of its split, and rank 0's memory (its share).
 nlohmann::json comparable(const std::filesystem::path& summary) {
   auto j = nlohmann::json::parse(test::read_file(summary));
-  for (const char* key : {"wall_s", "setup_s", "steps_per_s", "ns_per_contact_step", "threads", "threads_reason", "mpi"})
+  for (const char* key : {"wall_s", "setup_s", "steps_per_s", "ns_per_contact_step", "threads", "threads_reason", "mpi",
+                          "memory_estimate_MiB"})
     j.erase(key);
   return j;
 }
@@ -140,7 +141,15 @@ void expect_same_files_on_ranks(const test::TempDir& dir, const std::string& sce
     EXPECT_EQ(comparable(dir / "one.json"), comparable(dir / (tag + ".json"))) << tag;
     if (np > 1) {
       const auto j = nlohmann::json::parse(test::read_file(dir / (tag + ".json")));
-      EXPECT_NE(j.value("mpi", std::string()).find("rank 0 of " + std::to_string(np)), std::string::npos) << tag;
+      const std::string split = j.value("mpi", std::string());
+      EXPECT_NE(split.find("rank 0 of " + std::to_string(np)), std::string::npos) << tag;
+      // Rank 0 holds only the contacts of its own spheres (stage 3, docs/mpi.md): fewer than all.
+      const auto contacts = j["contacts"].get<std::size_t>();
+      const auto at = split.find(" of " + std::to_string(contacts) + " contacts held here");
+      ASSERT_NE(at, std::string::npos) << split;
+      const auto held = std::stoul(split.substr(split.rfind(' ', at - 1) + 1));
+      EXPECT_GT(held, 0u) << split;
+      EXPECT_LT(held, contacts) << split;
     }
   }
 }

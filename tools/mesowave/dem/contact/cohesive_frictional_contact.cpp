@@ -176,7 +176,7 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
       natural.push_back(Slot{(1.0 / norm(d)) * d, {}, 0.0, kNoBond, kFrictional});
   }
   // Same contacts as before (the usual case for waves: bonds only): keep the layout.
-  if (detection_passes_ > 1 && natural.size() == nb && bond_.size() == nb) return;
+  if (detection_passes_ > 1 && natural.size() == nb && system.global_slot_count() == nb) return;
   before_relayout(system);
   const auto order = system.set_contacts(first, second, moments());
   std::vector<Slot> slots(order.size());
@@ -200,9 +200,9 @@ void register_cohesive_frictional_law(Plugins& p) {
         if (model == "chain") return std::make_unique<AxialChain>(std::move(spheres), bonds, in.material, *in.line);
         if (model == "linear")
           return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
-                                                std::make_unique<LinearBondedNetwork>());
+                                                std::make_unique<LinearBondedNetwork>(), in.domain);
         return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
-                                              std::make_unique<CohesiveFrictionalContact>());
+                                              std::make_unique<CohesiveFrictionalContact>(), in.domain);
       },
       .shortcut_obstacle = [](const std::string&, const Scene&) { return std::string(); },
       .describe = [](const LawParameters&) { return nlohmann::ordered_json::object(); },

@@ -42,7 +42,6 @@ public:
   void attach(SphereSystem& system) override;
   void contact_forces(SphereSystem& system, double dt, bool evaluate_energy) override;
   void after_step(SphereSystem& system, double dt) override;
-  std::size_t contact_count() const override { return bond_.size(); }
   std::size_t broken_bond_count() const override;
   std::size_t broken_bonds_in(const std::vector<std::uint32_t>& slots) const override;
   std::size_t memory_bytes() const override { return bond_.size() * (8 * sizeof(double) + sizeof(std::uint32_t)); }

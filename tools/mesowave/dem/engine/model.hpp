@@ -102,8 +102,9 @@ public:
   /// Splits the steps that follow over the ranks of `domain` (several; docs/mpi.md), to the
   /// same bits as one process. Called once, before the first step. `observed`: the spheres
   /// the actuators and sensors read or load (every rank then holds their motion after each
-  /// step; the others only its own spheres' and its ghosts'). InputError for a model that
-  /// does not run distributed (the default).
+  /// step; the others only its own spheres' and its ghosts'). The model must have been made
+  /// for this domain (LawInput::domain), so that it never held the other ranks' contacts.
+  /// InputError for a model that does not run distributed (the default).
   virtual void distribute(Domain& domain, const std::vector<std::size_t>& observed);
   /// Distributed: makes every sphere's motion current on this rank (collective: every rank
   /// calls it), before a snapshot reads them all. A no-op in one process.

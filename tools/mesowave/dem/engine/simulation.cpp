@@ -148,9 +148,10 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
                        "bond_factor below (2 d)/(2 R) does)");
   }
 
+  Domain* domain = options_.domain && options_.domain->size() > 1 ? options_.domain : nullptr;
   model_ = contact_laws()
                .get(scene_.contact_law, "[material].law")
-               .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line});
+               .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line, domain});
   if (options_.domain && options_.domain->size() > 1 && options_.impulse_actuator >= 0)
     throw InputError("--frequencies-kHz (superposition) runs on one process only, not on several MPI ranks");
 

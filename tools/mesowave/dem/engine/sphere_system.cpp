@@ -62,7 +62,7 @@ LinearBond linear_bond(const SphereSystem& system, std::size_t k) {
 }  // namespace
 
 SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
-                           std::unique_ptr<ContactKernel> kernel)
+                           std::unique_ptr<ContactKernel> kernel, Domain* domain)
     : spheres_(std::move(spheres)), bonds_(std::move(bonds)), material_(material), kernel_(std::move(kernel)),
       displacement_state_(kernel_->displacement_state()), track_rotation_(kernel_->track_rotation()) {
   const std::size_t n = spheres_.size();
@@ -99,6 +99,7 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
   sphere_chunk_ = (n + partitions_ - 1) / partitions_;
   first_ = bonds_.first;
   second_ = bonds_.second;
+  if (domain) split(*domain);
   kernel_->attach(*this);
 }
 
@@ -107,36 +108,58 @@ SphereSystem::~SphereSystem() = default;
 std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
                                                       const std::vector<std::uint32_t>& second, bool moments) {
   const std::size_t count = first.size(), n = spheres_.size();
-  std::vector<std::uint32_t> order;
-  order.reserve(count);
-  interior_start_.assign(partitions_ + 1, 0);
+  // The whole layout: interior contacts by partition, then those across partitions.
+  global_interior_start_.assign(partitions_ + 1, 0);
   for (std::size_t c = 0; c < count; ++c) {
     const std::size_t p = first[c] / sphere_chunk_;
-    if (p == second[c] / sphere_chunk_) ++interior_start_[p + 1];
+    if (p == second[c] / sphere_chunk_) ++global_interior_start_[p + 1];
   }
-  for (std::size_t p = 0; p < partitions_; ++p) interior_start_[p + 1] += interior_start_[p];
-  order.resize(count);
-  std::vector<std::uint32_t> fill(interior_start_.begin(), interior_start_.end() - 1);
-  cross_begin_ = interior_start_[partitions_];
-  std::size_t cross = cross_begin_;
+  for (std::size_t p = 0; p < partitions_; ++p) global_interior_start_[p + 1] += global_interior_start_[p];
+  std::vector<std::uint32_t> order(count);
+  std::vector<std::uint32_t> fill(global_interior_start_.begin(), global_interior_start_.end() - 1);
+  global_cross_begin_ = global_interior_start_[partitions_];
+  std::size_t cross = global_cross_begin_;
   for (std::size_t c = 0; c < count; ++c) {
     const std::size_t p = first[c] / sphere_chunk_;
     order[p == second[c] / sphere_chunk_ ? fill[p]++ : cross++] = std::uint32_t(c);
   }
-  first_.resize(count);
-  second_.resize(count);
-  for (std::size_t s = 0; s < count; ++s) {
+  global_slots_ = count;
+  global_cross_blocks_ = (count - global_cross_begin_ + kContactBlock - 1) / kContactBlock;
+  // Distributed: the slots with an end of this rank's own, in the same order (held_here).
+  std::vector<std::uint32_t> global_first;
+  if (domain_) {
+    global_first.resize(count);
+    global_slot_.clear();
+    for (std::size_t s = 0; s < count; ++s) {
+      const std::uint32_t c = order[s];
+      global_first[s] = first[c];
+      if (held_here(first[c], second[c])) global_slot_.push_back(std::uint32_t(s));
+    }
+    interior_start_.resize(partitions_ + 1);
+    for (std::size_t p = 0; p <= partitions_; ++p)
+      interior_start_[p] = std::uint32_t(std::lower_bound(global_slot_.begin(), global_slot_.end(), global_interior_start_[p]) -
+                                         global_slot_.begin());
+    for (std::size_t s = 0; s < global_slot_.size(); ++s) order[s] = order[global_slot_[s]];
+    order.resize(global_slot_.size());
+  } else {
+    interior_start_ = global_interior_start_;
+  }
+  const std::size_t held = order.size();
+  cross_begin_ = interior_start_[partitions_];
+  first_.resize(held);
+  second_.resize(held);
+  for (std::size_t s = 0; s < held; ++s) {
     first_[s] = first[order[s]];
     second_[s] = second[order[s]];
   }
   const std::vector<std::uint32_t> cross_first(first_.begin() + std::ptrdiff_t(cross_begin_), first_.end());
   const std::vector<std::uint32_t> cross_second(second_.begin() + std::ptrdiff_t(cross_begin_), second_.end());
   cross_incidence_ = make_incidence(n, cross_first, cross_second);
-  out_.assign(count - cross_begin_, ContactOut{});
-  if (moments) out_moment_.assign(count - cross_begin_, Vec3{});
+  out_.assign(held - cross_begin_, ContactOut{});
+  if (moments) out_moment_.assign(held - cross_begin_, Vec3{});
   else out_moment_.clear();
-  cross_blocks_ = (count - cross_begin_ + kContactBlock - 1) / kContactBlock;
-  const std::size_t tasks = partitions_ + cross_blocks_;
+  cross_blocks_ = (held - cross_begin_ + kContactBlock - 1) / kContactBlock;
+  const std::size_t tasks = partitions_ + global_cross_blocks_;
   // Dissipation is cumulative: keep what the old tasks held.
   double plastic = 0;
   for (double p : task_plastic_) plastic += p;
@@ -145,8 +168,8 @@ std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uin
   task_plastic_[0] = plastic;
   task_peak2_.assign(tasks, 0);
   // A parallel region costs a few microseconds: worth it only for big systems.
-  parallel_ = threads_ > 1 && count >= 8 * kContactBlock && partitions_ > 1;
-  if (domain_) lay_out_domain();
+  parallel_ = threads_ > 1 && held >= 8 * kContactBlock && partitions_ > 1;
+  if (domain_) lay_out_domain(global_first);
   return order;
 }
 
@@ -449,6 +472,9 @@ std::size_t SphereSystem::memory_bytes() const {
   bytes += kernel_->memory_bytes() + out_moment_.size() * sizeof(Vec3);
   bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +
            first_.size() * 2 * sizeof(std::uint32_t) + 2 * n * sizeof(Vec3);
+  // Distributed: the held slots' places and values (the spheres' arrays are still whole: docs/mpi.md).
+  bytes += global_slot_.size() * sizeof(std::uint32_t) + slot_elastic_.size() * 3 * sizeof(double) +
+           owned_values_.size() * sizeof(double);
   return bytes;
 }
 

@@ -59,8 +59,6 @@ public:
   virtual void attach(SphereSystem& system) = 0;
   virtual void contact_forces(SphereSystem& system, double dt, bool evaluate_energy) = 0;
   virtual void after_step(SphereSystem& /*system*/, double /*dt*/) {}
-  /// Interactions evaluated each step (0: the bonds).
-  virtual std::size_t contact_count() const { return 0; }
   virtual std::size_t broken_bond_count() const { return 0; }
   /// The same over the given slots only (a distributed run counts each bond on one rank).
   virtual std::size_t broken_bonds_in(const std::vector<std::uint32_t>& /*slots*/) const { return 0; }
@@ -83,15 +81,16 @@ public:
 /// The integrator: spheres, their motion and a contact kernel.
 class SphereSystem final : public Model {
 public:
+  /// With a `domain` of several ranks (docs/mpi.md) the system is split from the start: the
+  /// law lays out and holds only the contacts of this rank's spheres; distribute() must then
+  /// be given the same domain.
   SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
-               std::unique_ptr<ContactKernel> kernel);
+               std::unique_ptr<ContactKernel> kernel, Domain* domain = nullptr);
   ~SphereSystem() override;
 
   std::string name() const override { return kernel_->name(); }
-  std::size_t contact_count() const override {
-    const std::size_t c = kernel_->contact_count();
-    return c > 0 ? c : bond_count();
-  }
+  /// Interactions evaluated each step, on all ranks (the linearised network's are its bonds).
+  std::size_t contact_count() const override { return global_slots_; }
   std::size_t broken_bond_count() const override;
   std::size_t sphere_count() const override { return spheres_.size(); }
   std::size_t bond_count() const override { return bonds_.size(); }
@@ -139,7 +138,11 @@ public:
   const Vec3* rotations() const { return theta_.data(); }  ///< theta (track_rotation only)
   const std::uint32_t* first() const { return first_.data(); }
   const std::uint32_t* second() const { return second_.data(); }
+  /// The slots this process holds: every contact, or on several ranks (distribute) only the
+  /// contacts with an end of this rank's own, in the order of the whole layout.
   std::size_t slot_count() const { return first_.size(); }
+  /// The contacts of the whole layout (all ranks').
+  std::size_t global_slot_count() const { return global_slots_; }
   std::uint32_t first(std::size_t slot) const { return first_[slot]; }
   std::uint32_t second(std::size_t slot) const { return second_[slot]; }
   Vec3 position(std::size_t k) const { return x_[k]; }
@@ -177,7 +180,9 @@ public:
   /// set by the sphere count alone); contacts inside one partition come
   /// first, grouped by partition, then the contacts between partitions.
   /// Returns the order: slot s holds the contact given at position order[s].
-  /// A law keeps its per-contact arrays in slot order.
+  /// A law keeps its per-contact arrays in slot order. Distributed, the slots are those of
+  /// the whole layout with an end of this rank's own, in the same order (so every sphere of
+  /// the rank sums the serial terms in the serial order), and `order` has one entry a slot held.
   std::vector<std::uint32_t> set_contacts(const std::vector<std::uint32_t>& first,
                                           const std::vector<std::uint32_t>& second, bool moments = false);
 
@@ -237,7 +242,7 @@ private:
   std::vector<Vec3> x_, v_, w_, a_, theta_, f_ext_;
   std::vector<double> inv_mass_, inv_inertia_;
   std::vector<double> inv_mass3_, inv_inertia3_;  ///< the same, once per Cartesian component
-  std::vector<std::uint32_t> first_, second_;  ///< contacts in slot order
+  std::vector<std::uint32_t> first_, second_;  ///< contacts in slot order (the slots held)
   double peak_ratio_ = 0;
   double max_speed_ = 0;  ///< largest |v| after the last step
   EnergyAccount energy_;
@@ -252,6 +257,13 @@ private:
 
   std::size_t partitions_ = 1, sphere_chunk_ = 1, cross_begin_ = 0, cross_blocks_ = 0;
   std::vector<std::uint32_t> interior_start_;  ///< partitions + 1
+  // The whole layout's (all ranks'; the same as the held one in one process): the energies are
+  // summed per task of the whole layout, in its slot order, so that the bits do not depend on the
+  // split. The held slots' places in it (global_slot_) are kept on several ranks only.
+  std::size_t global_slots_ = 0, global_cross_begin_ = 0, global_cross_blocks_ = 0;
+  std::vector<std::uint32_t> global_interior_start_, global_slot_;
+  std::uint32_t global_slot(std::size_t s) const { return global_slot_.empty() ? std::uint32_t(s) : global_slot_[s]; }
+  std::size_t global_task_of(std::size_t global_slot) const;
   Incidence cross_incidence_;                  ///< entries index out_ (slot - cross_begin_)
   std::vector<ContactOut> out_;
   std::vector<Vec3> out_moment_;  ///< moment of each contact between partitions (laws with moments only)
@@ -264,18 +276,17 @@ private:
   std::vector<std::uint8_t> is_forced_;
 
   // A distributed run (dem/parallel/sphere_system_domain.cpp, docs/mpi.md): this rank's
-  // spheres and blocks (per rank: sphere_counts_/displs_ in doubles, 3 a sphere), the contacts
-  // it computes (slot_needed_: an end is its own) and those whose energies, strength ratio and
-  // breakage it reports (the rank owning the first sphere), the per-slot values, the ghost
-  // lists (per neighbour rank, sorted by id: the spheres it sends there and those it receives
-  // from there) and the observed spheres (those an actuator or sensor reads: every rank holds
-  // them; sorted by id, so by owner).
+  // spheres and blocks (per rank: sphere_counts_/displs_ in doubles, 3 a sphere; block_owner_
+  // per block), the contacts it holds and computes (those with an end of its own: set_contacts)
+  // and those whose energies, strength ratio and breakage it reports (the rank owning the first
+  // sphere), the per-slot values, the ghost lists (per neighbour rank, sorted by id: the
+  // spheres it sends there and those it receives from there) and the observed spheres (those
+  // an actuator or sensor reads: every rank holds them; sorted by id, so by owner).
   Domain* domain_ = nullptr;
   std::size_t own_begin_ = 0, own_end_ = 0, own_block_begin_ = 0, own_block_end_ = 0, ghosts_ = 0;
   std::size_t broken_ = 0;  ///< bonds broken on all ranks after the last step (shared with the motion)
   double vmax2_all_ = 0;    ///< the largest block bound of |v|^2 over all ranks after the last step
-  std::vector<int> sphere_counts_, sphere_displs_, block_counts_, block_displs_;
-  std::vector<std::uint8_t> slot_needed_;
+  std::vector<int> sphere_counts_, sphere_displs_, block_counts_, block_displs_, block_owner_;
   std::vector<std::uint32_t> reported_;
   std::vector<double> slot_elastic_, slot_plastic_, slot_ratio2_, send_, recv_;
   struct GhostList {
@@ -287,16 +298,25 @@ private:
   std::vector<std::uint32_t> observed_;
   std::vector<std::uint32_t> touched_;  ///< other ranks' spheres this rank's computed chunks add forces to
   std::vector<int> observed_counts_, observed_displs_;
-  std::vector<GhostList> elastic_sends_, elastic_receives_;  ///< slots (not spheres) whose elastic part goes to the task's owner
-  std::vector<int> task_owner_, task_counts_;                ///< per task the rank adding its elastic sum; per rank its tasks
-  std::vector<std::uint32_t> owned_tasks_;
+  // The elastic sums: per task of the whole layout the rank that adds it (task_owner_; per rank
+  // its count), and on that rank its tasks' values in slot order (owned_values_, from
+  // owned_start_ per owned task), filled from its own slots (own_elastic_: held slot, place) and
+  // from the other reporters (elastic_receives_: places; elastic_sends_: held slots).
+  std::vector<GhostList> elastic_sends_, elastic_receives_;
+  std::vector<int> task_owner_, task_counts_;
+  std::vector<std::uint32_t> owned_tasks_, owned_start_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> own_elastic_;
+  std::vector<double> owned_values_;
   bool ghosts_stale_ = false;  ///< a new layout brought new ghosts: exchange before the next step
   double ghost_layer_m_ = 0;   ///< a test's too-thin ghost layer (MESOWAVE_TEST_GHOST_LAYER_MM); infinite otherwise
   int ghost_layer_rank_ = -1;   ///< the rank it thins (-1: all)
   // What the steps moved into this rank (docs/mpi.md's model): doubles received point to point
   // and by the collectives, and the exchanges counted.
   std::uint64_t ghost_doubles_ = 0, shared_doubles_ = 0, shared_steps_ = 0, ghost_messages_ = 0;
-  void lay_out_domain();
+  int owner(std::uint32_t sphere) const { return block_owner_[sphere / kSphereBlock]; }
+  bool held_here(std::uint32_t i, std::uint32_t j) const;
+  void split(Domain& domain);
+  void lay_out_domain(const std::vector<std::uint32_t>& global_first);
   void exchange_ghosts();
   void share_step(bool evaluate_energy);
   void share_elastic();
@@ -330,9 +350,6 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
     ChunkResults<moments> results;
     for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
       const std::size_t m = std::min(kChunk, end - chunk);
-      // Distributed: a chunk without a contact of this rank's spheres is another rank's work.
-      if (distributed && std::find(&slot_needed_[chunk], &slot_needed_[chunk] + m, 1) == &slot_needed_[chunk] + m)
-        continue;
       // The law runs on a private Result per contact, stored component by component into the chunk's
       // arrays: only stores to separate arrays indexed by q let GCC vectorize this loop (a store of the
       // whole struct into an array of structs kept it scalar: issue 17 item 3, docs/benchmarks.md).
@@ -390,6 +407,7 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
       }
     }
     if (interior && begin < end) f[run] = run_f, t[run] = run_t;
+    if (distributed) continue;  // the held tasks are not the whole layout's: share_step sums
     task_elastic_[task] = elastic;
     task_plastic_[task] += plastic;
     task_peak2_[task] = peak2;

@@ -6,27 +6,27 @@
 // Why the bits match. A sphere's force is the sum, in a fixed order, of its contacts'
 // results (interior contacts in slot order, then the cross-partition records in slot
 // order, then the external load): the order is set by the slot layout, which every rank
-// builds identically (contact detection runs on every rank from the same positions,
+// works out identically (contact detection runs on every rank from the same positions,
 // share_positions), and a contact's result depends only on its two spheres' state and its
-// own history. A rank computes every contact with an end of its own (and so keeps those
-// contacts' history itself); the other end is its own or a ghost, received from its owner
-// after every step (stage 2: only the ghosts, point to point, instead of the whole state).
-// So its own spheres get every term in the serial order from the serial inputs.
+// own history. A rank holds and computes only the contacts with an end of its own (stage 3,
+// set_contacts: the whole layout's slots, filtered, in their order), and keeps their history
+// itself; the other end is its own or a ghost, received from its owner after every step
+// (stage 2: only the ghosts, point to point, instead of the whole state). So its own spheres
+// get every term in the serial order from the serial inputs.
 // The sums over contacts (elastic energy, plastic dissipation) are redone from the
-// reporters' per-slot values, per task in slot order as the single process adds them; the
+// reporters' per-slot values, per task of the whole layout in its slot order as the single
+// process adds them; the
 // strength ratio and the speed bound are maxima, exact in any order; the sums over spheres
 // are kept per 256-sphere block, and a block is never split between ranks. The actuators and
 // sensors run on every rank, as in one process, on the observed spheres, which every rank
 // holds: their sums (sensor averages, wall forces, external work) keep the serial order.
-//
-// A contact with no end of this rank that shares a 32-contact chunk with one of its own is
-// computed too (a chunk is one vector loop), from whatever this rank holds of its spheres;
-// its forces land on other ranks' spheres, which are cleared, and its energies come from
-// its reporter, so nothing of it is kept.
+// A contact across two ranks is held and computed on both; its forces on the other rank's
+// sphere are cleared after the step, and its energies come from its reporter.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "mesowave/core/error.hpp"
@@ -60,7 +60,9 @@ void Model::distribute(Domain& /*domain*/, const std::vector<std::size_t>& /*obs
   throw InputError("the " + name() + " model runs on one process only; on several MPI ranks run --model linear or full");
 }
 
-void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& observed) {
+// Called by the constructor, before the law lays out its contacts, so that no rank ever holds
+// all of them: the owners of the spheres.
+void SphereSystem::split(Domain& domain) {
   const std::size_t n = spheres_.size(), blocks = (n + kSphereBlock - 1) / kSphereBlock;
   const int ranks = domain.size(), me = domain.rank();
   if (std::size_t(ranks) > blocks)
@@ -73,13 +75,21 @@ void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& ob
   // Whole blocks in Morton order: rank r holds blocks [B r / N, B (r + 1) / N).
   sphere_counts_.assign(std::size_t(ranks), 0), sphere_displs_.assign(std::size_t(ranks), 0);
   block_counts_.assign(std::size_t(ranks), 0), block_displs_.assign(std::size_t(ranks), 0);
+  block_owner_.resize(blocks);
   for (int r = 0; r < ranks; ++r) {
     const std::size_t b0 = blocks * std::size_t(r) / std::size_t(ranks), b1 = blocks * std::size_t(r + 1) / std::size_t(ranks);
     const std::size_t s0 = b0 * kSphereBlock, s1 = std::min(n, b1 * kSphereBlock);
+    std::fill(block_owner_.begin() + std::ptrdiff_t(b0), block_owner_.begin() + std::ptrdiff_t(b1), r);
     block_displs_[std::size_t(r)] = int(b0), block_counts_[std::size_t(r)] = int(b1 - b0);
     sphere_displs_[std::size_t(r)] = int(3 * s0), sphere_counts_[std::size_t(r)] = int(3 * (s1 - s0));
     if (r == me) own_block_begin_ = b0, own_block_end_ = b1, own_begin_ = s0, own_end_ = s1;
   }
+}
+
+void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& observed) {
+  if (domain_ != &domain)
+    throw std::logic_error("SphereSystem::distribute: the system was not made for this domain (LawInput::domain)");
+  const int ranks = domain.size();
   // The observed spheres, sorted by id: each rank's are one contiguous run of the list.
   observed_.assign(observed.begin(), observed.end());
   sort_unique(observed_);
@@ -90,52 +100,43 @@ void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& ob
     while (std::size_t(k) < observed_.size() && observed_[std::size_t(k)] < end) ++k;
     observed_counts_[std::size_t(r)] = k - observed_displs_[std::size_t(r)];
   }
-  lay_out_domain();
   ghosts_stale_ = false;  // at step 0 every rank holds the same (initial) state of every sphere
   broken_ = std::size_t(domain.sum(kernel_->broken_bonds_in(reported_)));
 }
 
-// After every new slot layout: the contacts this rank computes, the reporters, the ghost lists.
-void SphereSystem::lay_out_domain() {
+bool SphereSystem::held_here(std::uint32_t i, std::uint32_t j) const {
+  const int me = domain_->rank();
+  return owner(i) == me || owner(j) == me;
+}
+
+std::size_t SphereSystem::global_task_of(std::size_t s) const {
+  if (s >= global_cross_begin_) return partitions_ + (s - global_cross_begin_) / kContactBlock;
+  return std::size_t(std::upper_bound(global_interior_start_.begin(), global_interior_start_.end(), std::uint32_t(s)) -
+                     global_interior_start_.begin()) - 1;
+}
+
+// After every new slot layout (set_contacts; `global_first`: the first sphere of each slot of the
+// whole layout): the reporters, the ghost lists and who adds which task's elastic sum.
+void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first) {
   const std::size_t count = first_.size(), n = spheres_.size();
   const int ranks = domain_->size(), me = domain_->rank();
-  // The rank owning sphere k: the block's, by the same rule as distribute().
-  const std::size_t blocks = (n + kSphereBlock - 1) / kSphereBlock;
-  std::vector<int> block_owner(blocks);
-  for (int r = 0; r < ranks; ++r)
-    for (int b = 0; b < block_counts_[std::size_t(r)]; ++b) block_owner[std::size_t(block_displs_[std::size_t(r)] + b)] = r;
-  const auto owner = [&](std::uint32_t k) { return block_owner[k / kSphereBlock]; };
   const bool thinned = ghost_layer_rank_ < 0 || ghost_layer_rank_ == me;
   const auto position = [&](std::uint32_t k) { return displacement_state_ ? spheres_.centre_m[k] + x_[k] : x_[k]; };
-  slot_needed_.assign(count, 0);
   reported_.clear();
+  touched_.clear();
   std::vector<std::vector<std::uint32_t>> sends(static_cast<std::size_t>(ranks)), receives(static_cast<std::size_t>(ranks));
   for (std::size_t s = 0; s < count; ++s) {
     const std::uint32_t i = first_[s], j = second_[s];
     const int oi = owner(i), oj = owner(j);
-    slot_needed_[s] = oi == me || oj == me;
     if (oi == me) reported_.push_back(std::uint32_t(s));
-    if (oi == oj || !slot_needed_[s]) continue;
-    // A contact across two ranks: each needs the other's end. Both sides list it from the same layout.
+    if (oi == oj) continue;
+    // A contact across two ranks: each needs the other's end (and this rank's computed force on
+    // it is not this rank's to keep: touched_). Both sides list it from the same layout.
     const std::uint32_t mine = oi == me ? i : j, theirs = oi == me ? j : i;
     const int other = oi == me ? oj : oi;
     sends[std::size_t(other)].push_back(mine);
+    touched_.push_back(theirs);
     if (!thinned || norm(position(theirs) - position(mine)) <= ghost_layer_m_) receives[std::size_t(other)].push_back(theirs);
-  }
-  // Other ranks' spheres this rank's computed chunks add forces to (for_each_contact's chunks:
-  // kChunk slots from each task's start), cleared after each step.
-  touched_.clear();
-  for (std::size_t task = 0, tasks = partitions_ + cross_blocks_; task < tasks; ++task) {
-    const bool interior = task < partitions_;
-    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
-    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
-    for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
-      const std::size_t last = std::min(end, chunk + kChunk);
-      if (std::find(&slot_needed_[chunk], &slot_needed_[0] + last, 1) == &slot_needed_[0] + last) continue;
-      for (std::size_t s = chunk; s < last; ++s)
-        for (const std::uint32_t k : {first_[s], second_[s]})
-          if (owner(k) != me) touched_.push_back(k);
-    }
   }
   sort_unique(touched_);
   ghost_sends_.clear(), ghost_receives_.clear();
@@ -155,7 +156,7 @@ void SphereSystem::lay_out_domain() {
   }
   // Never silently lost: every contact of this rank's spheres must find its other end here.
   for (std::size_t s = 0; s < count; ++s) {
-    if (!slot_needed_[s] || (held[first_[s]] && held[second_[s]])) continue;
+    if (held[first_[s]] && held[second_[s]]) continue;
     const std::uint32_t i = first_[s], j = second_[s], missing = held[i] ? j : i;
     const auto at = std::lower_bound(bonds_.first.begin(), bonds_.first.end(), i);
     std::size_t bond = bonds_.size();
@@ -171,29 +172,49 @@ void SphereSystem::lay_out_domain() {
   }
   slot_elastic_.assign(count, 0), slot_plastic_.assign(count, 0), slot_ratio2_.assign(count, 0);
 
-  // The elastic sum of each task is taken, in slot order, by the rank that reports most of its
-  // slots (ties: the lowest); the others send it their values of the task (point to point).
-  const std::size_t tasks = partitions_ + cross_blocks_;
-  task_owner_.assign(tasks, 0);
-  std::vector<std::size_t> tally(static_cast<std::size_t>(ranks));
-  std::vector<std::vector<std::uint32_t>> to(static_cast<std::size_t>(ranks)), from(static_cast<std::size_t>(ranks));
-  owned_tasks_.clear();
-  task_counts_.assign(std::size_t(ranks), 0);
-  for (std::size_t task = 0; task < tasks; ++task) {
+  // The elastic sum of each task of the whole layout is taken, in slot order, by the rank that
+  // reports most of its slots (ties: the lowest); the reporters of its other slots send it
+  // their values (point to point), in slot order on both sides.
+  const std::size_t tasks = partitions_ + global_cross_blocks_, slots = global_first.size();
+  const auto task_range = [&](std::size_t task) {
     const bool interior = task < partitions_;
-    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
-    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+    const std::size_t begin =
+        interior ? global_interior_start_[task] : global_cross_begin_ + (task - partitions_) * kContactBlock;
+    return std::pair{begin, interior ? std::size_t(global_interior_start_[task + 1]) : std::min(slots, begin + kContactBlock)};
+  };
+  task_owner_.assign(tasks, 0);
+  task_counts_.assign(std::size_t(ranks), 0);
+  std::vector<std::size_t> tally(static_cast<std::size_t>(ranks));
+  for (std::size_t task = 0; task < tasks; ++task) {
+    const auto [begin, end] = task_range(task);
     std::fill(tally.begin(), tally.end(), 0);
-    for (std::size_t s = begin; s < end; ++s) ++tally[std::size_t(owner(first_[s]))];
-    const int q = int(std::max_element(tally.begin(), tally.end()) - tally.begin());
-    task_owner_[task] = q;
-    ++task_counts_[std::size_t(q)];
-    if (q == me) owned_tasks_.push_back(std::uint32_t(task));
-    for (std::size_t s = begin; s < end; ++s) {
-      const int r = owner(first_[s]);
-      if (r == me && q != me) to[std::size_t(q)].push_back(std::uint32_t(s));
-      if (q == me && r != me) from[std::size_t(r)].push_back(std::uint32_t(s));
+    for (std::size_t s = begin; s < end; ++s) ++tally[std::size_t(owner(global_first[s]))];
+    task_owner_[task] = int(std::max_element(tally.begin(), tally.end()) - tally.begin());
+    ++task_counts_[std::size_t(task_owner_[task])];
+  }
+  // This rank's tasks' places (the values in slot order), and who fills each place.
+  owned_tasks_.clear(), owned_start_.assign(1, 0);
+  std::vector<std::vector<std::uint32_t>> from(static_cast<std::size_t>(ranks));
+  for (std::size_t task = 0; task < tasks; ++task) {
+    if (task_owner_[task] != me) continue;
+    const auto [begin, end] = task_range(task);
+    for (std::size_t s = begin; s < end; ++s)
+      if (const int r = owner(global_first[s]); r != me) from[std::size_t(r)].push_back(std::uint32_t(owned_start_.back() + s - begin));
+    owned_tasks_.push_back(std::uint32_t(task));
+    owned_start_.push_back(std::uint32_t(owned_start_.back() + end - begin));
+  }
+  owned_values_.assign(owned_start_.back(), 0.0);
+  std::vector<std::vector<std::uint32_t>> to(static_cast<std::size_t>(ranks));
+  own_elastic_.clear();
+  for (const std::uint32_t s : reported_) {
+    const std::size_t g = global_slot(s), task = global_task_of(g);
+    const int q = task_owner_[task];
+    if (q != me) {
+      to[std::size_t(q)].push_back(s);
+      continue;
     }
+    const std::size_t k = std::size_t(std::lower_bound(owned_tasks_.begin(), owned_tasks_.end(), std::uint32_t(task)) - owned_tasks_.begin());
+    own_elastic_.emplace_back(s, std::uint32_t(owned_start_[k] + g - task_range(task).first));
   }
   elastic_sends_.clear(), elastic_receives_.clear();
   for (int r = 0; r < ranks; ++r) {
@@ -219,15 +240,12 @@ void SphereSystem::share_elastic() {
   }
   domain_->exchange(sends, receives);
   for (const auto& g : elastic_receives_)
-    for (std::size_t k = 0; k < g.spheres.size(); ++k) slot_elastic_[g.spheres[k]] = g.buffer[k];
-  const std::size_t count = first_.size();
+    for (std::size_t k = 0; k < g.spheres.size(); ++k) owned_values_[g.spheres[k]] = g.buffer[k];
+  for (const auto& [slot, place] : own_elastic_) owned_values_[place] = slot_elastic_[slot];
   std::vector<double> mine;
-  for (const std::uint32_t task : owned_tasks_) {
-    const bool interior = task < partitions_;
-    const std::size_t begin = interior ? interior_start_[task] : cross_begin_ + (task - partitions_) * kContactBlock;
-    const std::size_t end = interior ? interior_start_[task + 1] : std::min(count, begin + kContactBlock);
+  for (std::size_t k = 0; k < owned_tasks_.size(); ++k) {
     double elastic = 0;
-    for (std::size_t s = begin; s < end; ++s) elastic += slot_elastic_[s];
+    for (std::size_t v = owned_start_[k]; v < owned_start_[k + 1]; ++v) elastic += owned_values_[v];
     mine.push_back(elastic);
   }
   const int ranks = domain_->size();
@@ -341,14 +359,14 @@ void SphereSystem::share_step(bool evaluate_energy) {
       for (auto* b : {&sphere_block_damping_, &sphere_block_kinetic_})
         o = std::copy(b->begin() + std::ptrdiff_t(own_block_begin_), b->begin() + std::ptrdiff_t(own_block_end_), o);
     for (const std::uint32_t s : reported_)
-      if (slot_plastic_[s] != 0) *o++ = double(s), *o++ = slot_plastic_[s];  // slot ids exact below 2^53
+      if (slot_plastic_[s] != 0) *o++ = double(global_slot(s)), *o++ = slot_plastic_[s];  // exact below 2^53
   }
   recv_.resize(total);
   domain_->gather_all(send_.data(), int(send_.size()), recv_.data(), counts, displs);
   shared_doubles_ += total - send_.size() + std::size_t(kFixed * (ranks - 1));
   ++shared_steps_;
 
-  std::vector<std::pair<std::uint32_t, double>> plastic;  // (slot, value), every rank's
+  std::vector<std::pair<std::uint32_t, double>> plastic;  // (slot of the whole layout, value), every rank's
   for (int r = 0; r < ranks; ++r) {
     const double* in = recv_.data() + displs[std::size_t(r)];
     const bool mine = r == me;
@@ -369,16 +387,11 @@ void SphereSystem::share_step(bool evaluate_energy) {
   // The task sums in slot order. The plastic parts left out are zeros, and adding a zero
   // changes no sum that starts at +0, so these are the bits of the sum over every slot.
   std::sort(plastic.begin(), plastic.end());
-  const std::size_t tasks = partitions_ + cross_blocks_;
-  const auto task_of = [&](std::size_t s) {
-    if (s >= cross_begin_) return partitions_ + (s - cross_begin_) / kContactBlock;
-    return std::size_t(std::upper_bound(interior_start_.begin(), interior_start_.end(), std::uint32_t(s)) -
-                       interior_start_.begin()) - 1;
-  };
+  const std::size_t tasks = partitions_ + global_cross_blocks_;
   for (std::size_t k = 0; k < plastic.size();) {
-    const std::size_t task = task_of(plastic[k].first);
+    const std::size_t task = global_task_of(plastic[k].first);
     double sum = 0;
-    for (; k < plastic.size() && task_of(plastic[k].first) == task; ++k) sum += plastic[k].second;
+    for (; k < plastic.size() && global_task_of(plastic[k].first) == task; ++k) sum += plastic[k].second;
     task_plastic_[task] += sum;
   }
   if (evaluate_energy) share_elastic();
@@ -408,13 +421,12 @@ std::string SphereSystem::distribution() const {
   // What the stage-1 exchange (the whole motion of every sphere, each rank's blocks' sums, each
   // reported contact's plastic part, on every step) would have brought into this rank.
   const std::size_t replicated = ((track_rotation_ ? 18 : 15) * (spheres_.size() - (own_end_ - own_begin_)) +
-                                  3 * ((spheres_.size() + kSphereBlock - 1) / kSphereBlock) + first_.size() - reported_.size()) * 8;
+                                  3 * ((spheres_.size() + kSphereBlock - 1) / kSphereBlock) + global_slots_ - reported_.size()) * 8;
   return "rank " + std::to_string(domain_->rank()) + " of " + std::to_string(domain_->size()) + ": spheres " +
          std::to_string(own_begin_) + "-" + std::to_string(own_end_) + " of " + std::to_string(spheres_.size()) +
          " (Morton order), " + std::to_string(ghosts_) + " ghosts from " + std::to_string(ghost_receives_.size()) +
          " ranks, " + std::to_string(observed_.size()) + " observed spheres, " +
-         std::to_string(std::count(slot_needed_.begin(), slot_needed_.end(), 1)) + " of " + std::to_string(first_.size()) +
-         " contacts computed here; received per step: " + std::to_string(ghost_doubles_ * 8 / steps) + " B of ghosts in " +
+         std::to_string(first_.size()) + " of " + std::to_string(global_slots_) + " contacts held here; received per step: " + std::to_string(ghost_doubles_ * 8 / steps) + " B of ghosts in " +
          format_number(double(ghost_messages_) / double(steps)) + " messages, " +
          std::to_string(shared_doubles_ * 8 / steps) + " B gathered (the replicated state of stage 1: " +
          std::to_string(replicated) + " B)";

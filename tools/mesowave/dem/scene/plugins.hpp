@@ -59,6 +59,7 @@ struct LawInput {
   const CohesiveFrictionalMaterial& material;  ///< the parameters every law shares (Eqs. 3-7)
   const LawParameters& parameters;             ///< the law's own keys (material_parameters.hpp), SI
   std::optional<Vec3> line;                    ///< the axis of a line of spheres (the chain)
+  Domain* domain = nullptr;  ///< several MPI ranks: the model holds its rank's share from the start (docs/mpi.md)
 };
 
 struct ContactLaw {
