@@ -144,7 +144,6 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   std::vector<std::array<double, 3>> pos(n);
   for (std::size_t k = 0; k < n; ++k) pos[k] = {x[k].x, x[k].y, x[k].z};
   const double r_min = *std::min_element(spheres.radius_m.begin(), spheres.radius_m.end());
-  const auto pairs = find_pairs_within(pos, spheres.radius_m, 1.0 + margin_ / (2.0 * r_min));
 
   // Where each bond and each detected pair lives now.
   std::vector<std::uint32_t> slot_of_bond(nb, kNoBond);
@@ -155,32 +154,44 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   }
   std::sort(old_pairs.begin(), old_pairs.end());
 
-  std::vector<std::uint32_t> first(bonds.first), second(bonds.second);
-  std::vector<Slot> natural(nb);
-  for (std::size_t b = 0; b < nb; ++b)
-    natural[b] = slot_of_bond[b] != kNoBond ? slot(slot_of_bond[b])
-                                            : Slot{bonds.normal0[b], {}, bonds.overlap0_m[b], std::uint32_t(b), kCohesive};
-  std::size_t b = 0;  // bonds and pairs are both sorted by (first, second)
-  for (const auto& p : pairs) {
-    const double reach = spheres.radius_m[p.i] + spheres.radius_m[p.j] + margin_;
-    const Vec3 d = x[p.j] - x[p.i];
-    if (norm2(d) > reach * reach) continue;
-    while (b < nb && (bonds.first[b] < p.i || (bonds.first[b] == p.i && bonds.second[b] < p.j))) ++b;
-    if (b < nb && bonds.first[b] == p.i && bonds.second[b] == p.j) continue;  // bonded
-    const auto known = std::lower_bound(old_pairs.begin(), old_pairs.end(), std::make_tuple(p.i, p.j, 0u));
-    first.push_back(p.i);
-    second.push_back(p.j);
-    if (known != old_pairs.end() && std::get<0>(*known) == p.i && std::get<1>(*known) == p.j)
-      natural.push_back(slot(std::get<2>(*known)));
-    else
-      natural.push_back(Slot{(1.0 / norm(d)) * d, {}, 0.0, kNoBond, kFrictional});
+  // The contacts: the bonds, then the detected pairs (each with its old slot, or kNoBond when
+  // new). Their state is looked up only for the slots laid out here (a distributed run keeps
+  // its rank's share), never for the whole list at once.
+  std::vector<std::uint32_t> first(bonds.first), second(bonds.second), known_slot;
+  {
+    const auto pairs = find_pairs_within(pos, spheres.radius_m, 1.0 + margin_ / (2.0 * r_min));
+    std::vector<std::array<double, 3>>().swap(pos);
+    std::size_t b = 0;  // bonds and pairs are both sorted by (first, second)
+    for (const auto& p : pairs) {
+      const double reach = spheres.radius_m[p.i] + spheres.radius_m[p.j] + margin_;
+      if (norm2(x[p.j] - x[p.i]) > reach * reach) continue;
+      while (b < nb && (bonds.first[b] < p.i || (bonds.first[b] == p.i && bonds.second[b] < p.j))) ++b;
+      if (b < nb && bonds.first[b] == p.i && bonds.second[b] == p.j) continue;  // bonded
+      const auto known = std::lower_bound(old_pairs.begin(), old_pairs.end(), std::make_tuple(p.i, p.j, 0u));
+      first.push_back(p.i);
+      second.push_back(p.j);
+      known_slot.push_back(known != old_pairs.end() && std::get<0>(*known) == p.i && std::get<1>(*known) == p.j
+                               ? std::get<2>(*known)
+                               : kNoBond);
+    }
   }
   // Same contacts as before (the usual case for waves: bonds only): keep the layout.
-  if (detection_passes_ > 1 && natural.size() == nb && system.global_slot_count() == nb) return;
+  if (detection_passes_ > 1 && first.size() == nb && system.global_slot_count() == nb) return;
   before_relayout(system);
   const auto order = system.set_contacts(first, second, moments());
   std::vector<Slot> slots(order.size());
-  for (std::size_t s = 0; s < order.size(); ++s) slots[s] = natural[order[s]];
+  for (std::size_t s = 0; s < order.size(); ++s) {
+    const std::uint32_t c = order[s];
+    if (c < nb) {
+      slots[s] = slot_of_bond[c] != kNoBond ? slot(slot_of_bond[c])
+                                            : Slot{bonds.normal0[c], {}, bonds.overlap0_m[c], c, kCohesive};
+    } else if (const std::uint32_t old = known_slot[c - nb]; old != kNoBond) {
+      slots[s] = slot(old);
+    } else {
+      const Vec3 d = x[second[c]] - x[first[c]];
+      slots[s] = Slot{(1.0 / norm(d)) * d, {}, 0.0, kNoBond, kFrictional};
+    }
+  }
   set_slots(slots);
   after_relayout(system);
 }
