@@ -164,16 +164,16 @@ $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),$(foreach k,p s,$(ev
 
 # The picks beside the lab's (upv.toml: t_p, t_s; upv.json: v_p, v_s, E_d, nu_d of step 3); the
 # 50 mm rows' times are over 50 mm (x 3 for the 150 mm path), their velocities compare directly.
-# "E_glob_GPa|E_d_GPa": a DEM row's calibrated E_glob (its material file), not its picks' E_d (mw-table
-# looks for the first name in all of a row's files first); the measured row, which has no E_glob,
-# shows its E_d there.
-$(CC_C150_OUT)/upv150.csv: $(CC_LAB)/upv.toml $(CC_OUT)/upv.json $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),\
+# E_glob_GPa, nu_glob: a DEM row's calibrated static moduli (its material file; mw-table looks for
+# the first name in all of a row's files first, so never its picks' E_d), and in the measured row
+# their measured counterparts, the compression tests' E_st and nu_st (static-test.toml, step 4).
+$(CC_C150_OUT)/upv150.csv: $(CC_LAB)/upv.toml $(CC_OUT)/upv.json $(CC_LAB)/static-test.toml $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),\
     $(CC_C150_OUT)/upv$z-picks-$c.json $(CC_C150_OUT)/upv$z-picks-noisy-$c.json) $(CC_C150_MATERIAL.$c)) $(BIN)/mw-table
-	$(BIN)/mw-table gather --key-name record --row "measured (upv.toml; step 3)=$(CC_LAB)/upv.toml,$(CC_OUT)/upv.json" \
+	$(BIN)/mw-table gather --key-name record --row "measured (upv.toml; static-test.toml)=$(CC_LAB)/upv.toml,$(CC_OUT)/upv.json,$(CC_LAB)/static-test.toml" \
 	  $(foreach c,$(CC_C150_CHOICES),$(foreach z,$(CC_C150_SIZES),--row "DEM $(CC_C150_SIDE_MM.$z) mm; calibrated to $c=$(CC_C150_MATERIAL.$c),$(CC_C150_OUT)/upv$z-picks-$c.json" \
 	    --row "DEM $(CC_C150_SIDE_MM.$z) mm; calibrated to $c; + $(CC_C150_NOISE_SNR_DB) dB noise; AIC=$(CC_C150_MATERIAL.$c),$(CC_C150_OUT)/upv$z-picks-noisy-$c.json")) \
 	  --column path_mm --column "t_p_us=t_p_us|t_p" --column "t_s_us=t_s_us|t_s" --column v_p_m_s --column v_s_m_s \
-	  --column E_d_GPa --column nu_d --column "E_glob_GPa=E_glob_GPa|E_d_GPa" --column "nu_glob=nu_glob|nu_d" \
+	  --column E_d_GPa --column nu_d --column "E_glob_GPa=E_glob_GPa|E_st_measured" --column "nu_glob=nu_glob|nu_st" \
 	  --significant-digits 4 --csv $@ > /dev/null
 
 # What each wave run cost (wall time and peak memory of every run: mw-prov runs --tool mw-dem).

@@ -10,7 +10,8 @@
 //  2. the report is whole (scripts/check-report: the spec's tables and figures, none broken);
 //  3. the tables hold their sources' numbers: in upv150.csv a DEM row's E_glob_GPa and nu_glob are
 //     its calibration's (not its picks' E_d, nu_d), its times its picks', the measured row's
-//     times upv.toml's; table3-calibrations.csv's columns each calibration's table3.csv;
+//     times upv.toml's, its E_d, nu_d upv.json's and its E_glob, nu_glob the compression tests'
+//     E_st, nu_st (static-test.toml); table3-calibrations.csv's columns each calibration's table3.csv;
 //  4. every tool run is in the quick provenance database, none failed, every output as recorded.
 // Measured on the 2-core development machine (2026-12-06, five runs beside another engineer's
 // benchmarks, load 2.4-4.5): 37-74 s wall, 63-74 s of CPU (user + system; the tree's copy, 6 s, and
@@ -156,11 +157,18 @@ TEST(Pipeline, Cube150ChainOnSmallModelsMakesEveryTableFromItsSources) {
 
   // 3. upv150.csv against its sources, each file read here, not through the rule's row list.
   const auto upv = io::read_csv(tree / C / "upv150.csv");
-  const fs::path upv_toml = tree / "lab-data/concrete-cube/upv.toml";
-  const std::string measured = "measured (upv.toml; step 3)";
+  const fs::path upv_toml = tree / "lab-data/concrete-cube/upv.toml", static_toml = tree / "lab-data/concrete-cube/static-test.toml";
+  const std::string measured = "measured (upv.toml; static-test.toml)";
   EXPECT_EQ(cell(upv, measured, "t_p_us"), printed(quantity_entry(upv_toml, "t_p"))) << measured;
   EXPECT_EQ(cell(upv, measured, "t_s_us"), printed(quantity_entry(upv_toml, "t_s"))) << measured;
   EXPECT_EQ(cell(upv, measured, "path_mm"), printed(quantity_entry(upv_toml, "path"))) << measured;
+  // Its dynamic moduli from the UPV test, its static ones from the compression tests: not the same.
+  const auto lab_upv = json_file(tree / R / "upv.json");
+  EXPECT_EQ(cell(upv, measured, "E_d_GPa"), printed(lab_upv["E_d_GPa"].get<double>())) << measured;
+  EXPECT_EQ(cell(upv, measured, "nu_d"), printed(lab_upv["nu_d"].get<double>())) << measured;
+  EXPECT_EQ(cell(upv, measured, "E_glob_GPa"), printed(quantity_entry(static_toml, "E_st_measured"))) << measured;
+  EXPECT_EQ(cell(upv, measured, "nu_glob"), printed(quantity_entry(static_toml, "nu_st"))) << measured;
+  EXPECT_NE(cell(upv, measured, "E_glob_GPa"), cell(upv, measured, "E_d_GPa")) << measured;
   EXPECT_EQ(upv.rows.size(), 1 + choices.size() * sizes.size() * 2) << "upv150.csv: the measured row and each DEM row";
   const std::map<std::string, fs::path> material = {{"static-test", tree / R / "calibration.json"},
                                                     {"dynamic", tree / C / "calibration-dynamic.json"}};
