@@ -38,17 +38,20 @@ CohesiveFrictionalContact::Slot CohesiveFrictionalContact::slot(std::size_t s) c
           cohesive_[s] != 0 ? kCohesive : kFrictional};
 }
 
-void CohesiveFrictionalContact::set_slots(const std::vector<Slot>& slots) {
-  const std::size_t m = slots.size();
-  nx_.resize(m), ny_.resize(m), nz_.resize(m), sx_.resize(m), sy_.resize(m), sz_.resize(m);
-  overlap0_.resize(m), bond_.resize(m), cohesive_.resize(m);
+template <class SlotAt>
+void CohesiveFrictionalContact::set_slots(std::size_t m, const SlotAt& slot_at) {
+  std::vector<double> nx(m), ny(m), nz(m), sx(m), sy(m), sz(m), overlap0(m), cohesive(m);
+  std::vector<std::uint32_t> bond(m);
   for (std::size_t s = 0; s < m; ++s) {
-    nx_[s] = slots[s].normal.x, ny_[s] = slots[s].normal.y, nz_[s] = slots[s].normal.z;
-    sx_[s] = slots[s].shear.x, sy_[s] = slots[s].shear.y, sz_[s] = slots[s].shear.z;
-    overlap0_[s] = slots[s].overlap0;
-    bond_[s] = slots[s].bond;
-    cohesive_[s] = slots[s].status == kCohesive ? 1.0 : 0.0;
+    const Slot q = slot_at(s);
+    nx[s] = q.normal.x, ny[s] = q.normal.y, nz[s] = q.normal.z;
+    sx[s] = q.shear.x, sy[s] = q.shear.y, sz[s] = q.shear.z;
+    overlap0[s] = q.overlap0;
+    bond[s] = q.bond;
+    cohesive[s] = q.status == kCohesive ? 1.0 : 0.0;
   }
+  nx_ = std::move(nx), ny_ = std::move(ny), nz_ = std::move(nz), sx_ = std::move(sx), sy_ = std::move(sy), sz_ = std::move(sz);
+  overlap0_ = std::move(overlap0), bond_ = std::move(bond), cohesive_ = std::move(cohesive);
 }
 
 std::size_t CohesiveFrictionalContact::broken_bond_count() const {
@@ -179,20 +182,15 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   if (detection_passes_ > 1 && first.size() == nb && system.global_slot_count() == nb) return;
   before_relayout(system);
   const auto order = system.set_contacts(first, second, moments());
-  std::vector<Slot> slots(order.size());
-  for (std::size_t s = 0; s < order.size(); ++s) {
+  set_slots(order.size(), [&](std::size_t s) {
     const std::uint32_t c = order[s];
-    if (c < nb) {
-      slots[s] = slot_of_bond[c] != kNoBond ? slot(slot_of_bond[c])
-                                            : Slot{bonds.normal0[c], {}, bonds.overlap0_m[c], c, kCohesive};
-    } else if (const std::uint32_t old = known_slot[c - nb]; old != kNoBond) {
-      slots[s] = slot(old);
-    } else {
-      const Vec3 d = x[second[c]] - x[first[c]];
-      slots[s] = Slot{(1.0 / norm(d)) * d, {}, 0.0, kNoBond, kFrictional};
-    }
-  }
-  set_slots(slots);
+    if (c < nb)
+      return slot_of_bond[c] != kNoBond ? slot(slot_of_bond[c])
+                                        : Slot{bonds.normal0[c], {}, bonds.overlap0_m[c], c, kCohesive};
+    if (const std::uint32_t old = known_slot[c - nb]; old != kNoBond) return slot(old);
+    const Vec3 d = x[second[c]] - x[first[c]];
+    return Slot{(1.0 / norm(d)) * d, {}, 0.0, kNoBond, kFrictional};
+  });
   after_relayout(system);
 }
 

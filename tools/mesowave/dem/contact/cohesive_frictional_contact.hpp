@@ -88,7 +88,10 @@ private:
     std::uint8_t status;
   };
   Slot slot(std::size_t s) const;
-  void set_slots(const std::vector<Slot>& slots);
+  /// The per-slot arrays made anew, slot s from slot_at(s) (reading the old arrays meanwhile),
+  /// one slot at a time: a record per contact for the whole list at once would double the peak.
+  template <class SlotAt>
+  void set_slots(std::size_t m, const SlotAt& slot_at);
   // The same, in slot order, one array per component (vector loads and stores).
   std::vector<double> nx_, ny_, nz_, sx_, sy_, sz_, overlap0_;
   std::vector<std::uint32_t> bond_;
