@@ -138,8 +138,8 @@ public:
   const Vec3* rotations() const { return theta_.data(); }  ///< theta (track_rotation only)
   const std::uint32_t* first() const { return first_.data(); }
   const std::uint32_t* second() const { return second_.data(); }
-  /// The slots this process holds: every contact, or on several ranks (distribute) only the
-  /// contacts with an end of this rank's own, in the order of the whole layout.
+  /// The slots this process holds: every contact, or on several ranks (a system made for a
+  /// domain) only the contacts with an end of this rank's own, in the order of the whole layout.
   std::size_t slot_count() const { return first_.size(); }
   /// The contacts of the whole layout (all ranks').
   std::size_t global_slot_count() const { return global_slots_; }

@@ -15,9 +15,8 @@
 // get every term in the serial order from the serial inputs.
 // The sums over contacts (elastic energy, plastic dissipation) are redone from the
 // reporters' per-slot values, per task of the whole layout in its slot order as the single
-// process adds them; the
-// strength ratio and the speed bound are maxima, exact in any order; the sums over spheres
-// are kept per 256-sphere block, and a block is never split between ranks. The actuators and
+// process adds them; the strength ratio and the speed bound are maxima, exact in any order;
+// the sums over spheres are kept per 256-sphere block, and a block is never split between ranks. The actuators and
 // sensors run on every rank, as in one process, on the observed spheres, which every rank
 // holds: their sums (sensor averages, wall forces, external work) keep the serial order.
 // A contact across two ranks is held and computed on both; its forces on the other rank's
