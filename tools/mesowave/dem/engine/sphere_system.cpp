@@ -202,6 +202,8 @@ double SphereSystem::impose_displacement(std::size_t k, const Vec3& e, double u_
 }
 
 void SphereSystem::step(double dt, bool evaluate_energy) {
+  if (domain_ && slot_ratio2_.size() != first_.size())  // after a new layout (lay_out_domain)
+    for (auto* values : {&slot_elastic_, &slot_plastic_, &slot_ratio2_}) values->resize(first_.size());
   forced_v_before_.resize(forced_.size());
   for (std::size_t i = 0; i < forced_.size(); ++i) forced_v_before_[i] = v_[forced_[i]];
 

@@ -169,7 +169,10 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
                      format_number(ghost_layer_m_ * 1e3) + " mm, the contact " + format_number(norm(position(j) - position(i)) * 1e3) +
                      " mm long): the layer must reach at least the longest bond plus the motion between exchanges");
   }
-  slot_elastic_.assign(count, 0), slot_plastic_.assign(count, 0), slot_ratio2_.assign(count, 0);
+  // The per-slot values are written by every step before they are read; they (and the owned
+  // tasks' values) are allocated by the first step that needs them, not here: at setup the
+  // critical step's Lanczos vectors would be held beside them (the peak, docs/mpi.md).
+  for (auto* values : {&slot_elastic_, &slot_plastic_, &slot_ratio2_, &owned_values_}) std::vector<double>().swap(*values);
 
   // The elastic sum of each task of the whole layout is taken, in slot order, by the rank that
   // reports most of its slots (ties: the lowest); the reporters of its other slots send it
@@ -202,7 +205,6 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
     owned_tasks_.push_back(std::uint32_t(task));
     owned_start_.push_back(std::uint32_t(owned_start_.back() + end - begin));
   }
-  owned_values_.assign(owned_start_.back(), 0.0);
   std::vector<std::vector<std::uint32_t>> to(static_cast<std::size_t>(ranks));
   own_elastic_.clear();
   for (const std::uint32_t s : reported_) {
@@ -226,6 +228,7 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
 // Energy steps: the elastic parts to each task's owner, which adds them in slot order; the task
 // sums then to every rank (in owner then task order), so every rank holds every task's sum.
 void SphereSystem::share_elastic() {
+  owned_values_.resize(owned_start_.back());  // every place is filled below
   std::vector<Domain::Message> sends, receives;
   for (auto& g : elastic_sends_) {
     g.buffer.resize(g.spheres.size());
