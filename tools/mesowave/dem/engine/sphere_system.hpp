@@ -296,7 +296,6 @@ private:
   };
   std::vector<GhostList> ghost_sends_, ghost_receives_;
   std::vector<std::uint32_t> observed_;
-  std::vector<std::uint32_t> touched_;  ///< other ranks' spheres this rank's computed chunks add forces to
   std::vector<int> observed_counts_, observed_displs_;
   // The elastic sums: per task of the whole layout the rank that adds it (task_owner_; per rank
   // its count), and on that rank its tasks' values in slot order (owned_values_, from

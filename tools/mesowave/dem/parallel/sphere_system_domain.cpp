@@ -122,22 +122,18 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
   const bool thinned = ghost_layer_rank_ < 0 || ghost_layer_rank_ == me;
   const auto position = [&](std::uint32_t k) { return displacement_state_ ? spheres_.centre_m[k] + x_[k] : x_[k]; };
   reported_.clear();
-  touched_.clear();
   std::vector<std::vector<std::uint32_t>> sends(static_cast<std::size_t>(ranks)), receives(static_cast<std::size_t>(ranks));
   for (std::size_t s = 0; s < count; ++s) {
     const std::uint32_t i = first_[s], j = second_[s];
     const int oi = owner(i), oj = owner(j);
     if (oi == me) reported_.push_back(std::uint32_t(s));
     if (oi == oj) continue;
-    // A contact across two ranks: each needs the other's end (and this rank's computed force on
-    // it is not this rank's to keep: touched_). Both sides list it from the same layout.
+    // A contact across two ranks: each needs the other's end. Both sides list it from the same layout.
     const std::uint32_t mine = oi == me ? i : j, theirs = oi == me ? j : i;
     const int other = oi == me ? oj : oi;
     sends[std::size_t(other)].push_back(mine);
-    touched_.push_back(theirs);
     if (!thinned || norm(position(theirs) - position(mine)) <= ghost_layer_m_) receives[std::size_t(other)].push_back(theirs);
   }
-  sort_unique(touched_);
   ghost_sends_.clear(), ghost_receives_.clear();
   ghosts_ = 0;
   std::vector<std::uint8_t> held(n, 0);
@@ -307,8 +303,10 @@ void SphereSystem::exchange_ghosts() {
 // damping and kinetic sums. Every rank then adds the plastic task sums in slot order, as
 // for_each_contact adds them in one process; the elastic ones come from share_elastic.
 void SphereSystem::share_step(bool evaluate_energy) {
-  // Other ranks' spheres got this rank's share of their contacts: not theirs to keep.
-  for (const std::uint32_t k : touched_) f_acc_[k] = {}, t_acc_[k] = {};
+  // The ghosts got this rank's share of their contacts' forces (every other end of a held contact
+  // is a ghost, lay_out_domain checks): not this rank's to keep.
+  for (const auto& g : ghost_receives_)
+    for (const std::uint32_t k : g.spheres) f_acc_[k] = {}, t_acc_[k] = {};
   exchange_ghosts();
 
   const int ranks = domain_->size(), me = domain_->rank();
