@@ -21,32 +21,53 @@ struct LanczosResult {
 template <class Apply>
 LanczosResult largest_eigenvalue(std::size_t n, const Apply& apply, int max_iterations = 150, double tolerance = 1e-7);
 
+/// The rows of A's vectors one process holds: [first, first + count) of `dimension`.
+struct LanczosRows {
+  std::size_t dimension = 0, first = 0, count = 0;
+};
+
+/// The same with the rows split between processes (dem/parallel, docs/mpi.md): `apply(x, y)`
+/// gives this process's rows of A x from its rows of x; `dot(a, b)` is sum_i a_i b_i over every
+/// process's rows, added in row order. Each process takes its rows of the one start vector, so
+/// the result has the bits of one process holding every row (the overload above).
+template <class Apply, class Dot>
+LanczosResult largest_eigenvalue(const LanczosRows& rows, const Apply& apply, const Dot& dot, int max_iterations = 150,
+                                 double tolerance = 1e-7);
+
 
 template <class Apply>
 LanczosResult largest_eigenvalue(std::size_t n, const Apply& apply, int max_iterations, double tolerance) {
+  const auto dot = [n](const double* a, const double* b) {
+    double sum = 0;
+    for (std::size_t i = 0; i < n; ++i) sum += a[i] * b[i];
+    return sum;
+  };
+  return largest_eigenvalue(LanczosRows{n, 0, n}, apply, dot, max_iterations, tolerance);
+}
+
+template <class Apply, class Dot>
+LanczosResult largest_eigenvalue(const LanczosRows& rows, const Apply& apply, const Dot& dot, int max_iterations,
+                                 double tolerance) {
   LanczosResult result;
-  if (n == 0) return result;
+  if (rows.dimension == 0) return result;
+  const std::size_t n = rows.count;
   std::vector<double> q(n), q_prev(n, 0.0), w(n);
   std::uint64_t state = 0x9E3779B97F4A7C15ULL;  // fixed seed: same answer every run
-  double norm_q = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  const auto next = [&state] {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    q[i] = double(state >> 11) / double(1ULL << 53) - 0.5;
-    norm_q += q[i] * q[i];
-  }
-  norm_q = std::sqrt(norm_q);
+    return double(state >> 11) / double(1ULL << 53) - 0.5;
+  };
+  for (std::size_t i = 0; i < rows.first; ++i) next();  // the rows before this process's
+  for (std::size_t i = 0; i < n; ++i) q[i] = next();
+  const double norm_q = std::sqrt(dot(q.data(), q.data()));
   for (double& v : q) v /= norm_q;
   std::vector<double> alpha, beta;
   double beta_prev = 0, previous_top = -1;
-  for (int k = 0; k < max_iterations && k < int(n); ++k) {
+  for (int k = 0; k < max_iterations && std::size_t(k) < rows.dimension; ++k) {
     apply(q.data(), w.data());
-    double a = 0;
-    for (std::size_t i = 0; i < n; ++i) a += q[i] * w[i];
-    double b2 = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      w[i] -= a * q[i] + beta_prev * q_prev[i];
-      b2 += w[i] * w[i];
-    }
+    const double a = dot(q.data(), w.data());
+    for (std::size_t i = 0; i < n; ++i) w[i] -= a * q[i] + beta_prev * q_prev[i];
+    const double b2 = dot(w.data(), w.data());
     alpha.push_back(a);
     const double b = std::sqrt(b2);
     const int m = int(alpha.size());

@@ -105,7 +105,8 @@ Matrix linear_network_stiffness(const SphereSystem& system) {
       Vec3& unit = col < 3 ? d_i : col < 6 ? t_i : col < 9 ? d_j : t_j;
       unit[col % 3] = 1.0;
       const LinearBondResponse r =
-          linear_bond_response(two_E_dem, ratio, radius[i], radius[j], bonds.overlap0_m[b], bonds.normal0[b], d_j - d_i, t_i, t_j);
+          linear_bond_response(two_E_dem, ratio, radius[i], radius[j], system.bond_overlap0(b), system.bond_normal0(b),
+                               d_j - d_i, t_i, t_j);
       // Generalized forces: -f, -arm_i c on i; f, -arm_j c on j (for_each_contact). K = -d(force)/du.
       const Vec3 g[4] = {-1.0 * r.f, -r.arm_i * r.c, r.f, -r.arm_j * r.c};
       const std::size_t c = dof[col / 6] + std::size_t(col % 6);

@@ -186,7 +186,7 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
     const std::uint32_t c = order[s];
     if (c < nb)
       return slot_of_bond[c] != kNoBond ? slot(slot_of_bond[c])
-                                        : Slot{bonds.normal0[c], {}, bonds.overlap0_m[c], c, kCohesive};
+                                        : Slot{system.bond_normal0(c), {}, system.bond_overlap0(c), c, kCohesive};
     if (const std::uint32_t old = known_slot[c - nb]; old != kNoBond) return slot(old);
     const Vec3 d = x[second[c]] - x[first[c]];
     return Slot{(1.0 / norm(d)) * d, {}, 0.0, kNoBond, kFrictional};

@@ -14,9 +14,9 @@ void LinearBondedNetwork::attach(SphereSystem& system) {
   const std::size_t m = order.size();
   nx_.resize(m), ny_.resize(m), nz_.resize(m), overlap0_.resize(m);
   for (std::size_t s = 0; s < m; ++s) {
-    const Vec3 n = bonds.normal0[order[s]];
+    const Vec3 n = system.bond_normal0(order[s]);
     nx_[s] = n.x, ny_[s] = n.y, nz_[s] = n.z;
-    overlap0_[s] = bonds.overlap0_m[order[s]];
+    overlap0_[s] = system.bond_overlap0(order[s]);
   }
 }
 

@@ -80,11 +80,25 @@ public:
   /// True if any position or velocity is not finite.
   virtual bool has_non_finite_state() const = 0;
 
+  /// The rows of the vectors below that this process holds: all degrees_of_freedom() of them
+  /// in one process; distributed (docs/mpi.md), its own spheres' six each.
+  struct Rows {
+    std::size_t first = 0, count = 0;
+  };
+  virtual Rows stiffness_rows() const { return {0, degrees_of_freedom()}; }
   /// y = M^{-1/2} K M^{-1/2} x for the linearised network at step 0 (the
-  /// symmetric part), size degrees_of_freedom(): its largest eigenvalue gives
-  /// the critical time step 2 / sqrt(lambda_max).
+  /// symmetric part), both vectors' stiffness_rows(): its largest eigenvalue gives
+  /// the critical time step 2 / sqrt(lambda_max). Collective when distributed.
   virtual void scaled_stiffness_action(const double* x, double* y) const = 0;
-  /// Upper bound of lambda_max (Gershgorin: largest absolute row sum).
+  /// sum_i a_i b_i of two such vectors over every process's rows, added in row order: the
+  /// bits of one process holding them all. Collective when distributed.
+  virtual double stiffness_dot(const double* a, const double* b) const {
+    double sum = 0;
+    for (std::size_t i = 0, n = stiffness_rows().count; i < n; ++i) sum += a[i] * b[i];
+    return sum;
+  }
+  /// Upper bound of lambda_max (Gershgorin: largest absolute row sum over every row).
+  /// Collective when distributed.
   virtual double scaled_stiffness_row_sum_bound() const = 0;
 
   /// Everything that changes from step to step (positions, velocities,

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/kernel_clones.hpp"
@@ -52,9 +54,10 @@ LinearBond linear_bond(const SphereSystem& system, std::size_t k) {
   const BondNetwork& b = system.bonds();
   const CohesiveFrictionalMaterial& m = system.material();
   const double ri = s.radius_m[b.first[k]], rj = s.radius_m[b.second[k]];
-  const double dist0 = ri + rj - b.overlap0_m[k];
+  const double dist0 = ri + rj - system.bond_overlap0(k);
   const double alpha = (ri + rj) / dist0;
-  LinearBond lb{b.normal0[k], normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha, rj / alpha};
+  LinearBond lb{system.bond_normal0(k), normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha,
+                rj / alpha};
   system.kernel().moment_stiffness(system, k, lb.kr, lb.ktw);
   return lb;
 }
@@ -100,10 +103,43 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
   first_ = bonds_.first;
   second_ = bonds_.second;
   if (domain) split(*domain);
+  keep_held_bonds();
   kernel_->attach(*this);
 }
 
 SphereSystem::~SphereSystem() = default;
+
+void SphereSystem::keep_held_bonds() {
+  const std::size_t first = own_begin(), end = own_end();
+  held_bond_begin_ = std::size_t(std::lower_bound(bonds_.first.begin(), bonds_.first.end(), first) - bonds_.first.begin());
+  held_bond_end_ = std::size_t(std::lower_bound(bonds_.first.begin(), bonds_.first.end(), end) - bonds_.first.begin());
+  held_cross_bonds_.clear();
+  for (std::size_t b = 0; b < held_bond_begin_; ++b)
+    if (bonds_.second[b] >= first && bonds_.second[b] < end) held_cross_bonds_.push_back(std::uint32_t(b));
+  if (!domain_) {
+    bond_normal0_ = std::move(bonds_.normal0), bond_overlap0_ = std::move(bonds_.overlap0_m);
+  } else {
+    for (const std::uint32_t b : held_cross_bonds_) {
+      bond_normal0_.push_back(bonds_.normal0[b]);
+      bond_overlap0_.push_back(bonds_.overlap0_m[b]);
+    }
+    bond_normal0_.insert(bond_normal0_.end(), bonds_.normal0.begin() + std::ptrdiff_t(held_bond_begin_),
+                         bonds_.normal0.begin() + std::ptrdiff_t(held_bond_end_));
+    bond_overlap0_.insert(bond_overlap0_.end(), bonds_.overlap0_m.begin() + std::ptrdiff_t(held_bond_begin_),
+                          bonds_.overlap0_m.begin() + std::ptrdiff_t(held_bond_end_));
+  }
+  std::vector<Vec3>().swap(bonds_.normal0);
+  std::vector<double>().swap(bonds_.overlap0_m);
+  bonds_.incidence = {};
+}
+
+std::size_t SphereSystem::held_bond(std::size_t b) const {
+  if (b >= held_bond_begin_ && b < held_bond_end_) return held_cross_bonds_.size() + (b - held_bond_begin_);
+  const auto at = std::lower_bound(held_cross_bonds_.begin(), held_cross_bonds_.end(), std::uint32_t(b));
+  if (b >= held_bond_end_ || at == held_cross_bonds_.end() || *at != b)
+    throw std::logic_error("SphereSystem: bond " + std::to_string(b) + " has no end on this rank");
+  return std::size_t(at - held_cross_bonds_.begin());
+}
 
 std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
                                                       const std::vector<std::uint32_t>& second, bool moments) {
@@ -374,22 +410,35 @@ bool SphereSystem::has_non_finite_state() const {
   return domain_ ? domain_->sum(bad) > 0 : bad != 0;
 }
 
+// Distributed, a rank computes its own spheres' rows: from every bond with an end of its own, in
+// bond order (so each row sums the terms of one process in its order), with the other end's x
+// from its owner (ghost_rows).
 void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
-  const std::size_t n = spheres_.size();
-  std::fill(y, y + 6 * n, 0.0);
-  auto dof = [&](const double* v, std::size_t k, int part) {
+  const std::size_t first = own_begin(), end = own_end();
+  std::fill(y, y + 6 * (end - first), 0.0);
+  std::vector<std::uint32_t> ghost_ids;
+  const std::vector<double> ghost = domain_ ? ghost_rows(x, ghost_ids) : std::vector<double>();
+  const auto own = [&](std::size_t k) { return k >= first && k < end; };
+  const auto rows_of = [&](std::size_t k) {
+    if (own(k)) return x + 6 * (k - first);
+    return ghost.data() + 6 * std::size_t(std::lower_bound(ghost_ids.begin(), ghost_ids.end(), std::uint32_t(k)) - ghost_ids.begin());
+  };
+  auto dof = [&](std::size_t k, int part) {
     const double s = 1.0 / std::sqrt(part == 0 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
-    return Vec3{s * v[6 * k + 3 * part], s * v[6 * k + 3 * part + 1], s * v[6 * k + 3 * part + 2]};
+    const double* v = rows_of(k) + 3 * part;
+    return Vec3{s * v[0], s * v[1], s * v[2]};
   };
   auto add = [&](std::size_t k, int part, const Vec3& g) {
+    if (!own(k)) return;
     const double s = 1.0 / std::sqrt(part == 0 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
-    for (int d = 0; d < 3; ++d) y[6 * k + 3 * part + d] -= s * g[d];  // K x = -(force)
+    for (int d = 0; d < 3; ++d) y[6 * (k - first) + 3 * std::size_t(part) + std::size_t(d)] -= s * g[d];  // K x = -(force)
   };
   for (std::size_t b = 0; b < bonds_.size(); ++b) {
-    const LinearBond lb = linear_bond(*this, b);
     const std::size_t i = bonds_.first[b], j = bonds_.second[b];
+    if (!own(i) && !own(j)) continue;
+    const LinearBond lb = linear_bond(*this, b);
     Vec3 fi, mi, fj, mj;
-    lb.forces(dof(x, i, 0), dof(x, i, 1), dof(x, j, 0), dof(x, j, 1), fi, mi, fj, mj);
+    lb.forces(dof(i, 0), dof(i, 1), dof(j, 0), dof(j, 1), fi, mi, fj, mj);
     add(i, 0, fi);
     add(i, 1, mi);
     add(j, 0, fj);
@@ -397,12 +446,22 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
   }
 }
 
+double SphereSystem::stiffness_dot(const double* a, const double* b) const {
+  const std::size_t rows = stiffness_rows().count;
+  const auto continue_sum = [&](double sum) {
+    for (std::size_t i = 0; i < rows; ++i) sum += a[i] * b[i];
+    return sum;
+  };
+  return domain_ ? chained_sum(*domain_, continue_sum) : continue_sum(0.0);
+}
+
 double SphereSystem::scaled_stiffness_row_sum_bound() const {
-  const std::size_t n = spheres_.size();
-  std::vector<double> row(6 * n, 0.0);
+  const std::size_t first = own_begin(), end = own_end();
+  std::vector<double> row(6 * (end - first), 0.0);
   for (std::size_t b = 0; b < bonds_.size(); ++b) {
-    const LinearBond lb = linear_bond(*this, b);
     const std::size_t ends[2] = {bonds_.first[b], bonds_.second[b]};
+    if ((ends[0] < first || ends[0] >= end) && (ends[1] < first || ends[1] >= end)) continue;
+    const LinearBond lb = linear_bond(*this, b);
     double scale[12];
     for (int c = 0; c < 12; ++c) {
       const std::size_t k = ends[c / 6];
@@ -414,12 +473,15 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
       Vec3 g[4];
       lb.forces(u[0], u[1], u[2], u[3], g[0], g[1], g[2], g[3]);
       for (int r = 0; r < 12; ++r) {
+        const std::size_t k = ends[r / 6];
+        if (k < first || k >= end) continue;
         const double entry = -g[r / 3][r % 3];
-        row[6 * ends[r / 6] + (r % 6)] += std::abs(entry) * scale[r] * scale[c];
+        row[6 * (k - first) + std::size_t(r % 6)] += std::abs(entry) * scale[r] * scale[c];
       }
     }
   }
-  return row.empty() ? 0.0 : *std::max_element(row.begin(), row.end());
+  const double bound = row.empty() ? 0.0 : *std::max_element(row.begin(), row.end());
+  return domain_ ? domain_->max(bound) : bound;  // a maximum: exact in any order
 }
 
 // Between steps the external forces are spent (f_ext_ zero, forced_ empty) and
@@ -470,7 +532,8 @@ std::size_t SphereSystem::memory_bytes() const {
   const std::size_t n = spheres_.size();
   std::size_t bytes = n * (sizeof(Vec3) * (6 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + 2 * sizeof(double) +
                            sizeof(std::uint32_t) + sizeof(std::int64_t) + 1);
-  bytes += bonds_.size() * (2 * sizeof(std::uint32_t) + sizeof(double) + sizeof(Vec3) + 2 * sizeof(std::uint32_t));
+  bytes += bonds_.size() * 2 * sizeof(std::uint32_t) + bond_normal0_.size() * (sizeof(Vec3) + sizeof(double)) +
+           held_cross_bonds_.size() * sizeof(std::uint32_t);
   bytes += kernel_->memory_bytes() + out_moment_.size() * sizeof(Vec3);
   bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +
            first_.size() * 2 * sizeof(std::uint32_t) + 2 * n * sizeof(Vec3);

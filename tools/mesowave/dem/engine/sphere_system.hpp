@@ -24,7 +24,9 @@
 // they hold as ghosts (the other ends of their contacts), every rank the spheres the
 // actuators and sensors read, and the task sums are redone from the contacts' values
 // gathered in slot order, so every rank holds what the single-process run holds of its
-// own spheres, its ghosts and the observed spheres, bit for bit.
+// own spheres, its ghosts and the observed spheres, bit for bit. The critical step's Lanczos
+// runs on each rank's own rows (scaled_stiffness_action, stiffness_dot), and a rank keeps the
+// step-0 state of its held bonds only (bond_normal0).
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -109,7 +111,9 @@ public:
   EnergyAccount energy() const override;
   double peak_force_ratio() const override { return peak_ratio_; }
   bool has_non_finite_state() const override;
+  Rows stiffness_rows() const override { return {6 * own_begin(), 6 * (own_end() - own_begin())}; }
   void scaled_stiffness_action(const double* x, double* y) const override;
+  double stiffness_dot(const double* a, const double* b) const override;
   double scaled_stiffness_row_sum_bound() const override;
   std::size_t memory_bytes() const override;
   void save_state(StateGroup& group) const override;
@@ -124,7 +128,13 @@ public:
   void share_positions();
 
   const SphereSet& spheres() const { return spheres_; }
+  /// The bonds' pairs (first, second). Their step-0 normals and u_0 are bond_normal0() and
+  /// bond_overlap0(); the system keeps no incidence (only the model's choice reads it, before).
   const BondNetwork& bonds() const { return bonds_; }
+  /// Bond b's unit normal and u_0 at step 0. Distributed, a rank keeps them only for the bonds
+  /// with an end of its own (docs/mpi.md); std::logic_error for another.
+  Vec3 bond_normal0(std::size_t b) const { return bond_normal0_[held_bond(b)]; }
+  double bond_overlap0(std::size_t b) const { return bond_overlap0_[held_bond(b)]; }
   const CohesiveFrictionalMaterial& material() const { return material_; }
   const ContactKernel& kernel() const { return *kernel_; }
   /// Angular velocity w_{n+1/2} of sphere k (and its initial value, for tests).
@@ -239,6 +249,17 @@ private:
   int threads_ = 1;
   bool parallel_ = false;
 
+  // The bonds' step-0 normals and u_0, for the bonds with an end of this rank's own (all in one
+  // process), in bond order: those whose first sphere lies below the rank's spheres
+  // (held_cross_bonds_), then the bonds [held_bond_begin_, held_bond_end_), whose first sphere is
+  // its own (bonds are sorted by first sphere).
+  std::vector<std::uint32_t> held_cross_bonds_;
+  std::size_t held_bond_begin_ = 0, held_bond_end_ = 0;
+  std::vector<Vec3> bond_normal0_;
+  std::vector<double> bond_overlap0_;
+  std::size_t held_bond(std::size_t b) const;
+  void keep_held_bonds();
+
   std::vector<Vec3> x_, v_, w_, a_, theta_, f_ext_;
   std::vector<double> inv_mass_, inv_inertia_;
   std::vector<double> inv_mass3_, inv_inertia3_;  ///< the same, once per Cartesian component
@@ -313,6 +334,13 @@ private:
   // and by the collectives, and the exchanges counted.
   std::uint64_t ghost_doubles_ = 0, shared_doubles_ = 0, shared_steps_ = 0, ghost_messages_ = 0;
   int owner(std::uint32_t sphere) const { return block_owner_[sphere / kSphereBlock]; }
+  /// This rank's spheres [own_begin(), own_end()): all of them in one process.
+  std::size_t own_begin() const { return domain_ ? own_begin_ : 0; }
+  std::size_t own_end() const { return domain_ ? own_end_ : spheres_.size(); }
+  /// The critical step's vectors at the ghosts (scaled_stiffness_action): x's rows of the spheres
+  /// each neighbour holds as ghosts go there; returns the ghosts' rows (six a sphere) in the order
+  /// of `ghost_ids`, the ghosts of every neighbour in rank order (so sorted by id).
+  std::vector<double> ghost_rows(const double* x, std::vector<std::uint32_t>& ghost_ids) const;
   bool held_here(std::uint32_t i, std::uint32_t j) const;
   void split(Domain& domain);
   void lay_out_domain(const std::vector<std::uint32_t>& global_first);

@@ -10,8 +10,11 @@ CriticalTimeStep critical_time_step(const Model& model, double min_radius_m, dou
   c.paper_estimate_s = min_radius_m * std::sqrt(density / E_dem_Pa);
   const double gershgorin = model.scaled_stiffness_row_sum_bound();
   c.stiffness_bound_s = gershgorin > 0 ? 2.0 / std::sqrt(gershgorin) : INFINITY;
-  const auto lanczos = largest_eigenvalue(model.degrees_of_freedom(),
-                                          [&](const double* x, double* y) { model.scaled_stiffness_action(x, y); });
+  const Model::Rows rows = model.stiffness_rows();
+  const auto lanczos = largest_eigenvalue(
+      LanczosRows{model.degrees_of_freedom(), rows.first, rows.count},
+      [&](const double* x, double* y) { model.scaled_stiffness_action(x, y); },
+      [&](const double* a, const double* b) { return model.stiffness_dot(a, b); });
   // The top Ritz value approaches lambda_max from below; adding its residual
   // keeps the estimate on the safe side. Gershgorin caps it.
   c.lambda_max = std::min(lanczos.ritz + lanczos.residual, gershgorin);

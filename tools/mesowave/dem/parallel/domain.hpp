@@ -44,4 +44,22 @@ public:
   virtual std::uint64_t sum(std::uint64_t count) = 0;
 };
 
+/// A floating-point sum in the serial order of parts held rank after rank (rank r's part comes
+/// after rank r - 1's, as the spheres' ranges do): rank 0 starts from 0, each rank continues the
+/// previous rank's partial sum (`continue_sum(partial)` adds its own terms in order) and passes
+/// it on; every rank gets the last one's. The bits of one process adding every term in order,
+/// at the price of the ranks adding one after the other (setup only: the critical step's Lanczos).
+template <class Continue>
+double chained_sum(Domain& domain, const Continue& continue_sum) {
+  const int me = domain.rank(), ranks = domain.size();
+  double sum = 0;
+  if (me > 0) domain.exchange({}, {{me - 1, &sum, 1}});
+  sum = continue_sum(sum);
+  if (me + 1 < ranks) domain.exchange({{me + 1, &sum, 1}}, {});
+  std::vector<int> counts(static_cast<std::size_t>(ranks), 0), displs(static_cast<std::size_t>(ranks), 0);
+  counts.back() = 1;
+  domain.share(&sum, counts, displs);
+  return sum;
+}
+
 }  // namespace mesowave::dem

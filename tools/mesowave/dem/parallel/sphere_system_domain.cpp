@@ -257,6 +257,26 @@ void SphereSystem::share_elastic() {
     task_elastic_[task] = all[std::size_t(next[std::size_t(task_owner_[task])]++)];
 }
 
+std::vector<double> SphereSystem::ghost_rows(const double* x, std::vector<std::uint32_t>& ghost_ids) const {
+  std::vector<std::vector<double>> out(ghost_sends_.size());
+  std::vector<Domain::Message> sends, receives;
+  for (std::size_t g = 0; g < ghost_sends_.size(); ++g) {
+    for (const std::uint32_t k : ghost_sends_[g].spheres)
+      out[g].insert(out[g].end(), x + 6 * (k - own_begin_), x + 6 * (k - own_begin_ + 1));
+    sends.push_back({ghost_sends_[g].rank, out[g].data(), int(out[g].size())});
+  }
+  ghost_ids.clear();
+  for (const auto& g : ghost_receives_) ghost_ids.insert(ghost_ids.end(), g.spheres.begin(), g.spheres.end());
+  std::vector<double> rows(6 * ghost_ids.size());
+  std::size_t at = 0;
+  for (const auto& g : ghost_receives_) {
+    receives.push_back({g.rank, rows.data() + at, int(6 * g.spheres.size())});
+    at += 6 * g.spheres.size();
+  }
+  domain_->exchange(sends, receives);
+  return rows;
+}
+
 // Point to point: each neighbour gets the motion the contact law reads of the spheres it
 // holds as ghosts (positions; velocities and angular velocities unless the law reads none;
 // rotations where they are integrated).
