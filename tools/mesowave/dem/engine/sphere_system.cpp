@@ -115,7 +115,7 @@ void SphereSystem::keep_held_bonds() {
   held_bond_end_ = std::size_t(std::lower_bound(bonds_.first.begin(), bonds_.first.end(), end) - bonds_.first.begin());
   held_cross_bonds_.clear();
   for (std::size_t b = 0; b < held_bond_begin_; ++b)
-    if (bonds_.second[b] >= first && bonds_.second[b] < end) held_cross_bonds_.push_back(std::uint32_t(b));
+    if (is_own(bonds_.second[b])) held_cross_bonds_.push_back(std::uint32_t(b));
   if (!domain_) {
     bond_normal0_ = std::move(bonds_.normal0), bond_overlap0_ = std::move(bonds_.overlap0_m);
   } else {
@@ -414,13 +414,12 @@ bool SphereSystem::has_non_finite_state() const {
 // bond order (so each row sums the terms of one process in its order), with the other end's x
 // from its owner (ghost_rows).
 void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
-  const std::size_t first = own_begin(), end = own_end();
-  std::fill(y, y + 6 * (end - first), 0.0);
+  const std::size_t first = own_begin();
+  std::fill(y, y + 6 * (own_end() - first), 0.0);
   std::vector<std::uint32_t> ghost_ids;
   const std::vector<double> ghost = domain_ ? ghost_rows(x, ghost_ids) : std::vector<double>();
-  const auto own = [&](std::size_t k) { return k >= first && k < end; };
   const auto rows_of = [&](std::size_t k) {
-    if (own(k)) return x + 6 * (k - first);
+    if (is_own(k)) return x + 6 * (k - first);
     return ghost.data() + 6 * std::size_t(std::lower_bound(ghost_ids.begin(), ghost_ids.end(), std::uint32_t(k)) - ghost_ids.begin());
   };
   auto dof = [&](std::size_t k, int part) {
@@ -429,13 +428,13 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
     return Vec3{s * v[0], s * v[1], s * v[2]};
   };
   auto add = [&](std::size_t k, int part, const Vec3& g) {
-    if (!own(k)) return;
+    if (!is_own(k)) return;
     const double s = 1.0 / std::sqrt(part == 0 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
     for (int d = 0; d < 3; ++d) y[6 * (k - first) + 3 * std::size_t(part) + std::size_t(d)] -= s * g[d];  // K x = -(force)
   };
   for (std::size_t b = 0; b < bonds_.size(); ++b) {
     const std::size_t i = bonds_.first[b], j = bonds_.second[b];
-    if (!own(i) && !own(j)) continue;
+    if (!is_own(i) && !is_own(j)) continue;
     const LinearBond lb = linear_bond(*this, b);
     Vec3 fi, mi, fj, mj;
     lb.forces(dof(i, 0), dof(i, 1), dof(j, 0), dof(j, 1), fi, mi, fj, mj);
@@ -456,11 +455,11 @@ double SphereSystem::stiffness_dot(const double* a, const double* b) const {
 }
 
 double SphereSystem::scaled_stiffness_row_sum_bound() const {
-  const std::size_t first = own_begin(), end = own_end();
-  std::vector<double> row(6 * (end - first), 0.0);
+  const std::size_t first = own_begin();
+  std::vector<double> row(6 * (own_end() - first), 0.0);
   for (std::size_t b = 0; b < bonds_.size(); ++b) {
     const std::size_t ends[2] = {bonds_.first[b], bonds_.second[b]};
-    if ((ends[0] < first || ends[0] >= end) && (ends[1] < first || ends[1] >= end)) continue;
+    if (!is_own(ends[0]) && !is_own(ends[1])) continue;
     const LinearBond lb = linear_bond(*this, b);
     double scale[12];
     for (int c = 0; c < 12; ++c) {
@@ -474,7 +473,7 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
       lb.forces(u[0], u[1], u[2], u[3], g[0], g[1], g[2], g[3]);
       for (int r = 0; r < 12; ++r) {
         const std::size_t k = ends[r / 6];
-        if (k < first || k >= end) continue;
+        if (!is_own(k)) continue;
         const double entry = -g[r / 3][r % 3];
         row[6 * (k - first) + std::size_t(r % 6)] += std::abs(entry) * scale[r] * scale[c];
       }

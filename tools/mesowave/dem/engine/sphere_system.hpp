@@ -337,6 +337,7 @@ private:
   /// This rank's spheres [own_begin(), own_end()): all of them in one process.
   std::size_t own_begin() const { return domain_ ? own_begin_ : 0; }
   std::size_t own_end() const { return domain_ ? own_end_ : spheres_.size(); }
+  bool is_own(std::size_t k) const { return k >= own_begin() && k < own_end(); }
   /// The critical step's vectors at the ghosts (scaled_stiffness_action): x's rows of the spheres
   /// each neighbour holds as ghosts go there; returns the ghosts' rows (six a sphere) in the order
   /// of `ghost_ids`, the ghosts of every neighbour in rank order (so sorted by id).
