@@ -238,8 +238,8 @@ double SphereSystem::impose_displacement(std::size_t k, const Vec3& e, double u_
 }
 
 void SphereSystem::step(double dt, bool evaluate_energy) {
-  if (domain_ && slot_ratio2_.size() != first_.size())  // after a new layout (lay_out_domain)
-    for (auto* values : {&slot_elastic_, &slot_plastic_, &slot_ratio2_}) values->resize(first_.size());
+  if (domain_ && slot_elastic_.size() != first_.size())  // after a new layout (lay_out_domain)
+    for (auto* values : {&slot_elastic_, &slot_plastic_}) values->resize(first_.size());
   forced_v_before_.resize(forced_.size());
   for (std::size_t i = 0; i < forced_.size(); ++i) forced_v_before_[i] = v_[forced_[i]];
 
@@ -537,7 +537,7 @@ std::size_t SphereSystem::memory_bytes() const {
   bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +
            first_.size() * 2 * sizeof(std::uint32_t) + 2 * n * sizeof(Vec3);
   // Distributed: the held slots' places and values (the spheres' arrays are still whole: docs/mpi.md).
-  bytes += global_slot_.size() * sizeof(std::uint32_t) + slot_elastic_.size() * 3 * sizeof(double) +
+  bytes += global_slot_.size() * sizeof(std::uint32_t) + slot_elastic_.size() * 2 * sizeof(double) +
            owned_values_.size() * sizeof(double);
   return bytes;
 }

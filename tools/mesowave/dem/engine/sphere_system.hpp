@@ -304,12 +304,13 @@ private:
   // spheres it sends there and those it receives from there) and the observed spheres (those
   // an actuator or sensor reads: every rank holds them; sorted by id, so by owner).
   Domain* domain_ = nullptr;
+  int rank_ = 0;  ///< domain_->rank(), for the step's inline code (which sees no Domain)
   std::size_t own_begin_ = 0, own_end_ = 0, own_block_begin_ = 0, own_block_end_ = 0, ghosts_ = 0;
   std::size_t broken_ = 0;  ///< bonds broken on all ranks after the last step (shared with the motion)
   double vmax2_all_ = 0;    ///< the largest block bound of |v|^2 over all ranks after the last step
   std::vector<int> sphere_counts_, sphere_displs_, block_counts_, block_displs_, block_owner_;
   std::vector<std::uint32_t> reported_;
-  std::vector<double> slot_elastic_, slot_plastic_, slot_ratio2_, send_, recv_;
+  std::vector<double> slot_elastic_, slot_plastic_, send_, recv_;
   struct GhostList {
     int rank;
     std::vector<std::uint32_t> spheres;
@@ -356,6 +357,7 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
   const std::size_t tasks = partitions_ + cross_blocks_;
   const std::size_t count = first_.size();
   const bool distributed = domain_ != nullptr;
+  const int me = rank_;
   const std::uint32_t* first = first_.data();
   const std::uint32_t* second = second_.data();
 #pragma omp for schedule(dynamic, 1)
@@ -391,7 +393,8 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
         for (std::size_t q = 0; q < m; ++q) {
           slot_elastic_[chunk + q] = results.elastic[q];
           slot_plastic_[chunk + q] = results.plastic[q];
-          slot_ratio2_[chunk + q] = results.ratio2[q];
+          // The strength ratio of the contacts this rank reports: a maximum, exact in any order.
+          if (owner(first[chunk + q]) == me) peak2 = std::max(peak2, results.ratio2[q]);
         }
       // The task's sums, in slot order, in the same loop as the forces, so that their chains of
       // dependent additions overlap with the scatter's work. The sums a step does not read are left
@@ -435,10 +438,10 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
       }
     }
     if (interior && begin < end) f[run] = run_f, t[run] = run_t;
+    task_peak2_[task] = peak2;  // distributed: over the held task's reported slots (share_step)
     if (distributed) continue;  // the held tasks are not the whole layout's: share_step sums
     task_elastic_[task] = elastic;
     task_plastic_[task] += plastic;
-    task_peak2_[task] = peak2;
   }
 }
 

@@ -70,6 +70,7 @@ void SphereSystem::split(Domain& domain) {
   if (3 * n > std::size_t(0x7fffffff))
     throw InputError(std::to_string(n) + " spheres: more than MPI's int counts address in one exchange");
   domain_ = &domain;
+  rank_ = me;
   ghost_layer_m_ = test_ghost_layer_m(), ghost_layer_rank_ = test_ghost_layer_rank();
   // Whole blocks in Morton order: rank r holds blocks [B r / N, B (r + 1) / N).
   sphere_counts_.assign(std::size_t(ranks), 0), sphere_displs_.assign(std::size_t(ranks), 0);
@@ -168,7 +169,7 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
   // The per-slot values are written by every step before they are read; they (and the owned
   // tasks' values) are allocated by the first step that needs them, not here: at setup the
   // critical step's Lanczos vectors would be held beside them (the peak, docs/mpi.md).
-  for (auto* values : {&slot_elastic_, &slot_plastic_, &slot_ratio2_, &owned_values_}) std::vector<double>().swap(*values);
+  for (auto* values : {&slot_elastic_, &slot_plastic_, &owned_values_}) std::vector<double>().swap(*values);
 
   // The elastic sum of each task of the whole layout is taken, in slot order, by the rank that
   // reports most of its slots (ties: the lowest); the reporters of its other slots send it
@@ -333,7 +334,8 @@ void SphereSystem::share_step(bool evaluate_energy) {
   const auto at = [](const std::vector<int>& v, int r) { return std::size_t(v[std::size_t(r)]); };
   double peak2 = 0, vmax2 = 0;
   std::size_t sliding = 0;
-  for (const std::uint32_t s : reported_) peak2 = std::max(peak2, slot_ratio2_[s]), sliding += slot_plastic_[s] != 0;
+  for (std::size_t t = 0; t < partitions_ + cross_blocks_; ++t) peak2 = std::max(peak2, task_peak2_[t]);
+  for (const std::uint32_t s : reported_) sliding += slot_plastic_[s] != 0;
   for (std::size_t b = own_block_begin_; b < own_block_end_; ++b) vmax2 = std::max(vmax2, sphere_block_vmax2_[b]);
   constexpr int kFixed = 4;
   const double fixed[kFixed] = {peak2, vmax2, double(kernel_->broken_bonds_in(reported_)), double(sliding)};  // counts exact below 2^53
