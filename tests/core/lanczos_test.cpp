@@ -30,7 +30,7 @@ void laplacian_rows(const double* whole_x, double* y, std::size_t first, std::si
 TEST(Lanczos, LaplacianTopEigenvalueIsTheClosedForm) {
   const double exact = 2.0 + 2.0 * std::cos(std::numbers::pi / double(kSize + 1));
   const auto r = largest_eigenvalue(kSize, [](const double* x, double* y) { laplacian_rows(x, y, 0, kSize); }, 150, 1e-10);
-  EXPECT_NEAR(r.ritz, exact, 1e-8 * exact);
+  EXPECT_NEAR(r.ritz, exact, 1e-13 * exact);  // 1.2e-15 measured: the Krylov space is the whole space
   EXPECT_LE(r.ritz, exact * (1 + 1e-14));
   EXPECT_GE(r.ritz + r.residual, exact * (1 - 1e-14));
 }

@@ -410,8 +410,8 @@ bool SphereSystem::has_non_finite_state() const {
   return domain_ ? domain_->sum(bad) > 0 : bad != 0;
 }
 
-// Distributed, a rank computes its own spheres' rows: from every bond with an end of its own, in
-// bond order (so each row sums the terms of one process in its order), with the other end's x
+// Distributed, a rank computes its own spheres' rows: from its held bonds (every bond with an end
+// of its own), in bond order (so each row sums the terms of one process in its order), with the other end's x
 // from its owner (ghost_rows).
 void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
   const std::size_t first = own_begin();
@@ -432,9 +432,8 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
     const double s = 1.0 / std::sqrt(part == 0 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
     for (int d = 0; d < 3; ++d) y[6 * (k - first) + 3 * std::size_t(part) + std::size_t(d)] -= s * g[d];  // K x = -(force)
   };
-  for (std::size_t b = 0; b < bonds_.size(); ++b) {
+  for_each_held_bond([&](std::size_t b) {
     const std::size_t i = bonds_.first[b], j = bonds_.second[b];
-    if (!is_own(i) && !is_own(j)) continue;
     const LinearBond lb = linear_bond(*this, b);
     Vec3 fi, mi, fj, mj;
     lb.forces(dof(i, 0), dof(i, 1), dof(j, 0), dof(j, 1), fi, mi, fj, mj);
@@ -442,7 +441,7 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
     add(i, 1, mi);
     add(j, 0, fj);
     add(j, 1, mj);
-  }
+  });
 }
 
 double SphereSystem::stiffness_dot(const double* a, const double* b) const {
@@ -457,9 +456,8 @@ double SphereSystem::stiffness_dot(const double* a, const double* b) const {
 double SphereSystem::scaled_stiffness_row_sum_bound() const {
   const std::size_t first = own_begin();
   std::vector<double> row(6 * (own_end() - first), 0.0);
-  for (std::size_t b = 0; b < bonds_.size(); ++b) {
+  for_each_held_bond([&](std::size_t b) {
     const std::size_t ends[2] = {bonds_.first[b], bonds_.second[b]};
-    if (!is_own(ends[0]) && !is_own(ends[1])) continue;
     const LinearBond lb = linear_bond(*this, b);
     double scale[12];
     for (int c = 0; c < 12; ++c) {
@@ -478,7 +476,7 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
         row[6 * (k - first) + std::size_t(r % 6)] += std::abs(entry) * scale[r] * scale[c];
       }
     }
-  }
+  });
   const double bound = row.empty() ? 0.0 : *std::max_element(row.begin(), row.end());
   return domain_ ? domain_->max(bound) : bound;  // a maximum: exact in any order
 }

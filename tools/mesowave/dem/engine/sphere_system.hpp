@@ -259,6 +259,12 @@ private:
   std::vector<double> bond_overlap0_;
   std::size_t held_bond(std::size_t b) const;
   void keep_held_bonds();
+  /// f(b) for every held bond, in bond order (the cross bonds all come before the range).
+  template <class F>
+  void for_each_held_bond(const F& f) const {
+    for (const std::uint32_t b : held_cross_bonds_) f(std::size_t(b));
+    for (std::size_t b = held_bond_begin_; b < held_bond_end_; ++b) f(b);
+  }
 
   std::vector<Vec3> x_, v_, w_, a_, theta_, f_ext_;
   std::vector<double> inv_mass_, inv_inertia_;
@@ -304,7 +310,7 @@ private:
   // spheres it sends there and those it receives from there) and the observed spheres (those
   // an actuator or sensor reads: every rank holds them; sorted by id, so by owner).
   Domain* domain_ = nullptr;
-  int rank_ = 0;  ///< domain_->rank(), for the step's inline code (which sees no Domain)
+  int rank_ = 0;  ///< domain_->rank(), also for the step's inline code (which sees no Domain)
   std::size_t own_begin_ = 0, own_end_ = 0, own_block_begin_ = 0, own_block_end_ = 0, ghosts_ = 0;
   std::size_t broken_ = 0;  ///< bonds broken on all ranks after the last step (shared with the motion)
   double vmax2_all_ = 0;    ///< the largest block bound of |v|^2 over all ranks after the last step

@@ -104,10 +104,7 @@ void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& ob
   broken_ = std::size_t(domain.sum(kernel_->broken_bonds_in(reported_)));
 }
 
-bool SphereSystem::held_here(std::uint32_t i, std::uint32_t j) const {
-  const int me = domain_->rank();
-  return owner(i) == me || owner(j) == me;
-}
+bool SphereSystem::held_here(std::uint32_t i, std::uint32_t j) const { return owner(i) == rank_ || owner(j) == rank_; }
 
 std::size_t SphereSystem::global_task_of(std::size_t s) const {
   if (s >= global_cross_begin_) return partitions_ + (s - global_cross_begin_) / kContactBlock;
