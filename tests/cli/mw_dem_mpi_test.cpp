@@ -1,12 +1,14 @@
 // mpirun -np N mw-dem run (docs/mpi.md): the same files, byte for byte, as one process, for
 // N = 1-4 ranks (oversubscribed on a small machine) - a wave in the linearised network and in
-// the full law, and a compression to failure (the same bonds broken, the same curve); the
-// options a distributed run does not take are refused in one line. The reference is the
+// the full law, and a compression to failure (the same bonds broken, the same curve); a
+// checkpoint is one process's file and restarts on any rank count; the options a distributed
+// run does not take are refused in one line. The reference is the
 // single-process engine itself, run without any MPI launcher.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -61,6 +63,18 @@ std::vector<std::string> with(std::vector<std::string> args, const std::vector<s
 
 // The 6-cell FCC block (864 spheres: four 256-sphere blocks, so four ranks each hold some).
 void write_block(const test::TempDir& dir) { dem::write_packing_file(dir / "block.h5", dem::testing::crushing_block(6)); }
+
+// crush.toml: the shared crushing scene on the block, made shorter for the larger block (the wall
+// 2.4 x faster, the stop 20 % past the peak): about 2,700 steps to failure.
+void write_crush_scene(const test::TempDir& dir) {
+  std::string scene = dem::testing::crushing_scene_toml((dir / "block.h5").string());
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"velocity_mm_s = 500.0", "velocity_mm_s = 1200.0"},
+                                 {"ramp_us = 20", "ramp_us = 10"}, {"stop_drop_pct = 50.0", "stop_drop_pct = 20.0"}}) {
+    ASSERT_NE(scene.find(from), std::string::npos) << from;
+    scene.replace(scene.find(from), from.size(), to);
+  }
+  test::write_file(dir / "crush.toml", scene);
+}
 
 // A burst on face z- of the block, accelerations on the opposite face and a side face.
 std::string wave_scene(const std::filesystem::path& packing) {
@@ -170,19 +184,11 @@ TEST(MwDemMpi, AFullLawWaveOnTwoToFourRanksWritesTheSameFilesAsOneProcess) {
   expect_same_files_on_ranks(dir, "wave.toml", {"--model", "full"}, {2, 3, 4});
 }
 
-// Bonds break, contacts are detected and relaid out, friction dissipates: the same bits. The
-// shared crushing scene made shorter for the larger block (the wall 2.4 x faster, the stop
-// 20 % past the peak): about 2,700 steps.
+// Bonds break, contacts are detected and relaid out, friction dissipates: the same bits.
 TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesTheSameCurve) {
   test::TempDir dir;
   write_block(dir);
-  std::string scene = dem::testing::crushing_scene_toml((dir / "block.h5").string());
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"velocity_mm_s = 500.0", "velocity_mm_s = 1200.0"},
-                                 {"ramp_us = 20", "ramp_us = 10"}, {"stop_drop_pct = 50.0", "stop_drop_pct = 20.0"}}) {
-    ASSERT_NE(scene.find(from), std::string::npos) << from;
-    scene.replace(scene.find(from), from.size(), to);
-  }
-  test::write_file(dir / "crush.toml", scene);
+  write_crush_scene(dir);
   expect_same_files_on_ranks(dir, "crush.toml", {}, {2, 3, 4}, true);
   const auto j = nlohmann::json::parse(test::read_file(dir / "one.json"));
   EXPECT_GT(j["broken_bonds"].get<int>(), 100);
@@ -192,15 +198,51 @@ TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesT
     EXPECT_EQ(j["broken_bonds"], nlohmann::json::parse(test::read_file(dir / np))["broken_bonds"]) << np;
 }
 
+// A checkpoint written on several ranks holds the whole layout in its slot order: it is the
+// same file, byte for byte, as one process's at that step, and a restart on another rank count
+// writes the files of the run that never stopped - bonds broken before and after it, contacts
+// detected anew, friction (the compression below), and the moment law's bending and twisting
+// moments (a wave). The checkpoint has no rank count of its own.
+TEST(MwDemMpi, ACheckpointOfTwoRanksIsOneProcesssAndRestartsOnThreeToTheSameFiles) {
+  test::TempDir dir;
+  write_block(dir);
+  write_crush_scene(dir);
+  std::string moment = wave_scene(dir / "block.h5");
+  moment.replace(moment.find("bond_factor = 1.1"), 17, "bond_factor = 1.1\nlaw = \"cohesive_moment\"");
+  test::write_file(dir / "moment.toml", moment);
+  for (const auto& [scene, every, extra] : {std::tuple<std::string, std::string, std::vector<std::string>>{"crush", "1000", {}},
+                                            {"moment", "150", {"--model", "full"}}}) {
+    const auto outputs = [&, scene = scene](const std::string& tag) {
+      return std::vector<std::string>{"--signals", (dir / (scene + tag + ".h5")).string(), "--signals-csv",
+                                      (dir / (scene + tag + ".csv")).string()};
+    };
+    const std::vector<std::string> base = with({"run", (dir / (scene + ".toml")).string(), "--quiet", "--threads", "1"}, extra);
+    const auto checkpoint = [&, scene = scene, every = every](const std::string& tag) {
+      return std::vector<std::string>{"--checkpoint", (dir / (scene + tag + ".ckpt.h5")).string(), "--checkpoint-every-steps", every};
+    };
+    const auto one = run_tool("mw-dem", with(with(base, outputs("-one")), checkpoint("-one")));
+    ASSERT_EQ(one.exit_status, 0) << scene << ": " << one.err;
+    const auto two = mpirun(2, with(with(base, outputs("-np2")), checkpoint("-np2")));
+    ASSERT_EQ(two.exit_status, 0) << scene << ": " << two.err;
+    EXPECT_EQ(test::read_file(dir / (scene + "-one.h5")), test::read_file(dir / (scene + "-np2.h5"))) << scene;
+    EXPECT_EQ(test::read_file(dir / (scene + "-one.ckpt.h5")), test::read_file(dir / (scene + "-np2.ckpt.h5"))) << scene;  // cmp
+    const auto again = mpirun(3, with(with(base, outputs("-np3")), {"--restart", (dir / (scene + "-np2.ckpt.h5")).string()}));
+    ASSERT_EQ(again.exit_status, 0) << scene << ": " << again.err;
+    EXPECT_EQ(test::read_file(dir / (scene + "-one.h5")), test::read_file(dir / (scene + "-np3.h5"))) << scene;
+    EXPECT_EQ(test::read_file(dir / (scene + "-one.csv")), test::read_file(dir / (scene + "-np3.csv"))) << scene;
+  }
+}
+
 // What a distributed run does not do: one line, exit 1, nothing written.
-TEST(MwDemMpi, CheckpointsAndMoreRanksThanSphereBlocksAreRefusedInOneLine) {
+TEST(MwDemMpi, ACheckpointOnlyOnASignalAndMoreRanksThanSphereBlocksAreRefusedInOneLine) {
   test::TempDir dir;
   write_block(dir);
   test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
+  // A signal reaches each rank at its own step (and ends them all at once): every N steps only.
   const auto ckpt = mpirun(2, {"run", (dir / "wave.toml").string(), "--quiet", "--signals", (dir / "s.h5").string(),
                                "--checkpoint", (dir / "c.h5").string(), "--db", (dir / "p.sqlite").string()});
   EXPECT_EQ(ckpt.exit_status, 1);
-  EXPECT_NE(ckpt.err.find("--checkpoint"), std::string::npos) << ckpt.err;
+  EXPECT_NE(ckpt.err.find("give --checkpoint-every-steps"), std::string::npos) << ckpt.err;
   // Every rank fails alike: one record, rank 0's.
   const auto ckpt_runs = recorded_runs(dir / "p.sqlite");
   ASSERT_EQ(ckpt_runs.size(), 1u);

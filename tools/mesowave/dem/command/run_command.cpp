@@ -59,7 +59,8 @@ void add_run_options(CLI::App& run_cmd, RunCommandLine& v) {
                      "broken_bonds); the signal file holds them too (test.stress, test.axial_strain, ...)");
   auto* checkpoint_opt = run_cmd.add_option("--checkpoint", v.checkpoint_path,
                                             "Checkpoint (HDF5, written whole) on SIGTERM/SIGINT before the run stops, "
-                                            "and every --checkpoint-every-steps steps");
+                                            "and every --checkpoint-every-steps steps (on several MPI ranks: only "
+                                            "these); a restart may run on any rank count");
   run_cmd.add_option("--checkpoint-every-steps", v.checkpoint_every, "Steps between checkpoints")
       ->check(CLI::PositiveNumber)
       ->needs(checkpoint_opt);
@@ -205,10 +206,14 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
   const bool root = !domain || domain->rank() == 0;
   const bool intact_files = !v.intact_checkpoint_path.empty() || !v.restart_stronger_path.empty();
   if (v.static_solve && intact_files) throw InputError("--static steps nothing: --intact-checkpoint and --restart-stronger are for a stepped run");
-  if (domain && (v.static_solve || !v.frequencies_kHz.empty() || !v.checkpoint_path.empty() || !v.restart_path.empty() ||
-                 intact_files))
-    throw InputError("on several MPI ranks mw-dem runs the scene directly: --static, --frequencies-kHz, --checkpoint "
-                     "and --restart run on one process (docs/mpi.md)");
+  if (domain && (v.static_solve || !v.frequencies_kHz.empty()))
+    throw InputError("on several MPI ranks mw-dem runs the scene directly: --static and --frequencies-kHz run on one "
+                     "process (docs/mpi.md)");
+  // A signal reaches each rank at its own step and ends them all at once (MPI_Abort, docs/mpi.md):
+  // a checkpoint it asked for could not be one state.
+  if (domain && !v.checkpoint_path.empty() && v.checkpoint_every <= 0)
+    throw InputError("on several MPI ranks --checkpoint is written every N steps only, not on a signal (which ends "
+                     "every rank at once): give --checkpoint-every-steps");
   if (v.static_solve) return run_static(v, in, run, threads_reason);
 
   SimulationOptions options;
@@ -235,13 +240,16 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
   if (!v.frequencies_kHz.empty()) return run_superposed_set(v, in, options, progress, run, threads_reason);
 
   if (!v.checkpoint_path.empty() || !v.restart_path.empty()) {
-    const auto written = [&](std::int64_t step) {
+    const auto written = [&, root](std::int64_t step) {
       run.param("checkpoint_step", step);  // recorded also when the run is interrupted
       run.keep_on_interrupt(v.checkpoint_path, "a checkpoint at step " + std::to_string(step));
-      if (app::interrupt_signal())
+      if (app::interrupt_signal() && root)
         std::cerr << "mw-dem: " << v.checkpoint_path.string() << " holds step " << step << "; continue with --restart\n";
     };
-    options.checkpoint = {v.checkpoint_path, v.checkpoint_every, [] { return app::interrupt_signal() != 0; },
+    // One process: also when a signal asks (the run then ends). Several ranks: every N steps only.
+    std::function<bool()> requested;
+    if (!domain) requested = [] { return app::interrupt_signal() != 0; };
+    options.checkpoint = {v.checkpoint_path, v.checkpoint_every, requested,
                           run_identity(v.scene_path, in.scene, v.overrides, v.model), written};
   }
   const CheckpointIdentity identity = run_identity(v.scene_path, in.scene, v.overrides, v.model);

@@ -66,15 +66,19 @@ std::size_t CohesiveFrictionalContact::broken_bonds_in(const std::vector<std::ui
   return broken;
 }
 
+// In the whole layout's slot order (SphereSystem::write_slots), so that a checkpoint does not
+// depend on the rank count that wrote it, nor binds the one that reads it.
 void CohesiveFrictionalContact::save_state(const SphereSystem& system, StateGroup& group) const {
   const std::size_t m = bond_.size();
-  group.write("first", std::vector<std::uint32_t>(system.first(), system.first() + m));
-  group.write("second", std::vector<std::uint32_t>(system.second(), system.second() + m));
-  group.write("normal_x", nx_), group.write("normal_y", ny_), group.write("normal_z", nz_);
-  group.write("shear_x_N", sx_), group.write("shear_y_N", sy_), group.write("shear_z_N", sz_);
-  group.write("overlap0_m", overlap0_);
-  group.write("bond", bond_);
-  group.write("cohesive", cohesive_);
+  system.write_slots(group, "first", std::vector<std::uint32_t>(system.first(), system.first() + m));
+  system.write_slots(group, "second", std::vector<std::uint32_t>(system.second(), system.second() + m));
+  system.write_slots(group, "normal_x", nx_), system.write_slots(group, "normal_y", ny_);
+  system.write_slots(group, "normal_z", nz_);
+  system.write_slots(group, "shear_x_N", sx_), system.write_slots(group, "shear_y_N", sy_);
+  system.write_slots(group, "shear_z_N", sz_);
+  system.write_slots(group, "overlap0_m", overlap0_);
+  system.write_slots(group, "bond", bond_);
+  system.write_slots(group, "cohesive", cohesive_);
   group.write("travelled_m", travelled_);
   group.write("detection_passes", std::int64_t(detection_passes_));
 }
@@ -88,7 +92,8 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
                               std::to_string(n) + " spheres: the checkpoint is not from this run");
   const auto order = system.set_contacts(first, second, moments());
   for (std::size_t s = 0; s < order.size(); ++s)
-    if (order[s] != s) throw InputError("checkpoint " + group.where() + ": its contact layout is not this packing's");
+    if (order[s] != system.global_slot(s))
+      throw InputError("checkpoint " + group.where() + ": its contact layout is not this packing's");
   const std::size_t m = first.size();
   nx_.assign(m, 0), ny_.assign(m, 0), nz_.assign(m, 0), sx_.assign(m, 0), sy_.assign(m, 0), sz_.assign(m, 0);
   overlap0_.assign(m, 0), cohesive_.assign(m, 0);
@@ -114,6 +119,9 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
   }
   if (!valid || bonded != nb)
     throw InputError("checkpoint " + group.where() + ": its bonds are not this packing's " + std::to_string(nb));
+  // Read whole (checked whole above); a rank keeps its held slots' part.
+  for (auto* values : {&nx_, &ny_, &nz_, &sx_, &sy_, &sz_, &overlap0_, &cohesive_}) *values = system.held_slots(std::move(*values));
+  bond_ = system.held_slots(std::move(bond_));
   travelled_ = group.read_double("travelled_m");
   detection_passes_ = std::size_t(group.read_int64("detection_passes"));
 }

@@ -20,6 +20,13 @@
 // Snapshots (--snapshots) of a restarted run begin at the restart step: the
 // interrupted run's were discarded with its other outputs.
 //
+// On several MPI ranks (docs/mpi.md) rank 0 writes the file one process would
+// write at that step: the contact law's per-slot arrays are gathered in the
+// whole layout's slot order (SphereSystem::write_slots), so the file does not
+// say how many ranks wrote it, and any rank count restarts it (every rank reads
+// it whole and keeps its slots: SphereSystem::held_slots). There a checkpoint is
+// written every N steps only, not on a signal, which ends every rank at once.
+//
 // A run with stronger bonds may start from an intact checkpoint of a run with
 // weaker ones (mw-dem run --intact-checkpoint, --restart-stronger; issue 19):
 // while every bond holds, the strengths T and C enter the law (Eqs. 4-6,

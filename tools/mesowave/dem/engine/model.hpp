@@ -104,9 +104,12 @@ public:
   /// Everything that changes from step to step (positions, velocities,
   /// energies, the contact law's state), exactly (state_group.hpp), so that a
   /// run restarted from it continues to the same bits. Called between steps.
+  /// Distributed: on every rank (collective), after collect_state() and
+  /// collect_energy(); rank 0's `group` writes, the others' writes nowhere.
   virtual void save_state(StateGroup& group) const = 0;
   /// Reads what save_state wrote, into a model built from the same scene and
-  /// packing; InputError if the state does not fit it.
+  /// packing (distributed: on every rank, for any rank count); InputError if
+  /// the state does not fit it.
   virtual void load_state(const StateGroup& group) = 0;
 
   /// Bytes held by the model's arrays.

@@ -384,9 +384,13 @@ RunReport Simulation::run() {
   return r;
 }
 
-// The run's checkpoint (checkpoint.hpp): the loop's state, then each part's own.
-void Simulation::save_checkpoint(const std::filesystem::path& file, const CheckpointIdentity& identity) const {
-  write_checkpoint_file(file, identity, [&](StateGroup& root) {
+// The run's checkpoint (checkpoint.hpp): the loop's state, then each part's own. Distributed,
+// every rank takes part (the model gathers its state to rank 0, which writes the file; the
+// actuators and sensors run alike on every rank, so rank 0's state is theirs).
+void Simulation::save_checkpoint(const std::filesystem::path& file, const CheckpointIdentity& identity) {
+  model_->collect_state();
+  model_->collect_energy();
+  const auto body = [&](StateGroup& root) {
     StateGroup run = root.create("run");
     run.write("steps_done", loop_.done);
     run.write("steps", steps_);
@@ -409,7 +413,12 @@ void Simulation::save_checkpoint(const std::filesystem::path& file, const Checkp
       g.write_text("name", sensors_[i]->name());
       sensors_[i]->save_state(g);
     }
-  });
+  };
+  if (options_.domain && options_.domain->rank() != 0) {
+    StateGroup nowhere = StateGroup::nowhere();
+    return body(nowhere);
+  }
+  write_checkpoint_file(file, identity, body);
 }
 
 void Simulation::restore(const std::filesystem::path& file, const CheckpointIdentity& identity) {

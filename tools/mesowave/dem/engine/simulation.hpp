@@ -113,7 +113,7 @@ public:
   /// Steps done so far (restore() sets it; 0 for a fresh run).
   std::int64_t steps_done() const { return loop_.done; }
   /// Writes the state after steps_done() steps to `file` (checkpoint.hpp).
-  void save_checkpoint(const std::filesystem::path& file, const CheckpointIdentity& identity) const;
+  void save_checkpoint(const std::filesystem::path& file, const CheckpointIdentity& identity);
   /// Reads a checkpoint of this run (InputError if it is of another, checkpoint.hpp); call before run().
   /// After an InputError the Simulation may hold part of the checkpoint: build a new one.
   void restore(const std::filesystem::path& file, const CheckpointIdentity& identity);

@@ -488,8 +488,9 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
 // sums kept per task and per sphere block, in the order they are added - and
 // the law's state. The law goes first: a new contact layout resets the per-task
 // plastic sums, which are then read over it.
+// Distributed, the caller has collected every sphere's state and every block's damping
+// (Model::save_state): the spheres' arrays are whole on every rank, and rank 0 writes them.
 void SphereSystem::save_state(StateGroup& group) const {
-  if (domain_) throw InputError("checkpoints are not written by a run on several MPI ranks (docs/mpi.md): run it on one");
   group.write("x", x_);
   group.write("v", v_);
   group.write("w", w_);
@@ -507,8 +508,8 @@ void SphereSystem::save_state(StateGroup& group) const {
   group.write("task_plastic_J", task_plastic_);
 }
 
+// Every rank reads the whole file: the spheres' arrays are whole, the law keeps its held slots.
 void SphereSystem::load_state(const StateGroup& group) {
-  if (domain_) throw InputError("a run on several MPI ranks does not restart from a checkpoint (docs/mpi.md): run it on one");
   kernel_->load_state(*this, group.open("law"));
   group.read_into("x", x_);
   group.read_into("v", v_);
@@ -523,6 +524,10 @@ void SphereSystem::load_state(const StateGroup& group) {
   energy_.external_work_J = group.read_double("external_work_J");
   group.read_into("sphere_block_damping_J", sphere_block_damping_);
   group.read_into("task_plastic_J", task_plastic_);
+  if (domain_) {
+    broken_ = std::size_t(domain_->sum(kernel_->broken_bonds_in(reported_)));
+    ghosts_stale_ = false;  // every rank read every sphere's state
+  }
 }
 
 std::size_t SphereSystem::memory_bytes() const {

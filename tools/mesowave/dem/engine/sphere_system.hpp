@@ -153,6 +153,23 @@ public:
   std::size_t slot_count() const { return first_.size(); }
   /// The contacts of the whole layout (all ranks').
   std::size_t global_slot_count() const { return global_slots_; }
+  /// Held slot s's place in the whole layout (s in one process).
+  std::uint32_t global_slot(std::size_t s) const { return domain_ ? global_slot_[s] : std::uint32_t(s); }
+  /// A law's checkpoint of a per-slot array (save_state): written in the whole layout's slot
+  /// order, whichever ranks hold the slots. Distributed (collective), each rank sends its
+  /// reported slots' values (every slot once) to rank 0, which writes them; the other ranks'
+  /// `group` writes nowhere (StateGroup::nowhere).
+  void write_slots(StateGroup& group, const std::string& name, const std::vector<double>& held) const;
+  void write_slots(StateGroup& group, const std::string& name, const std::vector<std::uint32_t>& held) const;
+  /// A restart (load_state, once set_contacts has laid out the checkpoint's contacts): the held
+  /// slots' part of a whole layout's array, read whole (any rank count may restart it).
+  template <class T>
+  std::vector<T> held_slots(std::vector<T> whole) const {
+    if (!domain_) return whole;
+    std::vector<T> held(global_slot_.size());
+    for (std::size_t s = 0; s < held.size(); ++s) held[s] = whole[global_slot_[s]];
+    return held;
+  }
   std::uint32_t first(std::size_t slot) const { return first_[slot]; }
   std::uint32_t second(std::size_t slot) const { return second_[slot]; }
   Vec3 position(std::size_t k) const { return x_[k]; }
@@ -289,8 +306,8 @@ private:
   // split. The held slots' places in it (global_slot_) are kept on several ranks only.
   std::size_t global_slots_ = 0, global_cross_begin_ = 0, global_cross_blocks_ = 0;
   std::vector<std::uint32_t> global_interior_start_, global_slot_;
-  std::uint32_t global_slot(std::size_t s) const { return global_slot_.empty() ? std::uint32_t(s) : global_slot_[s]; }
   std::size_t global_task_of(std::size_t global_slot) const;
+  std::vector<double> gathered_slots(const std::vector<double>& held) const;  ///< write_slots' gather
   Incidence cross_incidence_;                  ///< entries index out_ (slot - cross_begin_)
   std::vector<ContactOut> out_;
   std::vector<Vec3> out_moment_;  ///< moment of each contact between partitions (laws with moments only)

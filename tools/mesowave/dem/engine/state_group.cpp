@@ -28,6 +28,7 @@ StateGroup::~StateGroup() {
 }
 
 StateGroup StateGroup::create(const std::string& name) {
+  if (id_ < 0) return nowhere();
   io::h5::Handle g = io::h5::create_group(id_, name);
   H5Iinc_ref(g.id());  // the StateGroup holds one reference, the Handle drops its own
   return StateGroup(g.id(), child_path(where_, name));
@@ -41,16 +42,20 @@ StateGroup StateGroup::open(const std::string& name) const {
   return StateGroup(g.id(), at);
 }
 
-void StateGroup::write(const std::string& name, double value) { io::h5::write_doubles(id_, name, {value}); }
-void StateGroup::write(const std::string& name, std::int64_t value) { io::h5::write_int64s(id_, name, {value}); }
+void StateGroup::write(const std::string& name, double value) {
+  if (id_ >= 0) io::h5::write_doubles(id_, name, {value});
+}
+void StateGroup::write(const std::string& name, std::int64_t value) {
+  if (id_ >= 0) io::h5::write_int64s(id_, name, {value});
+}
 void StateGroup::write(const std::string& name, const std::vector<double>& values) {
-  io::h5::write_doubles(id_, name, values);
+  if (id_ >= 0) io::h5::write_doubles(id_, name, values);
 }
 void StateGroup::write(const std::string& name, const std::vector<Vec3>& values) {
-  io::h5::write_doubles(id_, name, flat(values), 3);
+  if (id_ >= 0) io::h5::write_doubles(id_, name, flat(values), 3);
 }
 void StateGroup::write(const std::string& name, const std::vector<std::uint32_t>& values) {
-  io::h5::write_int64s(id_, name, std::vector<std::int64_t>(values.begin(), values.end()));
+  if (id_ >= 0) io::h5::write_int64s(id_, name, std::vector<std::int64_t>(values.begin(), values.end()));
 }
 
 std::vector<double> StateGroup::read_doubles(const std::string& name) const {
@@ -72,7 +77,9 @@ std::vector<std::uint32_t> StateGroup::read_uint32s(const std::string& name) con
   return out;
 }
 
-void StateGroup::write_text(const std::string& key, const std::string& text) { io::h5::set_attribute(id_, key, text); }
+void StateGroup::write_text(const std::string& key, const std::string& text) {
+  if (id_ >= 0) io::h5::set_attribute(id_, key, text);
+}
 
 void StateGroup::expect_text(const std::string& key, const std::string& text) const {
   const std::string held = io::h5::has_attribute(id_, key) ? io::h5::string_attribute(id_, key) : "";

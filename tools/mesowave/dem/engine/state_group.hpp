@@ -24,6 +24,9 @@ class StateGroup {
 public:
   StateGroup(std::int64_t hdf5_id, std::string where) : id_(hdf5_id), where_(std::move(where)) {}
   ~StateGroup();
+  /// A group that writes nothing (nor do its sub-groups): on a distributed run the ranks but 0
+  /// save their state through it, so that they take part in the gathers of what rank 0 writes.
+  static StateGroup nowhere() { return StateGroup(-1, ""); }
   StateGroup(StateGroup&& other) noexcept : id_(other.id_), where_(std::move(other.where_)) { other.id_ = -1; }
   StateGroup(const StateGroup&) = delete;
   StateGroup& operator=(const StateGroup&) = delete;

@@ -34,6 +34,10 @@ public:
   /// recv gets every rank's `send` (counts[r] doubles each), in rank order at displs[r].
   virtual void gather_all(const double* send, int count, double* recv, const std::vector<int>& counts,
                           const std::vector<int>& displs) = 0;
+  /// Rank 0's recv gets every rank's `send` (counts[r] doubles each, in rank order at displs[r]);
+  /// the other ranks' recv is not touched (what only rank 0 writes: a checkpoint).
+  virtual void gather(const double* send, int count, double* recv, const std::vector<int>& counts,
+                      const std::vector<int>& displs) = 0;
   /// Every send goes to its rank, every receive is filled from its rank; both sides know
   /// the counts (the ghost lists are built on both from the same layout). Not collective:
   /// only the ranks named take part. Returns when all have completed.

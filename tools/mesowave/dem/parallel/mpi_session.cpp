@@ -39,6 +39,10 @@ public:
                   const std::vector<int>& displs) override {
     MPI_Allgatherv(send, count, MPI_DOUBLE, recv, counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
   }
+  void gather(const double* send, int count, double* recv, const std::vector<int>& counts,
+              const std::vector<int>& displs) override {
+    MPI_Gatherv(send, count, MPI_DOUBLE, recv, counts.data(), displs.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  }
   void exchange(const std::vector<Message>& sends, const std::vector<Message>& receives) override {
     requests_.resize(sends.size() + receives.size());
     std::size_t k = 0;

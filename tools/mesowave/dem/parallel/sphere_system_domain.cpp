@@ -31,6 +31,7 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
+#include "mesowave/dem/engine/state_group.hpp"
 #include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
@@ -433,6 +434,44 @@ void SphereSystem::collect_energy() {
 }
 
 std::size_t SphereSystem::broken_bond_count() const { return domain_ ? broken_ : kernel_->broken_bond_count(); }
+
+// A checkpoint's per-slot array, whole on rank 0 (empty on the others): each rank's reported
+// slots (every slot of the whole layout once) as (slot, value), gathered there and put in place.
+std::vector<double> SphereSystem::gathered_slots(const std::vector<double>& held) const {
+  const int ranks = domain_->size();
+  std::vector<double> send;
+  send.reserve(2 * reported_.size());
+  for (const std::uint32_t s : reported_) send.push_back(double(global_slot_[s])), send.push_back(held[s]);  // exact below 2^53
+  const double mine = double(send.size());
+  std::vector<double> sizes(static_cast<std::size_t>(ranks));
+  std::vector<int> ones(static_cast<std::size_t>(ranks), 1), counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
+  for (int r = 0; r < ranks; ++r) displs[std::size_t(r)] = r;
+  domain_->gather_all(&mine, 1, sizes.data(), ones, displs);
+  std::size_t total = 0;
+  for (int r = 0; r < ranks; ++r) {
+    counts[std::size_t(r)] = int(sizes[std::size_t(r)]), displs[std::size_t(r)] = int(total);
+    total += std::size_t(sizes[std::size_t(r)]);
+  }
+  if (total > std::size_t(0x7fffffff)) throw InputError("a checkpoint's contacts exceed MPI's int counts in one gather");
+  const bool root = domain_->rank() == 0;
+  std::vector<double> pairs(root ? total : 0);
+  domain_->gather(send.data(), int(send.size()), pairs.data(), counts, displs);
+  if (!root) return {};
+  if (total != 2 * global_slots_) throw std::logic_error("SphereSystem::gathered_slots: the reporters do not cover the layout");
+  std::vector<double> whole(global_slots_);
+  for (std::size_t k = 0; k < total; k += 2) whole[std::size_t(pairs[k])] = pairs[k + 1];
+  return whole;
+}
+
+void SphereSystem::write_slots(StateGroup& group, const std::string& name, const std::vector<double>& held) const {
+  group.write(name, domain_ ? gathered_slots(held) : held);  // the other ranks' group writes nowhere
+}
+
+void SphereSystem::write_slots(StateGroup& group, const std::string& name, const std::vector<std::uint32_t>& held) const {
+  if (!domain_) return group.write(name, held);
+  const std::vector<double> whole = gathered_slots(std::vector<double>(held.begin(), held.end()));  // exact
+  group.write(name, std::vector<std::uint32_t>(whole.begin(), whole.end()));
+}
 
 std::string SphereSystem::distribution() const {
   if (!domain_) return {};
