@@ -95,12 +95,8 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
     if (order[s] != system.global_slot(s))
       throw InputError("checkpoint " + group.where() + ": its contact layout is not this packing's");
   const std::size_t m = first.size();
-  nx_.assign(m, 0), ny_.assign(m, 0), nz_.assign(m, 0), sx_.assign(m, 0), sy_.assign(m, 0), sz_.assign(m, 0);
-  overlap0_.assign(m, 0), cohesive_.assign(m, 0);
-  group.read_into("normal_x", nx_), group.read_into("normal_y", ny_), group.read_into("normal_z", nz_);
-  group.read_into("shear_x_N", sx_), group.read_into("shear_y_N", sy_), group.read_into("shear_z_N", sz_);
-  group.read_into("overlap0_m", overlap0_);
-  group.read_into("cohesive", cohesive_);
+  std::vector<double> cohesive(m);
+  group.read_into("cohesive", cohesive);
   bond_ = group.read_uint32s("bond");
   // Each bond once, in the slot of its own pair; cohesion only where a bond is (0 or 1).
   const BondNetwork& bonds = system.bonds();
@@ -110,18 +106,23 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
   for (std::size_t s = 0; valid && s < m; ++s) {
     const std::uint32_t b = bond_[s];
     if (b == kNoBond) {
-      valid = cohesive_[s] == 0.0;
+      valid = cohesive[s] == 0.0;
       continue;
     }
     valid = b < nb && !placed[b] && bonds.first[b] == first[s] && bonds.second[b] == second[s] &&
-            (cohesive_[s] == 0.0 || cohesive_[s] == 1.0);
+            (cohesive[s] == 0.0 || cohesive[s] == 1.0);
     if (valid) placed[b] = 1, ++bonded;
   }
   if (!valid || bonded != nb)
     throw InputError("checkpoint " + group.where() + ": its bonds are not this packing's " + std::to_string(nb));
-  // Read whole (checked whole above); a rank keeps its held slots' part.
-  for (auto* values : {&nx_, &ny_, &nz_, &sx_, &sy_, &sz_, &overlap0_, &cohesive_}) *values = system.held_slots(std::move(*values));
+  // Checked whole; a rank keeps its held slots' part, and reads the rest one array at a time.
   bond_ = system.held_slots(std::move(bond_));
+  cohesive_ = system.held_slots(std::move(cohesive));
+  nx_ = system.read_slots(group, "normal_x"), ny_ = system.read_slots(group, "normal_y");
+  nz_ = system.read_slots(group, "normal_z");
+  sx_ = system.read_slots(group, "shear_x_N"), sy_ = system.read_slots(group, "shear_y_N");
+  sz_ = system.read_slots(group, "shear_z_N");
+  overlap0_ = system.read_slots(group, "overlap0_m");
   travelled_ = group.read_double("travelled_m");
   detection_passes_ = std::size_t(group.read_int64("detection_passes"));
 }

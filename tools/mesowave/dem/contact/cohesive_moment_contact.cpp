@@ -93,12 +93,8 @@ void CohesiveMomentContact::load_state(SphereSystem& system, const StateGroup& g
   CohesiveFrictionalContact::load_state(system, group);
   const char* axes[3] = {"x", "y", "z"};
   for (int d = 0; d < 3; ++d) {
-    mb_[d].assign(system.global_slot_count(), 0.0);
-    mt_[d].assign(system.global_slot_count(), 0.0);
-    group.read_into(std::string("bending_") + axes[d] + "_N_m", mb_[d]);
-    group.read_into(std::string("twisting_") + axes[d] + "_N_m", mt_[d]);
-    mb_[d] = system.held_slots(std::move(mb_[d]));
-    mt_[d] = system.held_slots(std::move(mt_[d]));
+    mb_[d] = system.read_slots(group, std::string("bending_") + axes[d] + "_N_m");
+    mt_[d] = system.read_slots(group, std::string("twisting_") + axes[d] + "_N_m");
   }
 }
 

@@ -508,6 +508,12 @@ void SphereSystem::save_state(StateGroup& group) const {
   group.write("task_plastic_J", task_plastic_);
 }
 
+std::vector<double> SphereSystem::read_slots(const StateGroup& group, const std::string& name) const {
+  std::vector<double> whole(global_slots_);
+  group.read_into(name, whole);
+  return held_slots(std::move(whole));
+}
+
 // Every rank reads the whole file: the spheres' arrays are whole, the law keeps its held slots.
 void SphereSystem::load_state(const StateGroup& group) {
   kernel_->load_state(*this, group.open("law"));

@@ -162,7 +162,9 @@ public:
   void write_slots(StateGroup& group, const std::string& name, const std::vector<double>& held) const;
   void write_slots(StateGroup& group, const std::string& name, const std::vector<std::uint32_t>& held) const;
   /// A restart (load_state, once set_contacts has laid out the checkpoint's contacts): the held
-  /// slots' part of a whole layout's array, read whole (any rank count may restart it).
+  /// slots' part of the whole layout's array `name` (InputError if its length is not the
+  /// layout's), or of an array read whole; any rank count may restart a checkpoint.
+  std::vector<double> read_slots(const StateGroup& group, const std::string& name) const;
   template <class T>
   std::vector<T> held_slots(std::vector<T> whole) const {
     if (!domain_) return whole;
