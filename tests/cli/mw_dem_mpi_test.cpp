@@ -1,12 +1,16 @@
 // mpirun -np N mw-dem run (docs/mpi.md): the same files, byte for byte, as one process, for
 // N = 1-4 ranks (oversubscribed on a small machine) - a wave in the linearised network and in
 // the full law, and a compression to failure (the same bonds broken, the same curve); a
-// checkpoint is one process's file and restarts on any rank count; the options a distributed
-// run does not take are refused in one line. The reference is the
+// checkpoint is one process's file and restarts on any rank count, also one a signal to a
+// single rank asked for; the options a distributed run does not take are refused in one line. The reference is the
 // single-process engine itself, run without any MPI launcher.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+
+#include <chrono>
 #include <filesystem>
+#include <future>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -33,9 +37,10 @@ const std::vector<std::string> kMpiEnv = {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLO
 
 // `env`: more variables for the ranks. Under `timeout`, so that ranks left waiting by a failed
 // one end the test (exit 124) instead of hanging it.
-test::ToolResult mpirun(int ranks, const std::vector<std::string>& args, const std::vector<std::string>& env = {}) {
-  std::vector<std::string> command = {"120", "/usr/bin/mpirun", "--oversubscribe", "-np", std::to_string(ranks),
-                                      test::tool_path("mw-dem").string()};
+// `program`: what each rank runs, mw-dem unless given.
+test::ToolResult mpirun(int ranks, const std::vector<std::string>& args, const std::vector<std::string>& env = {},
+                        const std::string& program = test::tool_path("mw-dem").string()) {
+  std::vector<std::string> command = {"120", "/usr/bin/mpirun", "--oversubscribe", "-np", std::to_string(ranks), program};
   command.insert(command.end(), args.begin(), args.end());
   std::vector<std::string> environment = kMpiEnv;
   environment.insert(environment.end(), env.begin(), env.end());
@@ -218,44 +223,88 @@ TEST(MwDemMpi, ACheckpointOfTwoRanksIsOneProcesssAndRestartsOnThreeToTheSameFile
     };
     const std::vector<std::string> base = with({"run", (dir / (scene + ".toml")).string(), "--quiet", "--threads", "1"}, extra);
     const auto checkpoint = [&, scene = scene, every = every](const std::string& tag) {
-      return std::vector<std::string>{"--checkpoint", (dir / (scene + tag + ".ckpt.h5")).string(), "--checkpoint-every-steps", every};
+      return std::vector<std::string>{"--checkpoint", (dir / (scene + tag + ".refused.h5")).string(), "--checkpoint-every-steps", every};
     };
     const auto one = run_tool("mw-dem", with(with(base, outputs("-one")), checkpoint("-one")));
     ASSERT_EQ(one.exit_status, 0) << scene << ": " << one.err;
     const auto two = mpirun(2, with(with(base, outputs("-np2")), checkpoint("-np2")));
     ASSERT_EQ(two.exit_status, 0) << scene << ": " << two.err;
     EXPECT_EQ(test::read_file(dir / (scene + "-one.h5")), test::read_file(dir / (scene + "-np2.h5"))) << scene;
-    EXPECT_EQ(test::read_file(dir / (scene + "-one.ckpt.h5")), test::read_file(dir / (scene + "-np2.ckpt.h5"))) << scene;  // cmp
-    const auto again = mpirun(3, with(with(base, outputs("-np3")), {"--restart", (dir / (scene + "-np2.ckpt.h5")).string()}));
+    EXPECT_EQ(test::read_file(dir / (scene + "-one.refused.h5")), test::read_file(dir / (scene + "-np2.refused.h5"))) << scene;  // cmp
+    const auto again = mpirun(3, with(with(base, outputs("-np3")), {"--restart", (dir / (scene + "-np2.refused.h5")).string()}));
     ASSERT_EQ(again.exit_status, 0) << scene << ": " << again.err;
     EXPECT_EQ(test::read_file(dir / (scene + "-one.h5")), test::read_file(dir / (scene + "-np3.h5"))) << scene;
     EXPECT_EQ(test::read_file(dir / (scene + "-one.csv")), test::read_file(dir / (scene + "-np3.csv"))) << scene;
   }
 }
 
-// What a distributed run does not do: one line, exit 1, nothing written.
-TEST(MwDemMpi, ACheckpointOnlyOnASignalAndMoreRanksThanSphereBlocksAreRefusedInOneLine) {
+// SIGTERM to rank 1 alone, mid-run (Slurm signals each task itself, at its own moment): the
+// ranks agree on it after the step, so rank 0, which caught nothing, writes the checkpoint and
+// every rank stops after that step - exit 143, one error line naming the checkpoint, one record
+// (rank 0's). A restart on three ranks writes the signals of the run that never stopped.
+TEST(MwDemMpi, ASignalToOneRankStopsEveryRankAfterOneCheckpointThatRestartsToTheSameFiles) {
   test::TempDir dir;
   write_block(dir);
   test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
-  // A signal reaches each rank at its own step (and ends them all at once): every N steps only.
-  const auto ckpt = mpirun(2, {"run", (dir / "wave.toml").string(), "--quiet", "--signals", (dir / "s.h5").string(),
-                               "--checkpoint", (dir / "c.h5").string(), "--db", (dir / "p.sqlite").string()});
-  EXPECT_EQ(ckpt.exit_status, 1);
-  EXPECT_NE(ckpt.err.find("give --checkpoint-every-steps"), std::string::npos) << ckpt.err;
+  const std::vector<std::string> base = {"run", (dir / "wave.toml").string(), "--model", "full", "--threads", "1",
+                                         "--duration-ms", "0.6"};  // 15,000 steps
+  const auto one = run_tool("mw-dem", with(base, {"--quiet", "--signals", (dir / "one.h5").string()}));
+  ASSERT_EQ(one.exit_status, 0) << one.err;
+  // Each rank writes its pid and its stderr to files, so that the test can signal rank 1 once rank 0
+  // reports 10 % of the steps.
+  std::string command = "echo $$ > " + (dir / "pid.").string() + "$OMPI_COMM_WORLD_RANK; exec " +
+                        test::tool_path("mw-dem").string();
+  for (const auto& a : with(base, {"--signals", (dir / "s.h5").string(), "--checkpoint", (dir / "c.h5").string(), "--db",
+                                   (dir / "p.sqlite").string()}))
+    command += " " + a;
+  command += " 2> " + (dir / "err.").string() + "$OMPI_COMM_WORLD_RANK";
+  auto stopped = std::async(std::launch::async, [&] { return mpirun(2, {"-c", command}, {}, "/bin/sh"); });
+  bool signalled = false;
+  for (int i = 0; i < 12000 && !signalled; ++i) {  // at most 120 s, as mpirun's timeout
+    if (stopped.wait_for(std::chrono::milliseconds(10)) == std::future_status::ready) break;
+    if (std::filesystem::exists(dir / "err.0") && test::read_file(dir / "err.0").find(" 10% ") != std::string::npos)
+      signalled = ::kill(pid_t(std::stol(test::read_file(dir / "pid.1"))), SIGTERM) == 0;
+  }
+  const auto r = stopped.get();
+  ASSERT_TRUE(signalled) << "the run ended before rank 0 reported 10 %: " << r.err;
+  EXPECT_EQ(r.exit_status, 143) << r.err;
+  const std::string err = test::read_file(dir / "err.0") + test::read_file(dir / "err.1");
+  EXPECT_NE(err.find("c.h5 holds step "), std::string::npos) << err;
+  EXPECT_NE(err.find("error: interrupted by SIGTERM after "), std::string::npos) << err;
+  EXPECT_NE(err.find("; kept " + (dir / "c.h5").string() + " (a checkpoint at step "), std::string::npos) << err;
+  EXPECT_EQ(occurrences(err, "error: "), 1u) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.h5"));
+  const auto runs = recorded_runs(dir / "p.sqlite");
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0].exit_status, 143);
+  EXPECT_EQ(runs[0].params.value("mpi_rank", -1), 0);
+  const auto again = mpirun(3, with(base, {"--quiet", "--signals", (dir / "s.h5").string(), "--restart", (dir / "c.h5").string()}));
+  ASSERT_EQ(again.exit_status, 0) << again.err;
+  EXPECT_EQ(test::read_file(dir / "one.h5"), test::read_file(dir / "s.h5"));  // cmp: the same bytes
+}
+
+// What a distributed run does not do: one line, exit 1, nothing written.
+TEST(MwDemMpi, OneProcessOptionsAndMoreRanksThanSphereBlocksAreRefusedInOneLine) {
+  test::TempDir dir;
+  write_block(dir);
+  test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
+  const auto refused = mpirun(2, {"run", (dir / "wave.toml").string(), "--quiet", "--signals-pattern", (dir / "s-{f}.h5").string(),
+                               "--frequencies-kHz", "100,200", "--db", (dir / "p.sqlite").string()});
+  EXPECT_EQ(refused.exit_status, 1);
+  EXPECT_NE(refused.err.find("--frequencies-kHz"), std::string::npos) << refused.err;
   // Every rank fails alike: one record, rank 0's.
-  const auto ckpt_runs = recorded_runs(dir / "p.sqlite");
-  ASSERT_EQ(ckpt_runs.size(), 1u);
-  EXPECT_EQ(ckpt_runs[0].exit_status, 1);
-  EXPECT_EQ(ckpt_runs[0].params.value("mpi_rank", -1), 0);
+  const auto refused_runs = recorded_runs(dir / "p.sqlite");
+  ASSERT_EQ(refused_runs.size(), 1u);
+  EXPECT_EQ(refused_runs[0].exit_status, 1);
+  EXPECT_EQ(refused_runs[0].params.value("mpi_rank", -1), 0);
   const auto many = mpirun(5, {"run", (dir / "wave.toml").string(), "--quiet", "--model", "linear", "--signals",
                                (dir / "s.h5").string()});
   EXPECT_EQ(many.exit_status, 1);
   EXPECT_NE(many.err.find("5 MPI ranks for 864 spheres"), std::string::npos) << many.err;
   EXPECT_EQ(occurrences(many.err, "error: "), 1u) << many.err;  // every rank fails alike: printed once
-  EXPECT_EQ(occurrences(ckpt.err, "error: "), 1u) << ckpt.err;
+  EXPECT_EQ(occurrences(refused.err, "error: "), 1u) << refused.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "s.h5"));
-  EXPECT_FALSE(std::filesystem::exists(dir / "c.h5"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "s-100.h5"));
 }
 
 // A contact whose other end is on another rank needs that end as a ghost; the test-only hook

@@ -33,6 +33,11 @@ constexpr int kSignals[] = {SIGINT, SIGTERM};
 
 int interrupt_signal() noexcept { return caught.load(std::memory_order_relaxed); }
 
+void interrupt_as(int signal) noexcept {
+  int none = 0;
+  caught.compare_exchange_strong(none, signal);
+}
+
 void throw_if_interrupted() {
   if (const int s = interrupt_signal()) throw Interrupted{s, last_progress()};
 }

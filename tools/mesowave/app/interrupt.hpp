@@ -51,6 +51,11 @@ public:
 /// since the guard was installed. Async-signal-safe to read, cheap to poll.
 int interrupt_signal() noexcept;
 
+/// Raises the flag as if `signal` had arrived (a first signal stays the one reported): a rank
+/// of a distributed run that stops with the others on a signal another rank caught
+/// (dem/command/run_command.cpp), so that its run too ends as interrupted.
+void interrupt_as(int signal) noexcept;
+
 /// Throws Interrupted (with the last progress mark) if a signal arrived.
 void throw_if_interrupted();
 

@@ -30,9 +30,9 @@ Progress::~Progress() {
 
 ProgressMark Progress::mark() const { return {label_, unit_, done_, total_}; }
 
-void Progress::update(std::int64_t done) {
+void Progress::update(std::int64_t done, int stop_signal) {
   if (!finished_) done_ = done;
-  if (const int signal = interrupt_signal()) throw Interrupted{signal, mark()};
+  if (stop_signal != 0) throw Interrupted{stop_signal, mark()};
   if (!enabled_ || finished_) return;
   const auto now = std::chrono::steady_clock::now();
   if (tty_) {

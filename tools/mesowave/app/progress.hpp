@@ -23,7 +23,10 @@ public:
            std::int64_t resumed_at = 0);
   ~Progress();
   /// Shows `done` of `total`; throws app::Interrupted if a signal arrived.
-  void update(std::int64_t done);
+  void update(std::int64_t done) { update(done, interrupt_signal()); }
+  /// The same, but throws on `stop_signal` (nonzero) instead of reading the flag: a loop whose
+  /// processes agree on a signal first, so that all stop after the same step.
+  void update(std::int64_t done, int stop_signal);
   /// The work is complete: the last line shows `total` and the time taken.
   void finish();
   /// The loop ended at `done` before `total` because `why` (a test's stop rule, say): the last

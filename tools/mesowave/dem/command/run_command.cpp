@@ -59,8 +59,8 @@ void add_run_options(CLI::App& run_cmd, RunCommandLine& v) {
                      "broken_bonds); the signal file holds them too (test.stress, test.axial_strain, ...)");
   auto* checkpoint_opt = run_cmd.add_option("--checkpoint", v.checkpoint_path,
                                             "Checkpoint (HDF5, written whole) on SIGTERM/SIGINT before the run stops, "
-                                            "and every --checkpoint-every-steps steps (on several MPI ranks: only "
-                                            "these); a restart may run on any rank count");
+                                            "and every --checkpoint-every-steps steps; a restart may run on any "
+                                            "MPI rank count");
   run_cmd.add_option("--checkpoint-every-steps", v.checkpoint_every, "Steps between checkpoints")
       ->check(CLI::PositiveNumber)
       ->needs(checkpoint_opt);
@@ -209,11 +209,6 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
   if (domain && (v.static_solve || !v.frequencies_kHz.empty()))
     throw InputError("on several MPI ranks mw-dem runs the scene directly: --static and --frequencies-kHz run on one "
                      "process (docs/mpi.md)");
-  // A signal reaches each rank at its own step and ends them all at once (MPI_Abort, docs/mpi.md):
-  // a checkpoint it asked for could not be one state.
-  if (domain && !v.checkpoint_path.empty() && v.checkpoint_every <= 0)
-    throw InputError("on several MPI ranks --checkpoint is written every N steps only, not on a signal (which ends "
-                     "every rank at once): give --checkpoint-every-steps");
   if (v.static_solve) return run_static(v, in, run, threads_reason);
 
   SimulationOptions options;
@@ -231,11 +226,29 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
       snapshots.emplace_back(t, name);
     };
   }
+  // A signal stops the run after a step, a checkpoint written first if one is asked for. Each
+  // rank of several sees it at its own step: with a checkpoint they agree on it after each step
+  // (the largest signal number over the ranks, one small reduction a step) before the
+  // checkpoint's poll and the progress update read it, so that all write the checkpoint and stop
+  // after the same step, whichever caught it (docs/mpi.md). Without one, the first rank to stop
+  // ends the others (MPI_Abort).
+  const bool agree = domain && !v.checkpoint_path.empty();
+  std::optional<int> stop;  // this step's signal, once read (0: none)
+  const auto stop_signal = [&] {
+    if (!stop) {
+      stop = app::interrupt_signal();
+      if (agree) stop = int(domain->max(double(*stop)));
+      if (*stop != 0) app::interrupt_as(*stop);
+    }
+    return *stop;
+  };
   std::optional<app::Progress> progress;
   std::int64_t resumed_at = 0;
   options.on_progress = [&](std::int64_t done, std::int64_t total) {
     if (!progress) progress.emplace("mw-dem " + in.scene.name, total, "steps", !v.quiet, resumed_at);
-    progress->update(done);
+    const int signal = stop_signal();
+    stop.reset();  // the next step reads it anew
+    progress->update(done, signal);
   };
   if (!v.frequencies_kHz.empty()) return run_superposed_set(v, in, options, progress, run, threads_reason);
 
@@ -246,10 +259,7 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
       if (app::interrupt_signal() && root)
         std::cerr << "mw-dem: " << v.checkpoint_path.string() << " holds step " << step << "; continue with --restart\n";
     };
-    // One process: also when a signal asks (the run then ends). Several ranks: every N steps only.
-    std::function<bool()> requested;
-    if (!domain) requested = [] { return app::interrupt_signal() != 0; };
-    options.checkpoint = {v.checkpoint_path, v.checkpoint_every, requested,
+    options.checkpoint = {v.checkpoint_path, v.checkpoint_every, [&] { return stop_signal() != 0; },
                           run_identity(v.scene_path, in.scene, v.overrides, v.model), written};
   }
   const CheckpointIdentity identity = run_identity(v.scene_path, in.scene, v.overrides, v.model);

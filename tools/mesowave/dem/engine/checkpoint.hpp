@@ -24,8 +24,9 @@
 // write at that step: the contact law's per-slot arrays are gathered in the
 // whole layout's slot order (SphereSystem::write_slots), so the file does not
 // say how many ranks wrote it, and any rank count restarts it (every rank reads
-// it whole and keeps its slots: SphereSystem::held_slots). There a checkpoint is
-// written every N steps only, not on a signal, which ends every rank at once.
+// it whole and keeps its slots: SphereSystem::held_slots). On a signal the ranks
+// agree after each step (dem/command/run_command.cpp), so that every rank writes
+// the checkpoint and stops after the same step.
 //
 // A run with stronger bonds may start from an intact checkpoint of a run with
 // weaker ones (mw-dem run --intact-checkpoint, --restart-stronger; issue 19):
