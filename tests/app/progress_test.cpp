@@ -1,9 +1,11 @@
 // app::Progress off a terminal (as under make or ctest: plain lines at 0, 10, 20 ... %): what
 // each line claims must be true - no rate before any time has passed, and a loop that a stop
-// rule ends early is not reported as 100 % done.
+// rule ends early is not reported as 100 % done; a loop whose processes agree on a signal
+// stops on the agreed one.
 #include "mesowave/app/progress.hpp"
 
 #include <gtest/gtest.h>
+#include <signal.h>
 
 #include <chrono>
 #include <string>
@@ -59,4 +61,28 @@ TEST(Progress, ALoopEndedByAStopRuleSaysWhereAndWhyNotOneHundredPerCent) {
       << err;
   EXPECT_EQ(reached.done, 7345);  // what an interrupted run's record would say it reached
   EXPECT_EQ(reached.total, 20000);
+}
+
+// A loop whose processes agree on a signal first (mw-dem on several MPI ranks) stops on the
+// agreed one: update(done, signal) throws it with where the loop was, whatever the handler saw,
+// and update(done, 0) goes on even after a signal arrived (the next step's agreement takes it).
+TEST(Progress, AnAgreedStopSignalIsTheOneThatStopsTheLoop) {
+  const app::InterruptGuard guard;  // a flag of its own, cleared again after
+  app::Progress p("mw-dem wave", 100, "steps", false);
+  EXPECT_NO_THROW(p.update(3, 0));
+  try {
+    p.update(4, SIGTERM);
+    ADD_FAILURE() << "no Interrupted";
+  } catch (const app::Interrupted& i) {
+    EXPECT_EQ(i.signal, SIGTERM);
+    ASSERT_TRUE(i.reached);
+    EXPECT_EQ(i.reached->done, 4);
+  }
+  EXPECT_EQ(app::interrupt_signal(), 0);  // no signal arrived here: another process caught it
+  app::interrupt_as(SIGINT);              // as a rank that caught nothing takes the agreed one
+  app::interrupt_as(SIGTERM);             // the first one stays
+  EXPECT_EQ(app::interrupt_signal(), SIGINT);
+  EXPECT_NO_THROW(p.update(5, 0));
+  EXPECT_THROW(p.update(6), app::Interrupted);  // the plain update reads the flag
+  { const app::InterruptGuard clear; }          // a guard clears the flag: none for the next test
 }
