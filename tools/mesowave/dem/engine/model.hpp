@@ -105,7 +105,8 @@ public:
   /// energies, the contact law's state), exactly (state_group.hpp), so that a
   /// run restarted from it continues to the same bits. Called between steps.
   /// Distributed: on every rank (collective), after collect_state() and
-  /// collect_energy(); rank 0's `group` writes, the others' writes nowhere.
+  /// collect_energy(); rank 0's `group` writes, the others' writes nowhere
+  /// (their spheres' arrays are not whole).
   virtual void save_state(StateGroup& group) const = 0;
   /// Reads what save_state wrote, into a model built from the same scene and
   /// packing (distributed: on every rank, for any rank count); InputError if
@@ -123,8 +124,8 @@ public:
   /// for this domain (LawInput::domain), so that it never held the other ranks' contacts.
   /// InputError for a model that does not run distributed (the default).
   virtual void distribute(Domain& domain, const std::vector<std::size_t>& observed);
-  /// Distributed: makes every sphere's motion current on this rank (collective: every rank
-  /// calls it), before a snapshot reads them all. A no-op in one process.
+  /// Distributed: makes every sphere's motion current on rank 0, which writes what reads them
+  /// all (a snapshot, a checkpoint); collective: every rank calls it. A no-op in one process.
   virtual void collect_state() {}
   /// Distributed: makes energy() whole on this rank after a step that did not evaluate the
   /// energies (collective; the loop calls it once, after the last step). A no-op in one process.

@@ -488,8 +488,8 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
 // sums kept per task and per sphere block, in the order they are added - and
 // the law's state. The law goes first: a new contact layout resets the per-task
 // plastic sums, which are then read over it.
-// Distributed, the caller has collected every sphere's state and every block's damping
-// (Model::save_state): the spheres' arrays are whole on every rank, and rank 0 writes them.
+// Distributed, the caller has collected every sphere's state to rank 0 and every block's
+// damping (Model::save_state): rank 0 writes them; the other ranks' group writes nowhere.
 void SphereSystem::save_state(StateGroup& group) const {
   group.write("x", x_);
   group.write("v", v_);

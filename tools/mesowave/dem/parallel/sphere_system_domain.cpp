@@ -423,10 +423,12 @@ void SphereSystem::share_positions() {
   if (domain_) domain_->share(&x_[0].x, sphere_counts_, sphere_displs_);
 }
 
+// To rank 0 only: it alone writes snapshots and checkpoints; the other ranks keep their own
+// spheres', ghosts' and observed spheres' motion current, and read no other.
 void SphereSystem::collect_state() {
   if (!domain_) return;
-  for (std::vector<Vec3>* m : {&x_, &v_, &w_, &a_, &a_undamped_}) domain_->share(&(*m)[0].x, sphere_counts_, sphere_displs_);
-  if (track_rotation_) domain_->share(&theta_[0].x, sphere_counts_, sphere_displs_);
+  for (std::vector<Vec3>* m : {&x_, &v_, &w_, &a_, &a_undamped_}) domain_->collect(&(*m)[0].x, sphere_counts_, sphere_displs_);
+  if (track_rotation_) domain_->collect(&theta_[0].x, sphere_counts_, sphere_displs_);
 }
 
 void SphereSystem::collect_energy() {
