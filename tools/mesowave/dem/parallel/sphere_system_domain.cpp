@@ -466,7 +466,8 @@ std::vector<double> SphereSystem::gathered_slots(const std::vector<double>& held
 }
 
 void SphereSystem::write_slots(StateGroup& group, const std::string& name, const std::vector<double>& held) const {
-  group.write(name, domain_ ? gathered_slots(held) : held);  // the other ranks' group writes nowhere
+  if (!domain_) return group.write(name, held);
+  group.write(name, gathered_slots(held));  // the other ranks' group writes nowhere
 }
 
 void SphereSystem::write_slots(StateGroup& group, const std::string& name, const std::vector<std::uint32_t>& held) const {
