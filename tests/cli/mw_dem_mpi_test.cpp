@@ -208,7 +208,7 @@ TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesT
 // writes the files of the run that never stopped - bonds broken before and after it, contacts
 // detected anew, friction (the compression below), and the moment law's bending and twisting
 // moments (a wave). The checkpoint has no rank count of its own.
-TEST(MwDemMpi, ACheckpointOfTwoRanksIsOneProcesssAndRestartsOnThreeToTheSameFiles) {
+TEST(MwDemMpi, ACheckpointOfTwoRanksIsTheOneProcessFileAndRestartsOnThreeToTheSameFiles) {
   test::TempDir dir;
   write_block(dir);
   write_crush_scene(dir);
