@@ -2,8 +2,8 @@
 // N = 1-4 ranks (oversubscribed on a small machine) - a wave in the linearised network and in
 // the full law, and a compression to failure (the same bonds broken, the same curve); a
 // checkpoint is one process's file and restarts on any rank count, also one a signal to a
-// single rank asked for; the options a distributed run does not take are refused in one line. The reference is the
-// single-process engine itself, run without any MPI launcher.
+// single rank asked for; the options a distributed run does not take are refused in one line.
+// The reference is the single-process engine itself, run without any MPI launcher.
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -70,7 +70,8 @@ std::vector<std::string> with(std::vector<std::string> args, const std::vector<s
 void write_block(const test::TempDir& dir) { dem::write_packing_file(dir / "block.h5", dem::testing::crushing_block(6)); }
 
 // crush.toml: the shared crushing scene on the block, made shorter for the larger block (the wall
-// 2.4 x faster, the stop 20 % past the peak): about 2,700 steps to failure.
+// 2.4 x faster, the stop 20 % past the peak): about 2,700 steps to failure. Call it under
+// ASSERT_NO_FATAL_FAILURE: its ASSERT ends only the helper.
 void write_crush_scene(const test::TempDir& dir) {
   std::string scene = dem::testing::crushing_scene_toml((dir / "block.h5").string());
   for (const auto& [from, to] : {std::pair<std::string, std::string>{"velocity_mm_s = 500.0", "velocity_mm_s = 1200.0"},
@@ -193,7 +194,7 @@ TEST(MwDemMpi, AFullLawWaveOnTwoToFourRanksWritesTheSameFilesAsOneProcess) {
 TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesTheSameCurve) {
   test::TempDir dir;
   write_block(dir);
-  write_crush_scene(dir);
+  ASSERT_NO_FATAL_FAILURE(write_crush_scene(dir));
   expect_same_files_on_ranks(dir, "crush.toml", {}, {2, 3, 4}, true);
   const auto j = nlohmann::json::parse(test::read_file(dir / "one.json"));
   EXPECT_GT(j["broken_bonds"].get<int>(), 100);
@@ -211,7 +212,7 @@ TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesT
 TEST(MwDemMpi, ACheckpointOfTwoRanksIsTheOneProcessFileAndRestartsOnThreeToTheSameFiles) {
   test::TempDir dir;
   write_block(dir);
-  write_crush_scene(dir);
+  ASSERT_NO_FATAL_FAILURE(write_crush_scene(dir));
   std::string moment = wave_scene(dir / "block.h5");
   moment.replace(moment.find("bond_factor = 1.1"), 17, "bond_factor = 1.1\nlaw = \"cohesive_moment\"");
   test::write_file(dir / "moment.toml", moment);

@@ -253,7 +253,7 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
   if (!v.frequencies_kHz.empty()) return run_superposed_set(v, in, options, progress, run, threads_reason);
 
   if (!v.checkpoint_path.empty() || !v.restart_path.empty()) {
-    const auto written = [&, root](std::int64_t step) {
+    const auto written = [&](std::int64_t step) {
       run.param("checkpoint_step", step);  // recorded also when the run is interrupted
       run.keep_on_interrupt(v.checkpoint_path, "a checkpoint at step " + std::to_string(step));
       if (app::interrupt_signal() && root)
