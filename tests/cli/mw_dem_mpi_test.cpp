@@ -11,6 +11,7 @@
 #include <chrono>
 #include <filesystem>
 #include <future>
+#include <regex>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -170,6 +171,15 @@ void expect_same_files_on_ranks(const test::TempDir& dir, const std::string& sce
       const auto held = std::stoul(split.substr(split.rfind(' ', at - 1) + 1));
       EXPECT_GT(held, 0u) << split;
       EXPECT_LT(held, contacts) << split;
+      // ... and the arrays of its own spheres, its ghosts and the observed ones only (hold()).
+      std::smatch m;
+      const std::regex spheres_held(R"(spheres (\d+)-(\d+) of (\d+) \(Morton order\), (\d+) held, (\d+) ghosts from \d+ ranks, (\d+) observed)");
+      ASSERT_TRUE(std::regex_search(split, m, spheres_held)) << split;
+      const auto number = [&](int k) { return std::stoul(m[k].str()); };
+      EXPECT_EQ(number(3), j["spheres"].get<std::size_t>()) << split;
+      EXPECT_GE(number(4), number(2) - number(1) + number(5)) << split;
+      EXPECT_LE(number(4), number(2) - number(1) + number(5) + number(6)) << split;
+      EXPECT_LT(number(4), number(3)) << split;
     }
   }
 }

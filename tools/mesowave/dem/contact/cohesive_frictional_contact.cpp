@@ -70,8 +70,10 @@ std::size_t CohesiveFrictionalContact::broken_bonds_in(const std::vector<std::ui
 // depend on the rank count that wrote it, nor binds the one that reads it.
 void CohesiveFrictionalContact::save_state(const SphereSystem& system, StateGroup& group) const {
   const std::size_t m = bond_.size();
-  system.write_slots(group, "first", std::vector<std::uint32_t>(system.first(), system.first() + m));
-  system.write_slots(group, "second", std::vector<std::uint32_t>(system.second(), system.second() + m));
+  std::vector<std::uint32_t> first(m), second(m);  // the spheres' global ids
+  for (std::size_t s = 0; s < m; ++s) first[s] = system.global_id(system.first(s)), second[s] = system.global_id(system.second(s));
+  system.write_slots(group, "first", first);
+  system.write_slots(group, "second", second);
   system.write_slots(group, "normal_x", nx_), system.write_slots(group, "normal_y", ny_);
   system.write_slots(group, "normal_z", nz_);
   system.write_slots(group, "shear_x_N", sx_), system.write_slots(group, "shear_y_N", sy_);
@@ -148,10 +150,10 @@ void CohesiveFrictionalContact::after_step(SphereSystem& system, double dt) {
 void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   travelled_ = 0;
   ++detection_passes_;
-  system.share_positions();  // distributed: every rank detects from every sphere's position
+  std::vector<Vec3> gathered;  // distributed: every rank detects from every sphere's position
+  const Vec3* x = system.whole_positions(gathered);
   const SphereSet& spheres = system.spheres();
   const BondNetwork& bonds = system.bonds();
-  const Vec3* x = system.positions();
   const std::size_t n = spheres.size(), nb = bonds.size();
   std::vector<std::array<double, 3>> pos(n);
   for (std::size_t k = 0; k < n; ++k) pos[k] = {x[k].x, x[k].y, x[k].z};
@@ -162,7 +164,7 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> old_pairs;
   for (std::size_t s = 0; s < bond_.size(); ++s) {
     if (bond_[s] != kNoBond) slot_of_bond[bond_[s]] = std::uint32_t(s);
-    else old_pairs.emplace_back(system.first(s), system.second(s), std::uint32_t(s));
+    else old_pairs.emplace_back(system.global_id(system.first(s)), system.global_id(system.second(s)), std::uint32_t(s));
   }
   std::sort(old_pairs.begin(), old_pairs.end());
 

@@ -111,7 +111,7 @@ inline void CohesiveFrictionalContact::run(SphereSystem& system, double dt, bool
   const double T_ref = std::isfinite(T) ? T : 0.0, C_ref = std::isfinite(C) ? C : 0.0;
   const double T_none = std::isfinite(T) ? 0.0 : 1.0, C_none = std::isfinite(C) ? 0.0 : 1.0;
   const double half_dt = 0.5 * dt;
-  const double* radius = system.spheres().radius_m.data();
+  const double* radius = system.radii();
   const Vec3* x = system.positions();
   const Vec3* v = system.velocities();
   const Vec3* w = system.angular_velocities();

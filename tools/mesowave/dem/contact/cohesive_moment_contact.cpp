@@ -62,7 +62,7 @@ void CohesiveMomentContact::contact_forces(SphereSystem& system, double dt, bool
 MESOWAVE_KERNEL_CLONES
 void CohesiveMomentContact::kernel(SphereSystem& system, double dt, bool evaluate_energy) {
   const CohesiveFrictionalMaterial& m = system.material();
-  Moments ext{system.spheres().radius_m.data(), system.first(), system.second(),
+  Moments ext{system.radii(), system.first(), system.second(),
               mb_[0].data(), mb_[1].data(), mb_[2].data(), mt_[0].data(), mt_[1].data(), mt_[2].data(),
               p_.alpha_kr, p_.alpha_ktw, p_.eta_roll, p_.eta_twist, m.tensile_strength_Pa, m.cohesion_Pa};
   run<SphereSystem::MomentContactResult>(system, dt, evaluate_energy, ext);

@@ -35,7 +35,7 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
   // inside the vector loop (GCC 12 left the whole loop scalar).
   const double T_ref = std::isfinite(T) ? T : 0.0, C_ref = std::isfinite(C) ? C : 0.0;
   const double T_none = std::isfinite(T) ? 0.0 : 1.0, C_none = std::isfinite(C) ? 0.0 : 1.0;
-  const double* radius = system.spheres().radius_m.data();
+  const double* radius = system.radii();
   const Vec3* d = system.positions();
   const Vec3* theta = system.rotations();
   const double *nx = nx_.data(), *ny = ny_.data(), *nz = nz_.data(), *overlap0 = overlap0_.data();

@@ -124,8 +124,9 @@ public:
   /// for this domain (LawInput::domain), so that it never held the other ranks' contacts.
   /// InputError for a model that does not run distributed (the default).
   virtual void distribute(Domain& domain, const std::vector<std::size_t>& observed);
-  /// Distributed: makes every sphere's motion current on rank 0, which writes what reads them
-  /// all (a snapshot, a checkpoint); collective: every rank calls it. A no-op in one process.
+  /// Distributed: gathers every sphere's motion to rank 0, which writes what reads them all (a
+  /// snapshot, a checkpoint) from a whole copy kept until the next step; collective: every rank
+  /// calls it. A no-op in one process.
   virtual void collect_state() {}
   /// Distributed: makes energy() whole on this rank after a step that did not evaluate the
   /// energies (collective; the loop calls it once, after the last step). A no-op in one process.

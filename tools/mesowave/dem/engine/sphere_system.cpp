@@ -69,42 +69,82 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
     : spheres_(std::move(spheres)), bonds_(std::move(bonds)), material_(material), kernel_(std::move(kernel)),
       displacement_state_(kernel_->displacement_state()), track_rotation_(kernel_->track_rotation()) {
   const std::size_t n = spheres_.size();
-  x_ = displacement_state_ ? std::vector<Vec3>(n) : spheres_.centre_m;
-  v_.assign(n, {});
-  w_.assign(n, {});
-  a_.assign(n, {});
-  f_ext_.assign(n, {});
-  if (track_rotation_) theta_.assign(n, {});
-  inv_mass_.resize(n);
-  inv_inertia_.resize(n);
-  inv_mass3_.resize(3 * n);
-  inv_inertia3_.resize(3 * n);
-  for (std::size_t k = 0; k < n; ++k) {
-    inv_mass_[k] = 1.0 / spheres_.mass_kg[k];
-    inv_inertia_[k] = 1.0 / spheres_.inertia_kg_m2[k];
-    for (int d = 0; d < 3; ++d) {
-      inv_mass3_[3 * k + std::size_t(d)] = inv_mass_[k];
-      inv_inertia3_[3 * k + std::size_t(d)] = inv_inertia_[k];
-    }
-  }
-  is_forced_.assign(n, 0);
-  a_undamped_.assign(n, {});
   const std::size_t sphere_blocks = (n + kSphereBlock - 1) / kSphereBlock;
   sphere_block_kinetic_.assign(sphere_blocks, 0);
   sphere_block_damping_.assign(sphere_blocks, 0);
   sphere_block_vmax2_.assign(sphere_blocks, 0);
-  f_acc_.assign(n, {});
-  t_acc_.assign(n, {});
   threads_ = omp_get_max_threads();
   // A fixed number of Morton ranges, set by the sphere count alone (never by
   // the thread count, which must not change the bits): ~4000 spheres each.
   partitions_ = std::clamp<std::size_t>(n / kSpheresPerPartition, 1, 64);
   sphere_chunk_ = (n + partitions_ - 1) / partitions_;
-  first_ = bonds_.first;
-  second_ = bonds_.second;
   if (domain) split(*domain);
+  // Until the law lays its contacts out, a rank holds its own spheres (one process all).
+  std::vector<std::uint32_t> own(own_end() - own_begin());
+  for (std::size_t k = 0; k < own.size(); ++k) own[k] = std::uint32_t(own_begin() + k);
+  hold(std::move(own));
   keep_held_bonds();
   kernel_->attach(*this);
+}
+
+void SphereSystem::hold(std::vector<std::uint32_t> ids) {
+  const std::size_t m = ids.size();
+  // Where each sphere held from now on was held before (both lists sorted; none at construction).
+  std::vector<std::size_t> from(m, kNotHeld);
+  for (std::size_t l = 0, o = 0; l < m; ++l) {
+    while (o < held_ids_.size() && held_ids_[o] < ids[l]) ++o;
+    if (o < held_ids_.size() && held_ids_[o] == ids[l]) from[l] = o;
+  }
+  const auto relay = [&](auto& array, const auto& start) {
+    std::remove_reference_t<decltype(array)> next(m);
+    for (std::size_t l = 0; l < m; ++l) next[l] = from[l] != kNotHeld ? array[from[l]] : start(ids[l]);
+    array = std::move(next);
+  };
+  const auto zero = [](std::size_t) { return Vec3{}; };
+  relay(x_, [&](std::size_t k) { return displacement_state_ ? Vec3{} : spheres_.centre_m[k]; });
+  for (auto* state : {&v_, &w_, &a_, &a_undamped_, &f_ext_, &f_acc_, &t_acc_}) relay(*state, zero);
+  if (track_rotation_) relay(theta_, zero);
+  relay(is_forced_, [](std::size_t) { return std::uint8_t(0); });
+  inv_mass_.resize(m), inv_inertia_.resize(m), inv_mass3_.resize(3 * m), inv_inertia3_.resize(3 * m);
+  for (std::size_t l = 0; l < m; ++l) {
+    inv_mass_[l] = 1.0 / spheres_.mass_kg[ids[l]];
+    inv_inertia_[l] = 1.0 / spheres_.inertia_kg_m2[ids[l]];
+    for (std::size_t d = 0; d < 3; ++d) inv_mass3_[3 * l + d] = inv_mass_[l], inv_inertia3_[3 * l + d] = inv_inertia_[l];
+  }
+  if (!domain_) return;
+  radius_.resize(m);
+  for (std::size_t l = 0; l < m; ++l) radius_[l] = spheres_.radius_m[ids[l]];
+  own_local_ = std::size_t(std::lower_bound(ids.begin(), ids.end(), std::uint32_t(own_begin_)) - ids.begin());
+  held_ids_ = std::move(ids);
+  for (auto* lists : {&ghost_sends_, &ghost_receives_})
+    for (auto& g : *lists) {
+      g.local.resize(g.spheres.size());
+      for (std::size_t q = 0; q < g.spheres.size(); ++q) g.local[q] = local_id(g.spheres[q]);
+    }
+  observed_local_.resize(observed_.size());
+  for (std::size_t q = 0; q < observed_.size(); ++q) observed_local_[q] = local_id(observed_[q]);
+}
+
+void SphereSystem::number_contacts_locally() {
+  if (domain_)
+    for (auto* ends : {&first_, &second_})
+      for (std::uint32_t& k : *ends) k = local_id(k);
+  const std::vector<std::uint32_t> cross_first(first_.begin() + std::ptrdiff_t(cross_begin_), first_.end());
+  const std::vector<std::uint32_t> cross_second(second_.begin() + std::ptrdiff_t(cross_begin_), second_.end());
+  cross_incidence_ = make_incidence(held_sphere_count(), cross_first, cross_second);
+}
+
+std::size_t SphereSystem::find_local(std::size_t k) const {
+  if (!domain_) return k;
+  if (k >= own_begin_ && k < own_end_) return k - own_begin_ + own_local_;
+  const auto at = std::lower_bound(held_ids_.begin(), held_ids_.end(), std::uint32_t(k));
+  return at != held_ids_.end() && *at == k ? std::size_t(at - held_ids_.begin()) : kNotHeld;
+}
+
+std::uint32_t SphereSystem::local_id(std::size_t k) const {
+  const std::size_t l = find_local(k);
+  if (l == kNotHeld) throw std::logic_error("SphereSystem: sphere " + std::to_string(k) + " is not held on this rank");
+  return std::uint32_t(l);
 }
 
 SphereSystem::~SphereSystem() = default;
@@ -143,7 +183,7 @@ std::size_t SphereSystem::held_bond(std::size_t b) const {
 
 std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
                                                       const std::vector<std::uint32_t>& second, bool moments) {
-  const std::size_t count = first.size(), n = spheres_.size();
+  const std::size_t count = first.size();
   // The whole layout: interior contacts by partition, then those across partitions.
   global_interior_start_.assign(partitions_ + 1, 0);
   for (std::size_t c = 0; c < count; ++c) {
@@ -188,9 +228,8 @@ std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uin
     first_[s] = first[order[s]];
     second_[s] = second[order[s]];
   }
-  const std::vector<std::uint32_t> cross_first(first_.begin() + std::ptrdiff_t(cross_begin_), first_.end());
-  const std::vector<std::uint32_t> cross_second(second_.begin() + std::ptrdiff_t(cross_begin_), second_.end());
-  cross_incidence_ = make_incidence(n, cross_first, cross_second);
+  if (domain_) lay_out_domain(global_first);  // the ghosts and the held spheres, then the local ids
+  else number_contacts_locally();
   out_.assign(held - cross_begin_, ContactOut{});
   if (moments) out_moment_.assign(held - cross_begin_, Vec3{});
   else out_moment_.clear();
@@ -205,30 +244,32 @@ std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uin
   task_peak2_.assign(tasks, 0);
   // A parallel region costs a few microseconds: worth it only for big systems.
   parallel_ = threads_ > 1 && held >= 8 * kContactBlock && partitions_ > 1;
-  if (domain_) lay_out_domain(global_first);
   return order;
 }
 
 Vec3 SphereSystem::displacement(std::size_t k) const {
-  return displacement_state_ ? x_[k] : x_[k] - spheres_.centre_m[k];
+  const Vec3 x = held_or_collected(x_, collected_.x, k);
+  return displacement_state_ ? x : x - spheres_.centre_m[k];
 }
 
-void SphereSystem::add_external_force(std::size_t k, const Vec3& force) {
+void SphereSystem::add_external_force(std::size_t sphere, const Vec3& force) {
+  const std::uint32_t k = local_id(sphere);
   if (!is_forced_[k]) {
     is_forced_[k] = 1;
-    forced_.push_back(std::uint32_t(k));
+    forced_.push_back(k);
   }
   f_ext_[k] += force;
 }
 
-double SphereSystem::impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) {
+double SphereSystem::impose_displacement(std::size_t sphere, const Vec3& e, double u_now, double u_next, double dt) {
+  const std::size_t k = local_id(sphere);
   const double v_imposed = (u_next - u_now) / dt;
   const double v_before = dot(v_[k], e) - dt * dot(a_[k], e);  // v_{n-1/2} along e
   // A constrained degree of freedom is not damped (Yade: blocked DOFs skip the
   // integrator); its force balance uses the undamped F/m of this step.
   const double a_free = dot(a_undamped_[k], e);
   const double a_imposed = (v_imposed - v_before) / dt;
-  x_[k] += (u_next - dot(displacement(k), e)) * e;
+  x_[k] += (u_next - dot(displacement(sphere), e)) * e;
   v_[k] += (v_imposed - dot(v_[k], e)) * e;
   a_[k] += (a_imposed - a_free) * e;
   // The constraint force m (a_imposed - a_free) does work over the step.
@@ -238,6 +279,7 @@ double SphereSystem::impose_displacement(std::size_t k, const Vec3& e, double u_
 }
 
 void SphereSystem::step(double dt, bool evaluate_energy) {
+  collected_ = {};  // rank 0's whole copy is spent (collect_state)
   if (domain_ && slot_elastic_.size() != first_.size())  // after a new layout (lay_out_domain)
     for (auto* values : {&slot_elastic_, &slot_plastic_}) values->resize(first_.size());
   forced_v_before_.resize(forced_.size());
@@ -296,7 +338,7 @@ void SphereSystem::integrate(double dt, bool evaluate_energy) {
     const std::size_t b0 = first_block + group * kDampingGroup, b1 = std::min(blocks, b0 + kDampingGroup);
     alignas(64) double damping[kDampingGroup][kDampingTerms];
     for (std::size_t blk = b0; blk < b1; ++blk) {
-      const std::size_t begin = blk * kSphereBlock, end = std::min(n, begin + kSphereBlock);
+      const std::size_t begin = own_local(blk * kSphereBlock), end = own_local(std::min(n, (blk + 1) * kSphereBlock));
       // Total force and torque, in a fixed order: contacts inside the partition
       // (summed in slot order by for_each_contact), those across partitions,
       // then external loads.
@@ -403,7 +445,7 @@ EnergyAccount SphereSystem::energy() const {
 
 bool SphereSystem::has_non_finite_state() const {
   // Distributed: each rank checks its own spheres, and all agree (collective).
-  const std::size_t begin = domain_ ? own_begin_ : 0, end = domain_ ? own_end_ : x_.size();
+  const std::size_t begin = own_local(own_begin()), end = own_local(own_end());
   std::uint64_t bad = 0;
   for (std::size_t k = begin; k < end && !bad; ++k)
     bad = !std::isfinite(x_[k].x + x_[k].y + x_[k].z + v_[k].x + v_[k].y + v_[k].z + w_[k].x + w_[k].y + w_[k].z);
@@ -491,12 +533,15 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
 // Distributed, the caller has collected every sphere's state to rank 0 and every block's
 // damping (Model::save_state): rank 0 writes them; the other ranks' group writes nowhere.
 void SphereSystem::save_state(StateGroup& group) const {
-  group.write("x", x_);
-  group.write("v", v_);
-  group.write("w", w_);
-  group.write("a", a_);
-  group.write("a_undamped", a_undamped_);
-  if (track_rotation_) group.write("theta", theta_);
+  const auto whole = [&](const std::vector<Vec3>& held, const std::vector<Vec3>& collected) -> const std::vector<Vec3>& {
+    return domain_ ? collected : held;
+  };
+  group.write("x", whole(x_, collected_.x));
+  group.write("v", whole(v_, collected_.v));
+  group.write("w", whole(w_, collected_.w));
+  group.write("a", whole(a_, collected_.a));
+  group.write("a_undamped", whole(a_undamped_, collected_.a_undamped));
+  if (track_rotation_) group.write("theta", whole(theta_, collected_.theta));
   group.write("peak_ratio", peak_ratio_);
   group.write("max_speed", max_speed_);
   group.write("kinetic_J", energy_.kinetic_J);
@@ -514,15 +559,21 @@ std::vector<double> SphereSystem::read_slots(const StateGroup& group, const std:
   return held_slots(std::move(whole));
 }
 
-// Every rank reads the whole file: the spheres' arrays are whole, the law keeps its held slots.
+// Every rank reads the whole file, one array at a time, and keeps its held spheres' and slots' part.
 void SphereSystem::load_state(const StateGroup& group) {
   kernel_->load_state(*this, group.open("law"));
-  group.read_into("x", x_);
-  group.read_into("v", v_);
-  group.read_into("w", w_);
-  group.read_into("a", a_);
-  group.read_into("a_undamped", a_undamped_);
-  if (track_rotation_) group.read_into("theta", theta_);
+  const auto read_held = [&](const char* name, std::vector<Vec3>& held) {
+    if (!domain_) return group.read_into(name, held);
+    std::vector<Vec3> whole(spheres_.size());
+    group.read_into(name, whole);
+    for (std::size_t l = 0; l < held.size(); ++l) held[l] = whole[held_ids_[l]];
+  };
+  read_held("x", x_);
+  read_held("v", v_);
+  read_held("w", w_);
+  read_held("a", a_);
+  read_held("a_undamped", a_undamped_);
+  if (track_rotation_) read_held("theta", theta_);
   peak_ratio_ = group.read_double("peak_ratio");
   max_speed_ = group.read_double("max_speed");
   energy_.kinetic_J = group.read_double("kinetic_J");
@@ -532,12 +583,12 @@ void SphereSystem::load_state(const StateGroup& group) {
   group.read_into("task_plastic_J", task_plastic_);
   if (domain_) {
     broken_ = std::size_t(domain_->sum(kernel_->broken_bonds_in(reported_)));
-    ghosts_stale_ = false;  // every rank read every sphere's state
+    ghosts_stale_ = false;  // every rank read its held spheres' state
   }
 }
 
 std::size_t SphereSystem::memory_bytes() const {
-  const std::size_t n = spheres_.size();
+  const std::size_t n = held_sphere_count();
   std::size_t bytes = n * (sizeof(Vec3) * (6 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + 2 * sizeof(double) +
                            sizeof(std::uint32_t) + sizeof(std::int64_t) + 1);
   bytes += bonds_.size() * 2 * sizeof(std::uint32_t) + bond_normal0_.size() * (sizeof(Vec3) + sizeof(double)) +
@@ -545,9 +596,9 @@ std::size_t SphereSystem::memory_bytes() const {
   bytes += kernel_->memory_bytes() + out_moment_.size() * sizeof(Vec3);
   bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +
            first_.size() * 2 * sizeof(std::uint32_t) + 2 * n * sizeof(Vec3);
-  // Distributed: the held slots' places and values (the spheres' arrays are still whole: docs/mpi.md).
+  // Distributed: the held slots' places and values, the held spheres' ids and radii.
   bytes += global_slot_.size() * sizeof(std::uint32_t) + slot_elastic_.size() * 2 * sizeof(double) +
-           owned_values_.size() * sizeof(double);
+           owned_values_.size() * sizeof(double) + held_ids_.size() * sizeof(std::uint32_t) + radius_.size() * sizeof(double);
   return bytes;
 }
 

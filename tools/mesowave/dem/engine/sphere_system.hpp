@@ -26,12 +26,16 @@
 // gathered in slot order, so every rank holds what the single-process run holds of its
 // own spheres, its ghosts and the observed spheres, bit for bit. The critical step's Lanczos
 // runs on each rank's own rows (scaled_stiffness_action, stiffness_dot), and a rank keeps the
-// step-0 state of its held bonds only (bond_normal0).
+// step-0 state of its held bonds only (bond_normal0). A rank's per-sphere arrays hold only the
+// spheres it holds (own, ghosts, observed), numbered locally in global id order (hold()), so
+// that first < second and every sphere's order of terms survive; the Model interface takes
+// global ids (the packing's order), a contact kernel reads local ones.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 
@@ -101,12 +105,13 @@ public:
   double radius(std::size_t k) const override { return spheres_.radius_m[k]; }
   double mass(std::size_t k) const override { return spheres_.mass_kg[k]; }
   std::uint32_t packing_index(std::size_t k) const override { return spheres_.packing_index[k]; }
+  /// Distributed, these read a held sphere, or on rank 0 after collect_state() any sphere.
   Vec3 displacement(std::size_t k) const override;
-  Vec3 velocity(std::size_t k) const override { return v_[k]; }
-  Vec3 acceleration(std::size_t k) const override { return a_[k]; }
+  Vec3 velocity(std::size_t k) const override { return held_or_collected(v_, collected_.v, k); }
+  Vec3 acceleration(std::size_t k) const override { return held_or_collected(a_, collected_.a, k); }
   void add_external_force(std::size_t k, const Vec3& force) override;
   double impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) override;
-  void set_velocity(std::size_t k, const Vec3& v) override { v_[k] = v; }
+  void set_velocity(std::size_t k, const Vec3& v) override { v_[local_id(k)] = v; }
   void step(double dt, bool evaluate_energy) override;
   EnergyAccount energy() const override;
   double peak_force_ratio() const override { return peak_ratio_; }
@@ -123,9 +128,10 @@ public:
   std::string distribution() const override;
   void collect_state() override;
   void collect_energy() override;
-  /// Distributed: makes every sphere's position current on every rank (collective; contact
-  /// detection reads them all). A no-op in one process.
-  void share_positions();
+  /// Every sphere's position (positions(), in global ids), for contact detection: in one process
+  /// the system's own array; distributed (collective), each rank's own spheres' gathered into
+  /// `buffer` on every rank.
+  const Vec3* whole_positions(std::vector<Vec3>& buffer) const;
 
   const SphereSet& spheres() const { return spheres_; }
   /// The bonds' pairs (first, second). Their step-0 normals and u_0 are bond_normal0() and
@@ -138,16 +144,24 @@ public:
   const CohesiveFrictionalMaterial& material() const { return material_; }
   const ContactKernel& kernel() const { return *kernel_; }
   /// Angular velocity w_{n+1/2} of sphere k (and its initial value, for tests).
-  Vec3 angular_velocity(std::size_t k) const { return w_[k]; }
-  void set_angular_velocity(std::size_t k, const Vec3& w) { w_[k] = w; }
+  Vec3 angular_velocity(std::size_t k) const { return held_or_collected(w_, collected_.w, k); }
+  void set_angular_velocity(std::size_t k, const Vec3& w) { w_[local_id(k)] = w; }
 
-  // What a contact kernel reads (model numbering, slot order for contacts).
+  // What a contact kernel reads: the held spheres in local numbering (every sphere, in the
+  // model's numbering, in one process), the contacts in slot order.
   const Vec3* positions() const { return x_.data(); }  ///< x (absolute, or the displacement: displacement_state)
   const Vec3* velocities() const { return v_.data(); }
   const Vec3* angular_velocities() const { return w_.data(); }
   const Vec3* rotations() const { return theta_.data(); }  ///< theta (track_rotation only)
-  const std::uint32_t* first() const { return first_.data(); }
+  const double* radii() const { return domain_ ? radius_.data() : spheres_.radius_m.data(); }
+  const std::uint32_t* first() const { return first_.data(); }  ///< local ids
   const std::uint32_t* second() const { return second_.data(); }
+  /// The spheres this process holds (all in one process; own, ghosts and observed distributed).
+  std::size_t held_sphere_count() const { return x_.size(); }
+  /// Held sphere l's global id (l in one process).
+  std::uint32_t global_id(std::size_t l) const { return domain_ ? held_ids_[l] : std::uint32_t(l); }
+  /// Sphere k's local id (k in one process); std::logic_error for a sphere not held here.
+  std::uint32_t local_id(std::size_t k) const;
   /// The slots this process holds: every contact, or on several ranks (a system made for a
   /// domain) only the contacts with an end of this rank's own, in the order of the whole layout.
   std::size_t slot_count() const { return first_.size(); }
@@ -172,9 +186,8 @@ public:
     for (std::size_t s = 0; s < held.size(); ++s) held[s] = whole[global_slot_[s]];
     return held;
   }
-  std::uint32_t first(std::size_t slot) const { return first_[slot]; }
+  std::uint32_t first(std::size_t slot) const { return first_[slot]; }  ///< local ids
   std::uint32_t second(std::size_t slot) const { return second_[slot]; }
-  Vec3 position(std::size_t k) const { return x_[k]; }
   /// Largest |v| after the last step.
   double max_speed() const { return max_speed_; }
 
@@ -285,10 +298,11 @@ private:
     for (std::size_t b = held_bond_begin_; b < held_bond_end_; ++b) f(b);
   }
 
+  // Per held sphere, in local numbering (hold()).
   std::vector<Vec3> x_, v_, w_, a_, theta_, f_ext_;
   std::vector<double> inv_mass_, inv_inertia_;
   std::vector<double> inv_mass3_, inv_inertia3_;  ///< the same, once per Cartesian component
-  std::vector<std::uint32_t> first_, second_;  ///< contacts in slot order (the slots held)
+  std::vector<std::uint32_t> first_, second_;  ///< contacts in slot order (the slots held), local ids
   double peak_ratio_ = 0;
   double max_speed_ = 0;  ///< largest |v| after the last step
   EnergyAccount energy_;
@@ -320,6 +334,27 @@ private:
   std::vector<std::uint32_t> forced_;  ///< spheres with an external force this step
   std::vector<Vec3> forced_v_before_;
   std::vector<std::uint8_t> is_forced_;
+  std::vector<double> radius_;  ///< distributed: the held spheres' radii (radii())
+  static constexpr std::size_t kNotHeld = ~std::size_t(0);
+  /// Sphere k's local id, or kNotHeld.
+  std::size_t find_local(std::size_t k) const;
+  /// Rank 0 after collect_state() (until the next step): every sphere's motion, in global ids.
+  struct Collected {
+    std::vector<Vec3> x, v, w, a, a_undamped, theta;
+  } collected_;
+  template <class T>
+  const T& held_or_collected(const std::vector<T>& held, const std::vector<T>& whole, std::size_t k) const {
+    if (const std::size_t l = find_local(k); l != kNotHeld) return held[l];
+    if (whole.empty()) throw std::logic_error("SphereSystem: sphere " + std::to_string(k) + " is not held on this rank");
+    return whole[k];
+  }
+  /// Lays the per-sphere arrays out for the spheres `ids` (sorted global ids; distributed: own,
+  /// ghosts, observed), keeping the state of those held before; a sphere new here starts from
+  /// step 0's state (a new ghost's motion comes from its owner before the next step). The
+  /// contacts' ends (global ids in first_/second_ on entry) are then numbered locally.
+  void hold(std::vector<std::uint32_t> ids);
+  /// first_/second_ from global to local ids, and the cross records' incidence over them.
+  void number_contacts_locally();
 
   // A distributed run (dem/parallel/sphere_system_domain.cpp, docs/mpi.md): this rank's
   // spheres and blocks (per rank: sphere_counts_/displs_ in doubles, 3 a sphere; block_owner_
@@ -329,8 +364,10 @@ private:
   // spheres it sends there and those it receives from there) and the observed spheres (those
   // an actuator or sensor reads: every rank holds them; sorted by id, so by owner).
   Domain* domain_ = nullptr;
-  int rank_ = 0;  ///< domain_->rank(), also for the step's inline code (which sees no Domain)
+  int rank_ = 0;  ///< domain_->rank()
   std::size_t own_begin_ = 0, own_end_ = 0, own_block_begin_ = 0, own_block_end_ = 0, ghosts_ = 0;
+  std::size_t own_local_ = 0;  ///< the local id of own_begin_ (own spheres are contiguous locally)
+  std::vector<std::uint32_t> held_ids_;  ///< distributed: the held spheres' global ids, sorted
   std::size_t broken_ = 0;  ///< bonds broken on all ranks after the last step (shared with the motion)
   double vmax2_all_ = 0;    ///< the largest block bound of |v|^2 over all ranks after the last step
   std::vector<int> sphere_counts_, sphere_displs_, block_counts_, block_displs_, block_owner_;
@@ -338,11 +375,12 @@ private:
   std::vector<double> slot_elastic_, slot_plastic_, send_, recv_;
   struct GhostList {
     int rank;
-    std::vector<std::uint32_t> spheres;
+    std::vector<std::uint32_t> spheres;  ///< global ids (or, for the elastic sums, slots and places)
     std::vector<double> buffer;
+    std::vector<std::uint32_t> local = {};  ///< the spheres' local ids
   };
   std::vector<GhostList> ghost_sends_, ghost_receives_;
-  std::vector<std::uint32_t> observed_;
+  std::vector<std::uint32_t> observed_, observed_local_;
   std::vector<int> observed_counts_, observed_displs_;
   // The elastic sums: per task of the whole layout the rank that adds it (task_owner_; per rank
   // its count), and on that rank its tasks' values in slot order (owned_values_, from
@@ -363,6 +401,8 @@ private:
   /// This rank's spheres [own_begin(), own_end()): all of them in one process.
   std::size_t own_begin() const { return domain_ ? own_begin_ : 0; }
   std::size_t own_end() const { return domain_ ? own_end_ : spheres_.size(); }
+  /// Own sphere k's local id.
+  std::size_t own_local(std::size_t k) const { return k - own_begin() + own_local_; }
   bool is_own(std::size_t k) const { return k >= own_begin() && k < own_end(); }
   /// The critical step's vectors at the ghosts (scaled_stiffness_action): x's rows of the spheres
   /// each neighbour holds as ghosts go there; returns the ghosts' rows (six a sphere) in the order
@@ -382,7 +422,7 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
   const std::size_t tasks = partitions_ + cross_blocks_;
   const std::size_t count = first_.size();
   const bool distributed = domain_ != nullptr;
-  const int me = rank_;
+  const std::uint32_t own_lo = std::uint32_t(own_local_), own_count = std::uint32_t(own_end_ - own_begin_);
   const std::uint32_t* first = first_.data();
   const std::uint32_t* second = second_.data();
 #pragma omp for schedule(dynamic, 1)
@@ -419,7 +459,7 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
           slot_elastic_[chunk + q] = results.elastic[q];
           slot_plastic_[chunk + q] = results.plastic[q];
           // The strength ratio of the contacts this rank reports: a maximum, exact in any order.
-          if (owner(first[chunk + q]) == me) peak2 = std::max(peak2, results.ratio2[q]);
+          if (first[chunk + q] - own_lo < own_count) peak2 = std::max(peak2, results.ratio2[q]);
         }
       // The task's sums, in slot order, in the same loop as the forces, so that their chains of
       // dependent additions overlap with the scatter's work. The sums a step does not read are left

@@ -34,9 +34,6 @@ public:
   /// recv gets every rank's `send` (counts[r] doubles each), in rank order at displs[r].
   virtual void gather_all(const double* send, int count, double* recv, const std::vector<int>& counts,
                           const std::vector<int>& displs) = 0;
-  /// In place, to rank 0: rank r's part data[displs[r] .. displs[r] + counts[r]) (doubles) is
-  /// copied into rank 0's data; the other ranks' data is left as it is (what only rank 0 writes).
-  virtual void collect(double* data, const std::vector<int>& counts, const std::vector<int>& displs) = 0;
   /// Rank 0's recv gets every rank's `send` (counts[r] doubles each, in rank order at displs[r]);
   /// the other ranks' recv is not touched (what only rank 0 writes: a checkpoint).
   virtual void gather(const double* send, int count, double* recv, const std::vector<int>& counts,

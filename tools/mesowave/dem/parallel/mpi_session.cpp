@@ -39,13 +39,6 @@ public:
                   const std::vector<int>& displs) override {
     MPI_Allgatherv(send, count, MPI_DOUBLE, recv, counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
   }
-  void collect(double* data, const std::vector<int>& counts, const std::vector<int>& displs) override {
-    if (rank_ == 0)
-      MPI_Gatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, data, counts.data(), displs.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-    else
-      MPI_Gatherv(data + displs[std::size_t(rank_)], counts[std::size_t(rank_)], MPI_DOUBLE, nullptr, nullptr, nullptr,
-                  MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  }
   void gather(const double* send, int count, double* recv, const std::vector<int>& counts,
               const std::vector<int>& displs) override {
     MPI_Gatherv(send, count, MPI_DOUBLE, recv, counts.data(), displs.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);

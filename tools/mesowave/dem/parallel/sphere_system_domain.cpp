@@ -7,7 +7,7 @@
 // results (interior contacts in slot order, then the cross-partition records in slot
 // order, then the external load): the order is set by the slot layout, which every rank
 // works out identically (contact detection runs on every rank from the same positions,
-// share_positions), and a contact's result depends only on its two spheres' state and its
+// whole_positions), and a contact's result depends only on its two spheres' state and its
 // own history. A rank holds and computes only the contacts with an end of its own (stage 3,
 // set_contacts: the whole layout's slots, filtered, in their order), and keeps their history
 // itself; the other end is its own or a ghost, received from its owner after every step
@@ -38,7 +38,7 @@ namespace mesowave::dem {
 namespace {
 
 // Test-only (tests/cli/mw_dem_mpi_test.cpp): MESOWAVE_TEST_GHOST_LAYER_MM keeps as ghosts only
-// the partners closer than that to their contact's own end, on the rank
+// the partners whose step-0 centre is closer than that to their contact's own end's, on the rank
 // MESOWAVE_TEST_GHOST_LAYER_RANK (all if unset), so that the missing-partner check is seen to fire.
 double test_ghost_layer_m() {
   const char* v = std::getenv("MESOWAVE_TEST_GHOST_LAYER_MM");
@@ -101,6 +101,14 @@ void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& ob
     while (std::size_t(k) < observed_.size() && observed_[std::size_t(k)] < end) ++k;
     observed_counts_[std::size_t(r)] = k - observed_displs_[std::size_t(r)];
   }
+  // The observed spheres join the held ones (the contacts' ends are renumbered with them).
+  for (auto* ends : {&first_, &second_})
+    for (std::uint32_t& k : *ends) k = held_ids_[k];
+  std::vector<std::uint32_t> ids(held_ids_);
+  ids.insert(ids.end(), observed_.begin(), observed_.end());
+  sort_unique(ids);
+  hold(std::move(ids));
+  number_contacts_locally();
   ghosts_stale_ = false;  // at step 0 every rank holds the same (initial) state of every sphere
   broken_ = std::size_t(domain.sum(kernel_->broken_bonds_in(reported_)));
 }
@@ -114,12 +122,14 @@ std::size_t SphereSystem::global_task_of(std::size_t s) const {
 }
 
 // After every new slot layout (set_contacts; `global_first`: the first sphere of each slot of the
-// whole layout): the reporters, the ghost lists and who adds which task's elastic sum.
+// whole layout; first_/second_ in global ids): the reporters, the ghost lists and who adds which
+// task's elastic sum; then the held spheres (hold: own, ghosts, observed) and the contacts'
+// local ids.
 void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first) {
   const std::size_t count = first_.size(), n = spheres_.size();
   const int ranks = domain_->size(), me = domain_->rank();
   const bool thinned = ghost_layer_rank_ < 0 || ghost_layer_rank_ == me;
-  const auto position = [&](std::uint32_t k) { return displacement_state_ ? spheres_.centre_m[k] + x_[k] : x_[k]; };
+  const auto centre = [&](std::uint32_t k) { return spheres_.centre_m[k]; };
   reported_.clear();
   std::vector<std::vector<std::uint32_t>> sends(static_cast<std::size_t>(ranks)), receives(static_cast<std::size_t>(ranks));
   for (std::size_t s = 0; s < count; ++s) {
@@ -131,7 +141,7 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
     const std::uint32_t mine = oi == me ? i : j, theirs = oi == me ? j : i;
     const int other = oi == me ? oj : oi;
     sends[std::size_t(other)].push_back(mine);
-    if (!thinned || norm(position(theirs) - position(mine)) <= ghost_layer_m_) receives[std::size_t(other)].push_back(theirs);
+    if (!thinned || norm(centre(theirs) - centre(mine)) <= ghost_layer_m_) receives[std::size_t(other)].push_back(theirs);
   }
   ghost_sends_.clear(), ghost_receives_.clear();
   ghosts_ = 0;
@@ -161,8 +171,8 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
                      " between spheres " + std::to_string(spheres_.packing_index[i]) + " and " +
                      std::to_string(spheres_.packing_index[j]) + " (packing ids) has lost its partner: sphere " +
                      std::to_string(spheres_.packing_index[missing]) + " is neither held nor a ghost on this rank (ghost layer " +
-                     format_number(ghost_layer_m_ * 1e3) + " mm, the contact " + format_number(norm(position(j) - position(i)) * 1e3) +
-                     " mm long): the layer must reach at least the longest bond plus the motion between exchanges");
+                     format_number(ghost_layer_m_ * 1e3) + " mm, the spheres " + format_number(norm(centre(j) - centre(i)) * 1e3) +
+                     " mm apart at step 0): the layer must reach at least the longest bond plus the motion between exchanges");
   }
   // The per-slot values are written by every step before they are read; they (and the owned
   // tasks' values) are allocated by the first step that needs them, not here: at setup the
@@ -217,6 +227,12 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
     if (!to[std::size_t(r)].empty()) elastic_sends_.push_back({r, std::move(to[std::size_t(r)]), {}});
     if (!from[std::size_t(r)].empty()) elastic_receives_.push_back({r, std::move(from[std::size_t(r)]), {}});
   }
+  std::vector<std::uint32_t> ids(observed_);
+  for (std::size_t k = own_begin_; k < own_end_; ++k) ids.push_back(std::uint32_t(k));
+  for (const auto& g : ghost_receives_) ids.insert(ids.end(), g.spheres.begin(), g.spheres.end());
+  sort_unique(ids);
+  hold(std::move(ids));
+  number_contacts_locally();
   ghosts_stale_ = true;
 }
 
@@ -289,7 +305,7 @@ void SphereSystem::exchange_ghosts() {
   for (auto& g : ghost_sends_) {
     g.buffer.resize(3 * vectors * g.spheres.size());
     double* o = g.buffer.data();
-    for (const std::uint32_t k : g.spheres)
+    for (const std::uint32_t k : g.local)
       for (std::size_t v = 0; v < vectors; ++v) {
         const Vec3& q = (*motion[v])[k];
         *o++ = q.x, *o++ = q.y, *o++ = q.z;
@@ -305,7 +321,7 @@ void SphereSystem::exchange_ghosts() {
   domain_->exchange(sends, receives);
   for (const auto& g : ghost_receives_) {
     const double* in = g.buffer.data();
-    for (const std::uint32_t k : g.spheres)
+    for (const std::uint32_t k : g.local)
       for (std::size_t v = 0; v < vectors; ++v) {
         Vec3& q = (*motion[v])[k];
         q.x = in[0], q.y = in[1], q.z = in[2];
@@ -325,7 +341,7 @@ void SphereSystem::share_step(bool evaluate_energy) {
   // The ghosts got this rank's share of their contacts' forces (every other end of a held contact
   // is a ghost, lay_out_domain checks): not this rank's to keep.
   for (const auto& g : ghost_receives_)
-    for (const std::uint32_t k : g.spheres) f_acc_[k] = {}, t_acc_[k] = {};
+    for (const std::uint32_t k : g.local) f_acc_[k] = {}, t_acc_[k] = {};
   exchange_ghosts();
 
   const int ranks = domain_->size(), me = domain_->rank();
@@ -372,7 +388,7 @@ void SphereSystem::share_step(bool evaluate_energy) {
     double* o = send_.data();
     for (std::size_t q = at(observed_displs_, me), e = q + at(observed_counts_, me); q < e; ++q)
       for (auto* m : observed_motion) {
-        const Vec3& p = (*m)[observed_[q]];
+        const Vec3& p = (*m)[observed_local_[q]];
         *o++ = p.x, *o++ = p.y, *o++ = p.z;
       }
     if (evaluate_energy)
@@ -392,7 +408,7 @@ void SphereSystem::share_step(bool evaluate_energy) {
     const bool mine = r == me;
     for (std::size_t q = at(observed_displs_, r), e = q + at(observed_counts_, r); q < e; ++q)
       for (auto* m : observed_motion) {
-        if (!mine) (*m)[observed_[q]] = {in[0], in[1], in[2]};
+        if (!mine) (*m)[observed_local_[q]] = {in[0], in[1], in[2]};
         in += 3;
       }
     const std::size_t b0 = at(block_displs_, r), nb = at(block_counts_, r);
@@ -419,16 +435,28 @@ void SphereSystem::share_step(bool evaluate_energy) {
   if (tasks > 0) task_peak2_[0] = peak2;  // a max: exact in any order
 }
 
-void SphereSystem::share_positions() {
-  if (domain_) domain_->share(&x_[0].x, sphere_counts_, sphere_displs_);
+const Vec3* SphereSystem::whole_positions(std::vector<Vec3>& buffer) const {
+  if (!domain_) return x_.data();
+  buffer.resize(spheres_.size());
+  std::copy(x_.begin() + std::ptrdiff_t(own_local_), x_.begin() + std::ptrdiff_t(own_local(own_end_)),
+            buffer.begin() + std::ptrdiff_t(own_begin_));
+  domain_->share(&buffer[0].x, sphere_counts_, sphere_displs_);
+  return buffer.data();
 }
 
-// To rank 0 only: it alone writes snapshots and checkpoints; the other ranks keep their own
-// spheres', ghosts' and observed spheres' motion current, and read no other.
+// To rank 0 only, into a whole copy kept until the next step: it alone writes snapshots and
+// checkpoints (through the Model interface, which reads the copy for the spheres it does not hold).
 void SphereSystem::collect_state() {
   if (!domain_) return;
-  for (std::vector<Vec3>* m : {&x_, &v_, &w_, &a_, &a_undamped_}) domain_->collect(&(*m)[0].x, sphere_counts_, sphere_displs_);
-  if (track_rotation_) domain_->collect(&theta_[0].x, sphere_counts_, sphere_displs_);
+  const bool root = domain_->rank() == 0;
+  const auto collect = [&](const std::vector<Vec3>& held, std::vector<Vec3>& whole) {
+    if (root) whole.resize(spheres_.size());
+    domain_->gather(&held[own_local_].x, int(3 * (own_end_ - own_begin_)), root ? &whole[0].x : nullptr, sphere_counts_,
+                    sphere_displs_);
+  };
+  collect(x_, collected_.x), collect(v_, collected_.v), collect(w_, collected_.w), collect(a_, collected_.a);
+  collect(a_undamped_, collected_.a_undamped);
+  if (track_rotation_) collect(theta_, collected_.theta);
 }
 
 void SphereSystem::collect_energy() {
@@ -485,8 +513,8 @@ std::string SphereSystem::distribution() const {
                                   3 * ((spheres_.size() + kSphereBlock - 1) / kSphereBlock) + global_slots_ - reported_.size()) * 8;
   return "rank " + std::to_string(domain_->rank()) + " of " + std::to_string(domain_->size()) + ": spheres " +
          std::to_string(own_begin_) + "-" + std::to_string(own_end_) + " of " + std::to_string(spheres_.size()) +
-         " (Morton order), " + std::to_string(ghosts_) + " ghosts from " + std::to_string(ghost_receives_.size()) +
-         " ranks, " + std::to_string(observed_.size()) + " observed spheres, " +
+         " (Morton order), " + std::to_string(held_sphere_count()) + " held, " + std::to_string(ghosts_) +
+         " ghosts from " + std::to_string(ghost_receives_.size()) + " ranks, " + std::to_string(observed_.size()) + " observed spheres, " +
          std::to_string(first_.size()) + " of " + std::to_string(global_slots_) + " contacts held here; received per step: " + std::to_string(ghost_doubles_ * 8 / steps) + " B of ghosts in " +
          format_number(double(ghost_messages_) / double(steps)) + " messages, " +
          std::to_string(shared_doubles_ * 8 / steps) + " B gathered (the replicated state of stage 1: " +
