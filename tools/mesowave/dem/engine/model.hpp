@@ -104,9 +104,9 @@ public:
   /// Everything that changes from step to step (positions, velocities,
   /// energies, the contact law's state), exactly (state_group.hpp), so that a
   /// run restarted from it continues to the same bits. Called between steps.
-  /// Distributed: on every rank (collective), after collect_state() and
-  /// collect_energy(); rank 0's `group` writes, the others' writes nowhere
-  /// (their spheres' arrays are not whole).
+  /// Distributed: on every rank (collective: the state is gathered to rank 0
+  /// as it is written), after collect_energy(); rank 0's `group` writes, the
+  /// others' writes nowhere.
   virtual void save_state(StateGroup& group) const = 0;
   /// Reads what save_state wrote, into a model built from the same scene and
   /// packing (distributed: on every rank, for any rank count); InputError if
@@ -124,9 +124,9 @@ public:
   /// for this domain (LawInput::domain), so that it never held the other ranks' contacts.
   /// InputError for a model that does not run distributed (the default).
   virtual void distribute(Domain& domain, const std::vector<std::size_t>& observed);
-  /// Distributed: gathers every sphere's motion to rank 0, which writes what reads them all (a
-  /// snapshot, a checkpoint) from a whole copy kept until the next step; collective: every rank
-  /// calls it. A no-op in one process.
+  /// Distributed: gathers every sphere's displacement and velocity to rank 0, which writes a
+  /// snapshot from this whole copy (kept until the next step); collective: every rank calls it.
+  /// A no-op in one process.
   virtual void collect_state() {}
   /// Distributed: makes energy() whole on this rank after a step that did not evaluate the
   /// energies (collective; the loop calls it once, after the last step). A no-op in one process.

@@ -385,10 +385,9 @@ RunReport Simulation::run() {
 }
 
 // The run's checkpoint (checkpoint.hpp): the loop's state, then each part's own. Distributed,
-// every rank takes part (the model gathers its state to rank 0, which writes the file; the
+// every rank takes part (the model gathers its state to rank 0 as it writes the file; the
 // actuators and sensors run alike on every rank, so rank 0's state is theirs).
 void Simulation::save_checkpoint(const std::filesystem::path& file, const CheckpointIdentity& identity) {
-  model_->collect_state();
   model_->collect_energy();
   const auto body = [&](StateGroup& root) {
     StateGroup run = root.create("run");

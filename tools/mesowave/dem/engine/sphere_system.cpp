@@ -279,7 +279,8 @@ double SphereSystem::impose_displacement(std::size_t sphere, const Vec3& e, doub
 }
 
 void SphereSystem::step(double dt, bool evaluate_energy) {
-  collected_ = {};  // rank 0's whole copy is spent (collect_state)
+  collected_ = {};  // rank 0's whole copy is spent (collect_state), and a checkpoint's slot order
+  gathered_slot_order_.clear(), slot_order_known_ = false;
   if (domain_ && slot_elastic_.size() != first_.size())  // after a new layout (lay_out_domain)
     for (auto* values : {&slot_elastic_, &slot_plastic_}) values->resize(first_.size());
   forced_v_before_.resize(forced_.size());
@@ -530,18 +531,19 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
 // sums kept per task and per sphere block, in the order they are added - and
 // the law's state. The law goes first: a new contact layout resets the per-task
 // plastic sums, which are then read over it.
-// Distributed, the caller has collected every sphere's state to rank 0 and every block's
-// damping (Model::save_state): rank 0 writes them; the other ranks' group writes nowhere.
+// Distributed, the caller has shared every block's damping (Model::save_state); each sphere array
+// is gathered to rank 0 as it is written, one at a time, and the other ranks' group writes nowhere.
 void SphereSystem::save_state(StateGroup& group) const {
-  const auto whole = [&](const std::vector<Vec3>& held, const std::vector<Vec3>& collected) -> const std::vector<Vec3>& {
-    return domain_ ? collected : held;
+  const auto write_spheres = [&](const char* name, const std::vector<Vec3>& held) {
+    if (!domain_) return group.write(name, held);
+    group.write(name, gathered_spheres(held));
   };
-  group.write("x", whole(x_, collected_.x));
-  group.write("v", whole(v_, collected_.v));
-  group.write("w", whole(w_, collected_.w));
-  group.write("a", whole(a_, collected_.a));
-  group.write("a_undamped", whole(a_undamped_, collected_.a_undamped));
-  if (track_rotation_) group.write("theta", whole(theta_, collected_.theta));
+  write_spheres("x", x_);
+  write_spheres("v", v_);
+  write_spheres("w", w_);
+  write_spheres("a", a_);
+  write_spheres("a_undamped", a_undamped_);
+  if (track_rotation_) write_spheres("theta", theta_);
   group.write("peak_ratio", peak_ratio_);
   group.write("max_speed", max_speed_);
   group.write("kinetic_J", energy_.kinetic_J);

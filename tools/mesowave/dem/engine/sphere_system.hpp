@@ -105,10 +105,11 @@ public:
   double radius(std::size_t k) const override { return spheres_.radius_m[k]; }
   double mass(std::size_t k) const override { return spheres_.mass_kg[k]; }
   std::uint32_t packing_index(std::size_t k) const override { return spheres_.packing_index[k]; }
-  /// Distributed, these read a held sphere, or on rank 0 after collect_state() any sphere.
+  /// Distributed, these read a held sphere; displacement() and velocity(), what a snapshot
+  /// writes, also any sphere on rank 0 after collect_state().
   Vec3 displacement(std::size_t k) const override;
   Vec3 velocity(std::size_t k) const override { return held_or_collected(v_, collected_.v, k); }
-  Vec3 acceleration(std::size_t k) const override { return held_or_collected(a_, collected_.a, k); }
+  Vec3 acceleration(std::size_t k) const override { return a_[local_id(k)]; }
   void add_external_force(std::size_t k, const Vec3& force) override;
   double impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) override;
   void set_velocity(std::size_t k, const Vec3& v) override { v_[local_id(k)] = v; }
@@ -144,7 +145,7 @@ public:
   const CohesiveFrictionalMaterial& material() const { return material_; }
   const ContactKernel& kernel() const { return *kernel_; }
   /// Angular velocity w_{n+1/2} of sphere k (and its initial value, for tests).
-  Vec3 angular_velocity(std::size_t k) const { return held_or_collected(w_, collected_.w, k); }
+  Vec3 angular_velocity(std::size_t k) const { return w_[local_id(k)]; }
   void set_angular_velocity(std::size_t k, const Vec3& w) { w_[local_id(k)] = w; }
 
   // What a contact kernel reads: the held spheres in local numbering (every sphere, in the
@@ -324,6 +325,14 @@ private:
   std::vector<std::uint32_t> global_interior_start_, global_slot_;
   std::size_t global_task_of(std::size_t global_slot) const;
   std::vector<double> gathered_slots(const std::vector<double>& held) const;  ///< write_slots' gather
+  /// Rank 0, from a checkpoint's first write_slots until the next step or layout: the whole
+  /// layout's slot of each value gathered (the reporters' slots in rank order), so that the
+  /// other arrays send their values only; `slot_order_known_` on every rank.
+  mutable std::vector<std::uint32_t> gathered_slot_order_;
+  mutable bool slot_order_known_ = false;
+  /// Distributed: rank 0 gets the whole array (global ids) gathered from each rank's own
+  /// spheres, the other ranks an empty one (collective).
+  std::vector<Vec3> gathered_spheres(const std::vector<Vec3>& held) const;
   Incidence cross_incidence_;                  ///< entries index out_ (slot - cross_begin_)
   std::vector<ContactOut> out_;
   std::vector<Vec3> out_moment_;  ///< moment of each contact between partitions (laws with moments only)
@@ -338,9 +347,9 @@ private:
   static constexpr std::size_t kNotHeld = ~std::size_t(0);
   /// Sphere k's local id, or kNotHeld.
   std::size_t find_local(std::size_t k) const;
-  /// Rank 0 after collect_state() (until the next step): every sphere's motion, in global ids.
+  /// Rank 0 after collect_state() (until the next step): every sphere's x and v, in global ids.
   struct Collected {
-    std::vector<Vec3> x, v, w, a, a_undamped, theta;
+    std::vector<Vec3> x, v;
   } collected_;
   template <class T>
   const T& held_or_collected(const std::vector<T>& held, const std::vector<T>& whole, std::size_t k) const {

@@ -233,6 +233,7 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
   sort_unique(ids);
   hold(std::move(ids));
   number_contacts_locally();
+  gathered_slot_order_.clear(), slot_order_known_ = false;
   ghosts_stale_ = true;
 }
 
@@ -444,19 +445,20 @@ const Vec3* SphereSystem::whole_positions(std::vector<Vec3>& buffer) const {
   return buffer.data();
 }
 
-// To rank 0 only, into a whole copy kept until the next step: it alone writes snapshots and
-// checkpoints (through the Model interface, which reads the copy for the spheres it does not hold).
+std::vector<Vec3> SphereSystem::gathered_spheres(const std::vector<Vec3>& held) const {
+  const bool root = domain_->rank() == 0;
+  std::vector<Vec3> whole(root ? spheres_.size() : 0);
+  domain_->gather(&held[own_local_].x, int(3 * (own_end_ - own_begin_)), root ? &whole[0].x : nullptr, sphere_counts_,
+                  sphere_displs_);
+  return whole;
+}
+
+// To rank 0 only, into a whole copy kept until the next step: it alone writes snapshots, through
+// the Model interface, which reads the copy for the spheres it does not hold.
 void SphereSystem::collect_state() {
   if (!domain_) return;
-  const bool root = domain_->rank() == 0;
-  const auto collect = [&](const std::vector<Vec3>& held, std::vector<Vec3>& whole) {
-    if (root) whole.resize(spheres_.size());
-    domain_->gather(&held[own_local_].x, int(3 * (own_end_ - own_begin_)), root ? &whole[0].x : nullptr, sphere_counts_,
-                    sphere_displs_);
-  };
-  collect(x_, collected_.x), collect(v_, collected_.v), collect(w_, collected_.w), collect(a_, collected_.a);
-  collect(a_undamped_, collected_.a_undamped);
-  if (track_rotation_) collect(theta_, collected_.theta);
+  collected_.x = gathered_spheres(x_);
+  collected_.v = gathered_spheres(v_);
 }
 
 void SphereSystem::collect_energy() {
@@ -465,14 +467,12 @@ void SphereSystem::collect_energy() {
 
 std::size_t SphereSystem::broken_bond_count() const { return domain_ ? broken_ : kernel_->broken_bond_count(); }
 
-// A checkpoint's per-slot array, whole on rank 0 (empty on the others): each rank's reported
-// slots (every slot of the whole layout once) as (slot, value), gathered there and put in place.
+// A checkpoint's per-slot array, whole on rank 0 (empty on the others): each rank's values of its
+// reported slots (every slot of the whole layout once), gathered there in rank order and put in
+// place. The slots themselves travel with the checkpoint's first array only (gathered_slot_order_).
 std::vector<double> SphereSystem::gathered_slots(const std::vector<double>& held) const {
   const int ranks = domain_->size();
-  std::vector<double> send;
-  send.reserve(2 * reported_.size());
-  for (const std::uint32_t s : reported_) send.push_back(double(global_slot_[s])), send.push_back(held[s]);  // exact below 2^53
-  const double mine = double(send.size());
+  const double mine = double(reported_.size());
   std::vector<double> sizes(static_cast<std::size_t>(ranks));
   std::vector<int> ones(static_cast<std::size_t>(ranks), 1), counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
   for (int r = 0; r < ranks; ++r) displs[std::size_t(r)] = r;
@@ -484,12 +484,19 @@ std::vector<double> SphereSystem::gathered_slots(const std::vector<double>& held
   }
   if (total > std::size_t(0x7fffffff)) throw InputError("a checkpoint's contacts exceed MPI's int counts in one gather");
   const bool root = domain_->rank() == 0;
-  std::vector<double> pairs(root ? total : 0);
-  domain_->gather(send.data(), int(send.size()), pairs.data(), counts, displs);
+  if (root && total != global_slots_) throw std::logic_error("SphereSystem::gathered_slots: the reporters do not cover the layout");
+  std::vector<double> send(reported_.size()), values(root ? total : 0);
+  if (!slot_order_known_) {
+    for (std::size_t k = 0; k < reported_.size(); ++k) send[k] = double(global_slot_[reported_[k]]);  // exact below 2^53
+    domain_->gather(send.data(), int(send.size()), values.data(), counts, displs);
+    gathered_slot_order_.assign(values.begin(), values.end());
+    slot_order_known_ = true;
+  }
+  for (std::size_t k = 0; k < reported_.size(); ++k) send[k] = held[reported_[k]];
+  domain_->gather(send.data(), int(send.size()), values.data(), counts, displs);
   if (!root) return {};
-  if (total != 2 * global_slots_) throw std::logic_error("SphereSystem::gathered_slots: the reporters do not cover the layout");
   std::vector<double> whole(global_slots_);
-  for (std::size_t k = 0; k < total; k += 2) whole[std::size_t(pairs[k])] = pairs[k + 1];
+  for (std::size_t k = 0; k < total; ++k) whole[gathered_slot_order_[k]] = values[k];
   return whole;
 }
 
