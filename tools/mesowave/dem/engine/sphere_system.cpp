@@ -455,28 +455,43 @@ bool SphereSystem::has_non_finite_state() const {
 
 // Distributed, a rank computes its own spheres' rows: from its held bonds (every bond with an end
 // of its own), in bond order (so each row sums the terms of one process in its order), with the other end's x
-// from its owner (ghost_rows).
+// from its owner (ghost_rows). Each end's M^-1/2 factors are taken once a call, per sphere (the same
+// 1/sqrt(m) and 1/sqrt(I) as per bond end, so the same bits): per bond end they were most of the work.
 void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
-  const std::size_t first = own_begin();
-  std::fill(y, y + 6 * (own_end() - first), 0.0);
+  const std::size_t first = own_begin(), own = own_end() - first;
+  std::fill(y, y + 6 * own, 0.0);
   std::vector<std::uint32_t> ghost_ids;
   const std::vector<double> ghost = domain_ ? ghost_rows(x, ghost_ids) : std::vector<double>();
-  const auto rows_of = [&](std::size_t k) {
-    if (is_own(k)) return x + 6 * (k - first);
-    return ghost.data() + 6 * std::size_t(std::lower_bound(ghost_ids.begin(), ghost_ids.end(), std::uint32_t(k)) - ghost_ids.begin());
+  // Per own sphere, then per ghost (in ghost_ids' order): 1/sqrt(m), 1/sqrt(I).
+  std::vector<double> scale(2 * (own + ghost_ids.size()));
+  const auto scale_of = [&](std::size_t at, std::size_t k) {
+    scale[2 * at] = 1.0 / std::sqrt(spheres_.mass_kg[k]);
+    scale[2 * at + 1] = 1.0 / std::sqrt(spheres_.inertia_kg_m2[k]);
   };
-  auto dof = [&](std::size_t k, int part) {
-    const double s = 1.0 / std::sqrt(part == 0 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
-    const double* v = rows_of(k) + 3 * part;
+  for (std::size_t k = 0; k < own; ++k) scale_of(k, first + k);
+  for (std::size_t g = 0; g < ghost_ids.size(); ++g) scale_of(own + g, ghost_ids[g]);
+  struct End {
+    const double* rows;  ///< x's six rows of the sphere
+    const double* scale;
+    double* y;  ///< its six rows of y, own spheres only
+  };
+  const auto end_of = [&](std::size_t k) {
+    if (is_own(k)) return End{x + 6 * (k - first), &scale[2 * (k - first)], y + 6 * (k - first)};
+    const auto g = std::size_t(std::lower_bound(ghost_ids.begin(), ghost_ids.end(), std::uint32_t(k)) - ghost_ids.begin());
+    return End{ghost.data() + 6 * g, &scale[2 * (own + g)], nullptr};
+  };
+  const auto dof = [](const End& e, int part) {
+    const double s = e.scale[part];
+    const double* v = e.rows + 3 * part;
     return Vec3{s * v[0], s * v[1], s * v[2]};
   };
-  auto add = [&](std::size_t k, int part, const Vec3& g) {
-    if (!is_own(k)) return;
-    const double s = 1.0 / std::sqrt(part == 0 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
-    for (int d = 0; d < 3; ++d) y[6 * (k - first) + 3 * std::size_t(part) + std::size_t(d)] -= s * g[d];  // K x = -(force)
+  const auto add = [](const End& e, int part, const Vec3& g) {
+    if (!e.y) return;
+    const double s = e.scale[part];
+    for (int d = 0; d < 3; ++d) e.y[3 * part + d] -= s * g[d];  // K x = -(force)
   };
   for_each_held_bond([&](std::size_t b) {
-    const std::size_t i = bonds_.first[b], j = bonds_.second[b];
+    const End i = end_of(bonds_.first[b]), j = end_of(bonds_.second[b]);
     const LinearBond lb = linear_bond(*this, b);
     Vec3 fi, mi, fj, mj;
     lb.forces(dof(i, 0), dof(i, 1), dof(j, 0), dof(j, 1), fi, mi, fj, mj);
@@ -502,11 +517,10 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
   for_each_held_bond([&](std::size_t b) {
     const std::size_t ends[2] = {bonds_.first[b], bonds_.second[b]};
     const LinearBond lb = linear_bond(*this, b);
-    double scale[12];
-    for (int c = 0; c < 12; ++c) {
-      const std::size_t k = ends[c / 6];
-      scale[c] = 1.0 / std::sqrt((c % 6) < 3 ? spheres_.mass_kg[k] : spheres_.inertia_kg_m2[k]);
-    }
+    double end_scale[2][2], scale[12];  // M^-1/2: each end's 1/sqrt(m) and 1/sqrt(I), once
+    for (int e = 0; e < 2; ++e)
+      end_scale[e][0] = 1.0 / std::sqrt(spheres_.mass_kg[ends[e]]), end_scale[e][1] = 1.0 / std::sqrt(spheres_.inertia_kg_m2[ends[e]]);
+    for (int c = 0; c < 12; ++c) scale[c] = end_scale[c / 6][(c % 6) < 3 ? 0 : 1];
     for (int c = 0; c < 12; ++c) {  // column c of the bond's 12 x 12 block
       Vec3 u[4] = {};
       u[c / 3][c % 3] = 1.0;
