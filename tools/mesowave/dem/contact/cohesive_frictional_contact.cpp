@@ -86,6 +86,10 @@ void CohesiveFrictionalContact::save_state(const SphereSystem& system, StateGrou
 }
 
 void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGroup& group) {
+  // The checkpoint replaces the per-slot arrays the law laid out at attach: gone first, so that
+  // they are not held beside the checkpoint's whole arrays (the restart's peak).
+  for (auto* array : {&nx_, &ny_, &nz_, &sx_, &sy_, &sz_, &overlap0_, &cohesive_}) std::vector<double>().swap(*array);
+  std::vector<std::uint32_t>().swap(bond_);
   const std::vector<std::uint32_t> first = group.read_uint32s("first"), second = group.read_uint32s("second");
   const std::size_t n = system.sphere_count(), nb = system.bond_count();
   bool fits = first.size() == second.size() && first.size() >= nb;

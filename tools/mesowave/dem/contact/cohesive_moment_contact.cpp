@@ -90,6 +90,7 @@ void CohesiveMomentContact::save_state(const SphereSystem& system, StateGroup& g
 }
 
 void CohesiveMomentContact::load_state(SphereSystem& system, const StateGroup& group) {
+  for (int d = 0; d < 3; ++d) std::vector<double>().swap(mb_[d]), std::vector<double>().swap(mt_[d]);  // as the base's
   CohesiveFrictionalContact::load_state(system, group);
   const char* axes[3] = {"x", "y", "z"};
   for (int d = 0; d < 3; ++d) {
