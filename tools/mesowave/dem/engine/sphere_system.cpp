@@ -280,7 +280,7 @@ double SphereSystem::impose_displacement(std::size_t sphere, const Vec3& e, doub
 
 void SphereSystem::step(double dt, bool evaluate_energy) {
   collected_ = {};  // rank 0's whole copy is spent (collect_state), and a checkpoint's slot order
-  gathered_slot_order_.clear(), slot_order_known_ = false;
+  forget_gathered_slots();
   if (domain_ && slot_elastic_.size() != first_.size())  // after a new layout (lay_out_domain)
     for (auto* values : {&slot_elastic_, &slot_plastic_}) values->resize(first_.size());
   forced_v_before_.resize(forced_.size());

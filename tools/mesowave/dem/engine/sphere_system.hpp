@@ -325,11 +325,14 @@ private:
   std::vector<std::uint32_t> global_interior_start_, global_slot_;
   std::size_t global_task_of(std::size_t global_slot) const;
   std::vector<double> gathered_slots(const std::vector<double>& held) const;  ///< write_slots' gather
-  /// Rank 0, from a checkpoint's first write_slots until the next step or layout: the whole
-  /// layout's slot of each value gathered (the reporters' slots in rank order), so that the
-  /// other arrays send their values only; `slot_order_known_` on every rank.
+  /// From a checkpoint's first write_slots until the next step or layout: on every rank each
+  /// rank's count of reported slots (empty: not gathered yet), and on rank 0 the whole layout's
+  /// slot of each value gathered (the reporters' slots in rank order), so that the other
+  /// arrays send their values only.
+  mutable std::vector<int> gathered_counts_;
   mutable std::vector<std::uint32_t> gathered_slot_order_;
-  mutable bool slot_order_known_ = false;
+  /// Forgets them (a new step or layout).
+  void forget_gathered_slots() { gathered_counts_.clear(), gathered_slot_order_.clear(); }
   /// Distributed: rank 0 gets the whole array (global ids) gathered from each rank's own
   /// spheres, the other ranks an empty one (collective).
   std::vector<Vec3> gathered_spheres(const std::vector<Vec3>& held) const;

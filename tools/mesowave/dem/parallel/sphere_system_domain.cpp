@@ -233,7 +233,7 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
   sort_unique(ids);
   hold(std::move(ids));
   number_contacts_locally();
-  gathered_slot_order_.clear(), slot_order_known_ = false;
+  forget_gathered_slots();
   ghosts_stale_ = true;
 }
 
@@ -472,28 +472,31 @@ std::size_t SphereSystem::broken_bond_count() const { return domain_ ? broken_ :
 // place. The slots themselves travel with the checkpoint's first array only (gathered_slot_order_).
 std::vector<double> SphereSystem::gathered_slots(const std::vector<double>& held) const {
   const int ranks = domain_->size();
-  const double mine = double(reported_.size());
-  std::vector<double> sizes(static_cast<std::size_t>(ranks));
-  std::vector<int> ones(static_cast<std::size_t>(ranks), 1), counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
-  for (int r = 0; r < ranks; ++r) displs[std::size_t(r)] = r;
-  domain_->gather_all(&mine, 1, sizes.data(), ones, displs);
+  const bool root = domain_->rank() == 0, first_array = gathered_counts_.empty();
+  if (first_array) {
+    const double mine = double(reported_.size());
+    std::vector<double> sizes(static_cast<std::size_t>(ranks));
+    std::vector<int> ones(static_cast<std::size_t>(ranks), 1), at(static_cast<std::size_t>(ranks));
+    for (int r = 0; r < ranks; ++r) at[std::size_t(r)] = r;
+    domain_->gather_all(&mine, 1, sizes.data(), ones, at);
+    gathered_counts_.assign(sizes.begin(), sizes.end());
+  }
+  std::vector<int> displs(static_cast<std::size_t>(ranks));
   std::size_t total = 0;
   for (int r = 0; r < ranks; ++r) {
-    counts[std::size_t(r)] = int(sizes[std::size_t(r)]), displs[std::size_t(r)] = int(total);
-    total += std::size_t(sizes[std::size_t(r)]);
+    displs[std::size_t(r)] = int(total);
+    total += std::size_t(gathered_counts_[std::size_t(r)]);
   }
   if (total > std::size_t(0x7fffffff)) throw InputError("a checkpoint's contacts exceed MPI's int counts in one gather");
-  const bool root = domain_->rank() == 0;
   if (root && total != global_slots_) throw std::logic_error("SphereSystem::gathered_slots: the reporters do not cover the layout");
   std::vector<double> send(reported_.size()), values(root ? total : 0);
-  if (!slot_order_known_) {
+  if (first_array) {
     for (std::size_t k = 0; k < reported_.size(); ++k) send[k] = double(global_slot_[reported_[k]]);  // exact below 2^53
-    domain_->gather(send.data(), int(send.size()), values.data(), counts, displs);
+    domain_->gather(send.data(), int(send.size()), values.data(), gathered_counts_, displs);
     gathered_slot_order_.assign(values.begin(), values.end());
-    slot_order_known_ = true;
   }
   for (std::size_t k = 0; k < reported_.size(); ++k) send[k] = held[reported_[k]];
-  domain_->gather(send.data(), int(send.size()), values.data(), counts, displs);
+  domain_->gather(send.data(), int(send.size()), values.data(), gathered_counts_, displs);
   if (!root) return {};
   std::vector<double> whole(global_slots_);
   for (std::size_t k = 0; k < total; ++k) whole[gathered_slot_order_[k]] = values[k];
