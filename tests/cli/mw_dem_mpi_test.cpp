@@ -214,6 +214,30 @@ TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesT
     EXPECT_EQ(j["broken_bonds"], nlohmann::json::parse(test::read_file(dir / np))["broken_bonds"]) << np;
 }
 
+// More contacts than one partition holds (crushing_block(13): 8,788 spheres, two partitions, so
+// contacts inside each and across them, in groups that the ranks' sphere ranges cut), and
+// detected ones among them (bond factor C_f 1.0: a neighbour just apart is a frictional contact,
+// not a bond): each rank detects its own contacts and places them in the whole layout from the
+// ranks' counts (set_held_contacts), and the files are one process's - a wave, and a compression
+// that detects contacts and drops them as it goes (11 passes, each a new layout).
+TEST(MwDemMpi, DetectedContactsOfTwoPartitionsLaidOutFromTheRanksCountsWriteTheSameFiles) {
+  test::TempDir dir;
+  dem::write_packing_file(dir / "block.h5", dem::testing::crushing_block(13));
+  const auto unbonded = [](std::string scene) {
+    return scene.replace(scene.find("bond_factor = 1.1"), 17, "bond_factor = 1.0");
+  };
+  test::write_file(dir / "wave.toml", unbonded(wave_scene(dir / "block.h5")));
+  expect_same_files_on_ranks(dir, "wave.toml", {"--model", "full", "--duration-ms", "0.004"}, {3});
+  const auto wave = nlohmann::json::parse(test::read_file(dir / "one.json"));
+  ASSERT_NO_FATAL_FAILURE(write_crush_scene(dir));
+  const std::string crush = unbonded(test::read_file(dir / "crush.toml"));
+  test::write_file(dir / "crush.toml", crush.substr(0, crush.find("[test]")));  // before the peak: no test's analysis
+  expect_same_files_on_ranks(dir, "crush.toml", {"--duration-ms", "0.08"}, {3});
+  const auto crushed = nlohmann::json::parse(test::read_file(dir / "one.json"));
+  EXPECT_GT(wave["contacts"].get<std::size_t>(), wave["bonds"].get<std::size_t>());     // pairs at step 0
+  EXPECT_NE(crushed["contacts"].get<std::size_t>(), wave["contacts"].get<std::size_t>());  // detected anew
+}
+
 // A checkpoint written on several ranks holds the whole layout in its slot order: it is the
 // same file, byte for byte, as one process's at that step, and a restart on another rank count
 // writes the files of the run that never stopped - bonds broken before and after it, contacts

@@ -154,57 +154,65 @@ void CohesiveFrictionalContact::after_step(SphereSystem& system, double dt) {
 void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   travelled_ = 0;
   ++detection_passes_;
-  std::vector<Vec3> gathered;  // distributed: every rank detects from every sphere's position
-  const Vec3* x = system.whole_positions(gathered);
   const SphereSet& spheres = system.spheres();
   const BondNetwork& bonds = system.bonds();
-  const std::size_t n = spheres.size(), nb = bonds.size();
-  std::vector<std::array<double, 3>> pos(n);
-  for (std::size_t k = 0; k < n; ++k) pos[k] = {x[k].x, x[k].y, x[k].z};
-  const double r_min = *std::min_element(spheres.radius_m.begin(), spheres.radius_m.end());
+  const auto [r_min, r_max] = std::minmax_element(spheres.radius_m.begin(), spheres.radius_m.end());
+  const double factor = 1.0 + margin_ / (2.0 * *r_min);
+  // This rank's contacts (every contact in one process): those with an end of its own.
+  const std::vector<std::uint32_t> held_bonds = system.held_bond_ids();
+  const std::size_t nb = held_bonds.size();
 
-  // Where each bond and each detected pair lives now.
+  // Where each held bond and each detected pair lives now.
   std::vector<std::uint32_t> slot_of_bond(nb, kNoBond);
   std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> old_pairs;
   for (std::size_t s = 0; s < bond_.size(); ++s) {
-    if (bond_[s] != kNoBond) slot_of_bond[bond_[s]] = std::uint32_t(s);
+    if (bond_[s] != kNoBond)
+      slot_of_bond[std::size_t(std::lower_bound(held_bonds.begin(), held_bonds.end(), bond_[s]) - held_bonds.begin())] = std::uint32_t(s);
     else old_pairs.emplace_back(system.global_id(system.first(s)), system.global_id(system.second(s)), std::uint32_t(s));
   }
   std::sort(old_pairs.begin(), old_pairs.end());
 
   // The contacts: the bonds, then the detected pairs (each with its old slot, or kNoBond when
-  // new). Their state is looked up only for the slots laid out here (a distributed run keeps
-  // its rank's share), never for the whole list at once.
-  std::vector<std::uint32_t> first(bonds.first), second(bonds.second), known_slot;
+  // new, with its normal). Their state is looked up only for the slots laid out here.
+  std::vector<std::uint32_t> first(nb), second(nb), known_slot;
+  std::vector<Vec3> normal;
+  for (std::size_t k = 0; k < nb; ++k) first[k] = bonds.first[held_bonds[k]], second[k] = bonds.second[held_bonds[k]];
   {
-    const auto pairs = find_pairs_within(pos, spheres.radius_m, 1.0 + margin_ / (2.0 * r_min));
-    std::vector<std::array<double, 3>>().swap(pos);
+    const auto near = system.spheres_near_own(factor * 2.0 * *r_max);
+    const auto pairs = find_pairs_within(near.centres, near.radii, factor);
+    const auto at = [&](std::uint32_t q) { return Vec3{near.centres[q][0], near.centres[q][1], near.centres[q][2]}; };
     std::size_t b = 0;  // bonds and pairs are both sorted by (first, second)
     for (const auto& p : pairs) {
-      const double reach = spheres.radius_m[p.i] + spheres.radius_m[p.j] + margin_;
-      if (norm2(x[p.j] - x[p.i]) > reach * reach) continue;
-      while (b < nb && (bonds.first[b] < p.i || (bonds.first[b] == p.i && bonds.second[b] < p.j))) ++b;
-      if (b < nb && bonds.first[b] == p.i && bonds.second[b] == p.j) continue;  // bonded
-      const auto known = std::lower_bound(old_pairs.begin(), old_pairs.end(), std::make_tuple(p.i, p.j, 0u));
-      first.push_back(p.i);
-      second.push_back(p.j);
-      known_slot.push_back(known != old_pairs.end() && std::get<0>(*known) == p.i && std::get<1>(*known) == p.j
+      const std::uint32_t i = near.ids[p.i], j = near.ids[p.j];
+      if (!system.is_own(i) && !system.is_own(j)) continue;
+      const double reach = spheres.radius_m[i] + spheres.radius_m[j] + margin_;
+      const Vec3 d = at(p.j) - at(p.i);
+      if (norm2(d) > reach * reach) continue;
+      while (b < nb && (first[b] < i || (first[b] == i && second[b] < j))) ++b;
+      if (b < nb && first[b] == i && second[b] == j) continue;  // bonded
+      const auto known = std::lower_bound(old_pairs.begin(), old_pairs.end(), std::make_tuple(i, j, 0u));
+      first.push_back(i);
+      second.push_back(j);
+      known_slot.push_back(known != old_pairs.end() && std::get<0>(*known) == i && std::get<1>(*known) == j
                                ? std::get<2>(*known)
                                : kNoBond);
+      normal.push_back(known_slot.back() == kNoBond ? (1.0 / norm(d)) * d : Vec3{});
     }
   }
   // Same contacts as before (the usual case for waves: bonds only): keep the layout.
-  if (detection_passes_ > 1 && first.size() == nb && system.global_slot_count() == nb) return;
+  const std::size_t pairs = system.sum_over_ranks(first.size() - nb);
+  if (detection_passes_ > 1 && pairs == 0 && system.global_slot_count() == system.bond_count()) return;
   before_relayout(system);
-  const auto order = system.set_contacts(first, second, moments());
+  const auto order = system.set_held_contacts(first, second, nb, moments());
   set_slots(order.size(), [&](std::size_t s) {
     const std::uint32_t c = order[s];
-    if (c < nb)
+    if (c < nb) {
+      const std::uint32_t bond = held_bonds[c];
       return slot_of_bond[c] != kNoBond ? slot(slot_of_bond[c])
-                                        : Slot{system.bond_normal0(c), {}, system.bond_overlap0(c), c, kCohesive};
+                                        : Slot{system.bond_normal0(bond), {}, system.bond_overlap0(bond), bond, kCohesive};
+    }
     if (const std::uint32_t old = known_slot[c - nb]; old != kNoBond) return slot(old);
-    const Vec3 d = x[second[c]] - x[first[c]];
-    return Slot{(1.0 / norm(d)) * d, {}, 0.0, kNoBond, kFrictional};
+    return Slot{normal[c - nb], {}, 0.0, kNoBond, kFrictional};
   });
   after_relayout(system);
 }

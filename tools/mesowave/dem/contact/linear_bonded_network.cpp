@@ -9,8 +9,7 @@
 namespace mesowave::dem {
 
 void LinearBondedNetwork::attach(SphereSystem& system) {
-  const BondNetwork& bonds = system.bonds();
-  const auto order = system.set_contacts(bonds.first, bonds.second);
+  const auto order = system.set_bond_contacts();
   const std::size_t m = order.size();
   nx_.resize(m), ny_.resize(m), nz_.resize(m), overlap0_.resize(m);
   for (std::size_t s = 0; s < m; ++s) {

@@ -181,6 +181,13 @@ std::size_t SphereSystem::held_bond(std::size_t b) const {
   return std::size_t(at - held_cross_bonds_.begin());
 }
 
+std::vector<std::uint32_t> SphereSystem::held_bond_ids() const {
+  std::vector<std::uint32_t> ids;
+  ids.reserve(held_cross_bonds_.size() + held_bond_end_ - held_bond_begin_);
+  for_each_held_bond([&](std::size_t b) { ids.push_back(std::uint32_t(b)); });
+  return ids;
+}
+
 std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
                                                       const std::vector<std::uint32_t>& second, bool moments) {
   const std::size_t count = first.size();
@@ -200,27 +207,51 @@ std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uin
     order[p == second[c] / sphere_chunk_ ? fill[p]++ : cross++] = std::uint32_t(c);
   }
   global_slots_ = count;
-  global_cross_blocks_ = (count - global_cross_begin_ + kContactBlock - 1) / kContactBlock;
-  // Distributed: the slots with an end of this rank's own, in the same order (held_here).
-  std::vector<std::uint32_t> global_first;
-  if (domain_) {
-    global_first.resize(count);
-    global_slot_.clear();
-    for (std::size_t s = 0; s < count; ++s) {
-      const std::uint32_t c = order[s];
-      global_first[s] = first[c];
-      if (held_here(first[c], second[c])) global_slot_.push_back(std::uint32_t(s));
-    }
-    interior_start_.resize(partitions_ + 1);
-    for (std::size_t p = 0; p <= partitions_; ++p)
-      interior_start_[p] = std::uint32_t(std::lower_bound(global_slot_.begin(), global_slot_.end(), global_interior_start_[p]) -
-                                         global_slot_.begin());
-    for (std::size_t s = 0; s < global_slot_.size(); ++s) order[s] = order[global_slot_[s]];
-    order.resize(global_slot_.size());
-  } else {
+  if (!domain_) {
     interior_start_ = global_interior_start_;
+    return finish_layout(first, second, std::move(order), moments);
   }
+  // Distributed: the slots with an end of this rank's own, in the same order (held_here), and
+  // the whole layout's reporters.
+  global_slot_.clear();
+  slot_runs_.clear();
+  for (std::size_t s = 0; s < count; ++s) {
+    const std::uint32_t c = order[s];
+    if (const int r = owner(first[c]); slot_runs_.empty() || slot_runs_.back().second != r)
+      slot_runs_.emplace_back(std::uint32_t(s), r);
+    if (held_here(first[c], second[c])) global_slot_.push_back(std::uint32_t(s));
+  }
+  interior_start_.resize(partitions_ + 1);
+  for (std::size_t p = 0; p <= partitions_; ++p)
+    interior_start_[p] = std::uint32_t(std::lower_bound(global_slot_.begin(), global_slot_.end(), global_interior_start_[p]) -
+                                       global_slot_.begin());
+  for (std::size_t s = 0; s < global_slot_.size(); ++s) order[s] = order[global_slot_[s]];
+  order.resize(global_slot_.size());
+  return finish_layout(first, second, std::move(order), moments);
+}
+
+std::vector<std::uint32_t> SphereSystem::set_held_contacts(const std::vector<std::uint32_t>& first,
+                                                           const std::vector<std::uint32_t>& second, std::size_t bonds,
+                                                           bool moments) {
+  if (!domain_) return set_contacts(first, second, moments);
+  return finish_layout(first, second, lay_out_held(first, second, bonds), moments);
+}
+
+std::vector<std::uint32_t> SphereSystem::set_bond_contacts() {
+  if (!domain_) return set_contacts(bonds_.first, bonds_.second);
+  const std::vector<std::uint32_t> held = held_bond_ids();
+  std::vector<std::uint32_t> first(held.size()), second(held.size());
+  for (std::size_t k = 0; k < held.size(); ++k) first[k] = bonds_.first[held[k]], second[k] = bonds_.second[held[k]];
+  std::vector<std::uint32_t> order = set_held_contacts(first, second, held.size());
+  for (std::uint32_t& c : order) c = held[c];
+  return order;
+}
+
+std::vector<std::uint32_t> SphereSystem::finish_layout(const std::vector<std::uint32_t>& first,
+                                                       const std::vector<std::uint32_t>& second,
+                                                       std::vector<std::uint32_t> order, bool moments) {
   const std::size_t held = order.size();
+  global_cross_blocks_ = (global_slots_ - global_cross_begin_ + kContactBlock - 1) / kContactBlock;
   cross_begin_ = interior_start_[partitions_];
   first_.resize(held);
   second_.resize(held);
@@ -228,7 +259,7 @@ std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uin
     first_[s] = first[order[s]];
     second_[s] = second[order[s]];
   }
-  if (domain_) lay_out_domain(global_first);  // the ghosts and the held spheres, then the local ids
+  if (domain_) lay_out_domain();  // the ghosts and the held spheres, then the local ids
   else number_contacts_locally();
   out_.assign(held - cross_begin_, ContactOut{});
   if (moments) out_moment_.assign(held - cross_begin_, Vec3{});

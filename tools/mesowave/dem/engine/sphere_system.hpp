@@ -31,6 +31,7 @@
 // that first < second and every sphere's order of terms survive; the Model interface takes
 // global ids (the packing's order), a contact kernel reads local ones.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -129,15 +130,30 @@ public:
   std::string distribution() const override;
   void collect_state() override;
   void collect_energy() override;
-  /// Every sphere's position (positions(), in global ids), for contact detection: in one process
-  /// the system's own array; distributed (collective), each rank's own spheres' gathered into
-  /// `buffer` on every rank.
-  const Vec3* whole_positions(std::vector<Vec3>& buffer) const;
+  /// What contact detection searches: the spheres within `reach_m` of one of this process's own
+  /// (all of them in one process), sorted by global id, with their positions (positions()) and
+  /// radii. Distributed (collective), a rank's own spheres and a geometric ghost layer: every
+  /// other rank's sphere blocks whose centres' bounding box comes within `reach_m` of one of this
+  /// rank's blocks' (docs/mpi.md), so that any pair closer than `reach_m` with an end of its own
+  /// is found, on both ranks when the ends are on two, from the same positions.
+  struct Nearby {
+    std::vector<std::uint32_t> ids;
+    std::vector<std::array<double, 3>> centres;
+    std::vector<double> radii;
+  };
+  Nearby spheres_near_own(double reach_m);
+  /// The sum of every rank's count (itself in one process; collective).
+  std::size_t sum_over_ranks(std::size_t count) const;
 
   const SphereSet& spheres() const { return spheres_; }
   /// The bonds' pairs (first, second). Their step-0 normals and u_0 are bond_normal0() and
   /// bond_overlap0(); the system keeps no incidence (only the model's choice reads it, before).
   const BondNetwork& bonds() const { return bonds_; }
+  /// Sphere k (a global id) is this rank's own (every sphere is in one process).
+  bool is_own(std::size_t k) const { return k >= own_begin() && k < own_end(); }
+  /// The bonds with an end of this rank's own (all in one process), ascending: so sorted by
+  /// (first, second) too.
+  std::vector<std::uint32_t> held_bond_ids() const;
   /// Bond b's unit normal and u_0 at step 0. Distributed, a rank keeps them only for the bonds
   /// with an end of its own (docs/mpi.md); std::logic_error for another.
   Vec3 bond_normal0(std::size_t b) const { return bond_normal0_[held_bond(b)]; }
@@ -228,6 +244,18 @@ public:
   /// the rank sums the serial terms in the serial order), and `order` has one entry a slot held.
   std::vector<std::uint32_t> set_contacts(const std::vector<std::uint32_t>& first,
                                           const std::vector<std::uint32_t>& second, bool moments = false);
+  /// The same layout from this rank's part of the list only (contact detection on several
+  /// ranks, which never sees the whole list): the contacts with an end of its own, in the
+  /// order of a whole list made of the bonds (by bond index) then the detected pairs (sorted
+  /// by (first, second)); the first `bonds` are bonds. The whole layout's order is worked out
+  /// from each rank's counts, and the slot of a contact across two ranks is sent by the rank of
+  /// its first sphere (collective). In one process, set_contacts(first, second, moments).
+  std::vector<std::uint32_t> set_held_contacts(const std::vector<std::uint32_t>& first,
+                                               const std::vector<std::uint32_t>& second, std::size_t bonds,
+                                               bool moments = false);
+  /// The bonds as the contacts (a network without detection): set_held_contacts of the held
+  /// bonds; returns the bond in each slot.
+  std::vector<std::uint32_t> set_bond_contacts();
 
   /// Runs kernel(slot, result) for every contact; call it from contact_forces
   /// (inside the step's parallel region). The kernel runs on chunks of
@@ -409,20 +437,35 @@ private:
   // What the steps moved into this rank (docs/mpi.md's model): doubles received point to point
   // and by the collectives, and the exchanges counted.
   std::uint64_t ghost_doubles_ = 0, shared_doubles_ = 0, shared_steps_ = 0, ghost_messages_ = 0;
+  std::size_t layer_spheres_ = 0;  ///< the last detection pass's geometric ghost layer (spheres_near_own)
   int owner(std::uint32_t sphere) const { return block_owner_[sphere / kSphereBlock]; }
   /// This rank's spheres [own_begin(), own_end()): all of them in one process.
   std::size_t own_begin() const { return domain_ ? own_begin_ : 0; }
   std::size_t own_end() const { return domain_ ? own_end_ : spheres_.size(); }
   /// Own sphere k's local id.
   std::size_t own_local(std::size_t k) const { return k - own_begin() + own_local_; }
-  bool is_own(std::size_t k) const { return k >= own_begin() && k < own_end(); }
   /// The critical step's vectors at the ghosts (scaled_stiffness_action): x's rows of the spheres
   /// each neighbour holds as ghosts go there; returns the ghosts' rows (six a sphere) in the order
   /// of `ghost_ids`, the ghosts of every neighbour in rank order (so sorted by id).
   std::vector<double> ghost_rows(const double* x, std::vector<std::uint32_t>& ghost_ids) const;
   bool held_here(std::uint32_t i, std::uint32_t j) const;
   void split(Domain& domain);
-  void lay_out_domain(const std::vector<std::uint32_t>& global_first);
+  /// The slots of the whole layout by reporter (the rank of the first sphere): runs of
+  /// consecutive slots, each (first slot, rank), ascending; the last ends at global_slots_.
+  /// At most 2 (partitions + 1) runs a rank for a layout of set_held_contacts.
+  std::vector<std::pair<std::uint32_t, int>> slot_runs_;
+  /// Calls f(rank, begin, end) for each run's part in the whole layout's slots [begin, end).
+  template <class F>
+  void for_each_reporter(std::size_t begin, std::size_t end, const F& f) const;
+  /// set_held_contacts' whole layout (global_* and slot_runs_) from the ranks' counts, and the
+  /// held slots' places in it (global_slot_, interior_start_); returns the order (collective).
+  std::vector<std::uint32_t> lay_out_held(const std::vector<std::uint32_t>& first, const std::vector<std::uint32_t>& second,
+                                          std::size_t bonds);
+  /// set_contacts' and set_held_contacts' common end: the held contacts (global ids, `order`
+  /// into the lists given) in slot order, then the ghosts, the held spheres and the local ids.
+  std::vector<std::uint32_t> finish_layout(const std::vector<std::uint32_t>& first, const std::vector<std::uint32_t>& second,
+                                           std::vector<std::uint32_t> order, bool moments);
+  void lay_out_domain();
   void exchange_ghosts();
   void share_step(bool evaluate_energy);
   void share_elastic();

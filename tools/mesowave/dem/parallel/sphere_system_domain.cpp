@@ -6,10 +6,11 @@
 // Why the bits match. A sphere's force is the sum, in a fixed order, of its contacts'
 // results (interior contacts in slot order, then the cross-partition records in slot
 // order, then the external load): the order is set by the slot layout, which every rank
-// works out identically (contact detection runs on every rank from the same positions,
-// whole_positions), and a contact's result depends only on its two spheres' state and its
-// own history. A rank holds and computes only the contacts with an end of its own (stage 3,
-// set_contacts: the whole layout's slots, filtered, in their order), and keeps their history
+// places its contacts in identically (set_contacts from the whole list, or set_held_contacts
+// from each rank's counts when each rank detects its own contacts, spheres_near_own), and a
+// contact's result depends only on its two spheres' state and its own history. A rank holds
+// and computes only the contacts with an end of its own (stage 3: the whole layout's slots,
+// filtered, in their order), and keeps their history
 // itself; the other end is its own or a ghost, received from its owner after every step
 // (stage 2: only the ghosts, point to point, instead of the whole state). So its own spheres
 // get every term in the serial order from the serial inputs.
@@ -121,11 +122,111 @@ std::size_t SphereSystem::global_task_of(std::size_t s) const {
                      global_interior_start_.begin()) - 1;
 }
 
-// After every new slot layout (set_contacts; `global_first`: the first sphere of each slot of the
-// whole layout; first_/second_ in global ids): the reporters, the ghost lists and who adds which
-// task's elastic sum; then the held spheres (hold: own, ghosts, observed) and the contacts'
-// local ids.
-void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first) {
+template <class F>
+void SphereSystem::for_each_reporter(std::size_t begin, std::size_t end, const F& f) const {
+  if (begin >= end) return;
+  auto run = std::upper_bound(slot_runs_.begin(), slot_runs_.end(), begin,
+                              [](std::size_t s, const std::pair<std::uint32_t, int>& r) { return s < r.first; });
+  for (--run; run != slot_runs_.end() && run->first < end; ++run) {
+    const std::size_t run_end = run + 1 != slot_runs_.end() ? (run + 1)->first : global_slots_;
+    f(run->second, std::max<std::size_t>(begin, run->first), std::min(end, run_end));
+  }
+}
+
+// Each rank's held contacts (an end of its own) in the whole list's order: bonds, then pairs.
+// The whole layout puts, group by group (the partitions' interiors, then the contacts across
+// them), the group's bonds before its pairs, and each of these rank after rank (the whole list's
+// order, sorted by first sphere, is the reporters' order): so a count a rank, group and part
+// places every run, and a reporter counts its slots off its runs. A contact across two ranks
+// gets its slot from its reporter, which sends (slot, first, second) in the held order, the
+// same on both sides: both detect it, from the same positions.
+std::vector<std::uint32_t> SphereSystem::lay_out_held(const std::vector<std::uint32_t>& first,
+                                                      const std::vector<std::uint32_t>& second, std::size_t bonds) {
+  const int ranks = domain_->size(), me = rank_;
+  const std::size_t count = first.size(), groups = partitions_ + 1, parts = 2 * groups;
+  const auto part_of = [&](std::size_t c) {
+    const std::size_t p = first[c] / sphere_chunk_;
+    return (c < bonds ? 0 : groups) + (p == second[c] / sphere_chunk_ ? p : partitions_);
+  };
+  std::vector<double> mine(parts, 0.0), all(parts * std::size_t(ranks));
+  for (std::size_t c = 0; c < count; ++c) {
+    if (!is_own(first[c]) && !is_own(second[c]))
+      throw std::logic_error("SphereSystem::set_held_contacts: a contact with no end of this rank's own");
+    if (is_own(first[c])) mine[part_of(c)] += 1;  // exact below 2^53
+  }
+  std::vector<int> counts(static_cast<std::size_t>(ranks), int(parts)), displs(static_cast<std::size_t>(ranks));
+  for (int r = 0; r < ranks; ++r) displs[std::size_t(r)] = int(parts) * r;
+  domain_->gather_all(mine.data(), int(parts), all.data(), counts, displs);
+  std::vector<std::size_t> next(parts);  // this rank's next slot in each part
+  global_interior_start_.assign(partitions_ + 1, 0);
+  slot_runs_.clear();
+  std::size_t slot = 0;
+  for (std::size_t g = 0; g < groups; ++g) {
+    if (g < partitions_) global_interior_start_[g] = std::uint32_t(slot);
+    else global_cross_begin_ = slot;
+    for (const std::size_t part : {g, groups + g})
+      for (int r = 0; r < ranks; ++r) {
+        if (r == me) next[part] = slot;
+        const auto n = std::size_t(all[std::size_t(r) * parts + part]);
+        if (n > 0 && (slot_runs_.empty() || slot_runs_.back().second != r)) slot_runs_.emplace_back(std::uint32_t(slot), r);
+        slot += n;
+      }
+  }
+  global_interior_start_[partitions_] = std::uint32_t(global_cross_begin_);
+  global_slots_ = slot;
+  if (global_slots_ > std::size_t(0xffffffff))
+    throw InputError(std::to_string(global_slots_) + " contacts: more than 32-bit slots address");
+
+  std::vector<std::uint32_t> slot_of(count);
+  std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks)), in(static_cast<std::size_t>(ranks));
+  std::vector<std::vector<std::uint32_t>> waiting(static_cast<std::size_t>(ranks));  // held contacts reported elsewhere
+  for (std::size_t c = 0; c < count; ++c) {
+    if (const int oi = owner(first[c]); oi != me) {
+      waiting[std::size_t(oi)].push_back(std::uint32_t(c));
+      continue;
+    }
+    slot_of[c] = std::uint32_t(next[part_of(c)]++);
+    if (const int oj = owner(second[c]); oj != me)
+      out[std::size_t(oj)].insert(out[std::size_t(oj)].end(), {double(slot_of[c]), double(first[c]), double(second[c])});
+  }
+  std::vector<Domain::Message> sends, receives;
+  for (int r = 0; r < ranks; ++r) {
+    auto& o = out[std::size_t(r)];
+    auto& i = in[std::size_t(r)];
+    if (!o.empty()) sends.push_back({r, o.data(), int(o.size())});
+    if (!waiting[std::size_t(r)].empty()) {
+      i.assign(3 * waiting[std::size_t(r)].size(), -1.0);
+      receives.push_back({r, i.data(), int(i.size())});
+    }
+  }
+  domain_->exchange(sends, receives);
+  for (int r = 0; r < ranks; ++r)
+    for (std::size_t k = 0; k < waiting[std::size_t(r)].size(); ++k) {
+      const std::uint32_t c = waiting[std::size_t(r)][k];
+      const double* t = &in[std::size_t(r)][3 * k];
+      if (t[1] != double(first[c]) || t[2] != double(second[c]))
+        throw std::logic_error("rank " + std::to_string(me) + ": its contacts with rank " + std::to_string(r) +
+                               " are not the ones that rank reports (the contact between spheres " + std::to_string(first[c]) +
+                               " and " + std::to_string(second[c]) + ")");
+      slot_of[c] = std::uint32_t(t[0]);
+    }
+
+  std::vector<std::uint32_t> order(count);
+  for (std::size_t c = 0; c < count; ++c) order[c] = std::uint32_t(c);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return slot_of[a] < slot_of[b]; });
+  global_slot_.resize(count);
+  for (std::size_t s = 0; s < count; ++s) global_slot_[s] = slot_of[order[s]];
+  interior_start_.resize(partitions_ + 1);
+  for (std::size_t p = 0; p <= partitions_; ++p)
+    interior_start_[p] = std::uint32_t(std::lower_bound(global_slot_.begin(), global_slot_.end(), global_interior_start_[p]) -
+                                       global_slot_.begin());
+  return order;
+}
+
+// After every new slot layout (set_contacts, set_held_contacts; first_/second_ in global ids):
+// the reporters, the ghost lists and who adds which task's elastic sum; then the held spheres
+// (hold: own, ghosts, observed) and the contacts' local ids.
+void SphereSystem::lay_out_domain() {
   const std::size_t count = first_.size(), n = spheres_.size();
   const int ranks = domain_->size(), me = domain_->rank();
   const bool thinned = ghost_layer_rank_ < 0 || ghost_layer_rank_ == me;
@@ -182,7 +283,7 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
   // The elastic sum of each task of the whole layout is taken, in slot order, by the rank that
   // reports most of its slots (ties: the lowest); the reporters of its other slots send it
   // their values (point to point), in slot order on both sides.
-  const std::size_t tasks = partitions_ + global_cross_blocks_, slots = global_first.size();
+  const std::size_t tasks = partitions_ + global_cross_blocks_, slots = global_slots_;
   const auto task_range = [&](std::size_t task) {
     const bool interior = task < partitions_;
     const std::size_t begin =
@@ -195,7 +296,7 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
   for (std::size_t task = 0; task < tasks; ++task) {
     const auto [begin, end] = task_range(task);
     std::fill(tally.begin(), tally.end(), 0);
-    for (std::size_t s = begin; s < end; ++s) ++tally[std::size_t(owner(global_first[s]))];
+    for_each_reporter(begin, end, [&](int r, std::size_t lo, std::size_t hi) { tally[std::size_t(r)] += hi - lo; });
     task_owner_[task] = int(std::max_element(tally.begin(), tally.end()) - tally.begin());
     ++task_counts_[std::size_t(task_owner_[task])];
   }
@@ -205,8 +306,10 @@ void SphereSystem::lay_out_domain(const std::vector<std::uint32_t>& global_first
   for (std::size_t task = 0; task < tasks; ++task) {
     if (task_owner_[task] != me) continue;
     const auto [begin, end] = task_range(task);
-    for (std::size_t s = begin; s < end; ++s)
-      if (const int r = owner(global_first[s]); r != me) from[std::size_t(r)].push_back(std::uint32_t(owned_start_.back() + s - begin));
+    for_each_reporter(begin, end, [&](int r, std::size_t lo, std::size_t hi) {
+      if (r != me)
+        for (std::size_t s = lo; s < hi; ++s) from[std::size_t(r)].push_back(std::uint32_t(owned_start_.back() + s - begin));
+    });
     owned_tasks_.push_back(std::uint32_t(task));
     owned_start_.push_back(std::uint32_t(owned_start_.back() + end - begin));
   }
@@ -436,13 +539,106 @@ void SphereSystem::share_step(bool evaluate_energy) {
   if (tasks > 0) task_peak2_[0] = peak2;  // a max: exact in any order
 }
 
-const Vec3* SphereSystem::whole_positions(std::vector<Vec3>& buffer) const {
-  if (!domain_) return x_.data();
-  buffer.resize(spheres_.size());
-  std::copy(x_.begin() + std::ptrdiff_t(own_local_), x_.begin() + std::ptrdiff_t(own_local(own_end_)),
-            buffer.begin() + std::ptrdiff_t(own_begin_));
-  domain_->share(&buffer[0].x, sphere_counts_, sphere_displs_);
-  return buffer.data();
+std::size_t SphereSystem::sum_over_ranks(std::size_t count) const {
+  return domain_ ? std::size_t(domain_->sum(count)) : count;
+}
+
+SphereSystem::Nearby SphereSystem::spheres_near_own(double reach_m) {
+  Nearby near;
+  const auto add = [&](std::size_t k, const Vec3& x) {
+    near.ids.push_back(std::uint32_t(k));
+    near.centres.push_back({x.x, x.y, x.z});
+    near.radii.push_back(spheres_.radius_m[k]);
+  };
+  if (!domain_) {
+    for (std::size_t k = 0; k < x_.size(); ++k) add(k, x_[k]);
+    return near;
+  }
+  // Each block's bounding box of centres (low x, y, z, high x, y, z), every rank's, and each
+  // rank's box around its blocks'.
+  const int ranks = domain_->size(), me = rank_;
+  const std::size_t n = spheres_.size(), blocks = block_owner_.size();
+  const auto block_end = [&](std::size_t b) { return std::min(n, (b + 1) * kSphereBlock); };
+  std::vector<double> box(6 * blocks);
+  for (std::size_t b = own_block_begin_; b < own_block_end_; ++b) {
+    double* q = &box[6 * b];
+    for (int d = 0; d < 3; ++d) q[d] = std::numeric_limits<double>::infinity(), q[3 + d] = -q[d];
+    for (std::size_t k = b * kSphereBlock; k < block_end(b); ++k) {
+      const Vec3& x = x_[own_local(k)];
+      const double c[3] = {x.x, x.y, x.z};
+      for (int d = 0; d < 3; ++d) q[d] = std::min(q[d], c[d]), q[3 + d] = std::max(q[3 + d], c[d]);
+    }
+  }
+  std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
+  for (int r = 0; r < ranks; ++r)
+    counts[std::size_t(r)] = 6 * block_counts_[std::size_t(r)], displs[std::size_t(r)] = 6 * block_displs_[std::size_t(r)];
+  domain_->share(box.data(), counts, displs);
+  const auto blocks_of = [&](int r) {
+    const auto b0 = std::size_t(block_displs_[std::size_t(r)]);
+    return std::pair{b0, b0 + std::size_t(block_counts_[std::size_t(r)])};
+  };
+  const auto near_boxes = [&](const double* a, const double* b) {
+    double gap2 = 0;
+    for (int d = 0; d < 3; ++d) {
+      const double gap = std::max({0.0, b[d] - a[3 + d], a[d] - b[3 + d]});
+      gap2 += gap * gap;
+    }
+    return gap2 <= reach_m * reach_m;
+  };
+  std::vector<double> rank_box(6 * std::size_t(ranks));
+  for (int r = 0; r < ranks; ++r) {
+    double* q = &rank_box[6 * std::size_t(r)];
+    for (int d = 0; d < 3; ++d) q[d] = std::numeric_limits<double>::infinity(), q[3 + d] = -q[d];
+    for (auto [b, e] = blocks_of(r); b < e; ++b)
+      for (int d = 0; d < 3; ++d) q[d] = std::min(q[d], box[6 * b + d]), q[3 + d] = std::max(q[3 + d], box[6 * b + 3 + d]);
+  }
+  // Rank r's blocks that come within reach of one of rank t's: what r sends t, worked out alike
+  // on both (the same call on the same boxes).
+  const auto blocks_near = [&](int r, int t) {
+    std::vector<std::size_t> list;
+    if (!near_boxes(&rank_box[6 * std::size_t(r)], &rank_box[6 * std::size_t(t)])) return list;
+    const auto [t0, t1] = blocks_of(t);
+    for (auto [b, e] = blocks_of(r); b < e; ++b)
+      for (std::size_t a = t0; a < t1; ++a)
+        if (near_boxes(&box[6 * b], &box[6 * a])) {
+          list.push_back(b);
+          break;
+        }
+    return list;
+  };
+  std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks)), in(static_cast<std::size_t>(ranks));
+  std::vector<std::vector<std::size_t>> incoming(static_cast<std::size_t>(ranks));
+  std::vector<Domain::Message> sends, receives;
+  for (int r = 0; r < ranks; ++r) {
+    if (r == me) continue;
+    auto& o = out[std::size_t(r)];
+    for (const std::size_t b : blocks_near(me, r))
+      for (std::size_t k = b * kSphereBlock; k < block_end(b); ++k) {
+        const Vec3& x = x_[own_local(k)];
+        o.insert(o.end(), {x.x, x.y, x.z});
+      }
+    if (!o.empty()) sends.push_back({r, o.data(), int(o.size())});
+    incoming[std::size_t(r)] = blocks_near(r, me);
+    std::size_t spheres = 0;
+    for (const std::size_t b : incoming[std::size_t(r)]) spheres += block_end(b) - b * kSphereBlock;
+    if (spheres > 0) {
+      in[std::size_t(r)].resize(3 * spheres);
+      receives.push_back({r, in[std::size_t(r)].data(), int(3 * spheres)});
+    }
+  }
+  domain_->exchange(sends, receives);
+  layer_spheres_ = 0;
+  for (int r = 0; r < ranks; ++r) {  // by rank, so by id
+    if (r == me) {
+      for (std::size_t k = own_begin_; k < own_end_; ++k) add(k, x_[own_local(k)]);
+      continue;
+    }
+    const double* x = in[std::size_t(r)].data();
+    for (const std::size_t b : incoming[std::size_t(r)])
+      for (std::size_t k = b * kSphereBlock; k < block_end(b); ++k, x += 3) add(k, {x[0], x[1], x[2]});
+    layer_spheres_ += in[std::size_t(r)].size() / 3;
+  }
+  return near;
 }
 
 std::vector<Vec3> SphereSystem::gathered_spheres(const std::vector<Vec3>& held) const {
@@ -528,7 +724,8 @@ std::string SphereSystem::distribution() const {
          std::to_string(first_.size()) + " of " + std::to_string(global_slots_) + " contacts held here; received per step: " + std::to_string(ghost_doubles_ * 8 / steps) + " B of ghosts in " +
          format_number(double(ghost_messages_) / double(steps)) + " messages, " +
          std::to_string(shared_doubles_ * 8 / steps) + " B gathered (the replicated state of stage 1: " +
-         std::to_string(replicated) + " B)";
+         std::to_string(replicated) + " B)" +
+         (layer_spheres_ ? "; contact detection's ghost layer: " + std::to_string(layer_spheres_) + " spheres" : "");
 }
 
 }  // namespace mesowave::dem
