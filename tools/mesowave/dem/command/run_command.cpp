@@ -192,17 +192,17 @@ void write_direct_run(const RunCommandLine& v, const Scene& scene, const RunRepo
 }  // namespace
 
 void run_info_command(RunCommandLine v, app::Run& run, const std::string& threads_reason) {
-  const Inputs in = read_inputs(v, run);
+  Inputs in = read_inputs(v, run);
   SimulationOptions options;
   options.model = v.model;
-  const Simulation sim(in.scene, in.packing, options);
+  const Simulation sim(in.scene, std::move(in.packing), options);
   auto j = to_json(sim.describe());
   j["threads_reason"] = threads_reason;
   run.emit_json(j);
 }
 
 void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads_reason, Domain* domain) {
-  const Inputs in = read_inputs(v, run);
+  Inputs in = read_inputs(v, run);
   const bool root = !domain || domain->rank() == 0;
   const bool intact_files = !v.intact_checkpoint_path.empty() || !v.restart_stronger_path.empty();
   if (v.static_solve && intact_files) throw InputError("--static steps nothing: --intact-checkpoint and --restart-stronger are for a stepped run");
@@ -252,6 +252,10 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
   };
   if (!v.frequencies_kHz.empty()) return run_superposed_set(v, in, options, progress, run, threads_reason);
 
+  // Hashes the scene, packing and experiment files: only for a run that writes or reads a checkpoint.
+  const bool checkpoints = !v.checkpoint_path.empty() || !v.restart_path.empty() || !v.intact_checkpoint_path.empty() ||
+                           !v.restart_stronger_path.empty();
+  const CheckpointIdentity identity = checkpoints ? run_identity(v.scene_path, in.scene, v.overrides, v.model) : CheckpointIdentity{};
   if (!v.checkpoint_path.empty() || !v.restart_path.empty()) {
     const auto written = [&](std::int64_t step) {
       run.param("checkpoint_step", step);  // recorded also when the run is interrupted
@@ -259,19 +263,17 @@ void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads
       if (app::interrupt_signal() && root)
         std::cerr << "mw-dem: " << v.checkpoint_path.string() << " holds step " << step << "; continue with --restart\n";
     };
-    options.checkpoint = {v.checkpoint_path, v.checkpoint_every, [&] { return stop_signal() != 0; },
-                          run_identity(v.scene_path, in.scene, v.overrides, v.model), written};
+    options.checkpoint = {v.checkpoint_path, v.checkpoint_every, [&] { return stop_signal() != 0; }, identity, written};
   }
-  const CheckpointIdentity identity = run_identity(v.scene_path, in.scene, v.overrides, v.model);
   if (!v.intact_checkpoint_path.empty()) {
     const auto written = [&](std::int64_t step) { run.param("intact_checkpoint_step", step); };
     options.intact_checkpoint = {v.intact_checkpoint_path, v.intact_checkpoint_every, {}, identity, written};
   }
-  Simulation sim(in.scene, in.packing, options);
+  Simulation sim(in.scene, std::move(in.packing), options);
   if (v.signals_path.empty()) throw InputError("run needs --signals (or --frequencies-kHz with --signals-pattern)");
   if (!v.restart_path.empty()) {
     run.input(v.restart_path);
-    sim.restore(v.restart_path, options.checkpoint.identity);
+    sim.restore(v.restart_path, identity);
     resumed_at = sim.steps_done();
     run.param("restarted_at_step", resumed_at);
   }

@@ -73,7 +73,7 @@ UniaxialTestSpecimen describe_specimen(const Model& model, const Box& box, const
 
 Simulation::~Simulation() = default;
 
-Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOptions options)
+Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions options)
     : scene_(scene), options_(std::move(options)) {
   const auto start = std::chrono::steady_clock::now();
   CohesiveFrictionalMaterial& m = scene_.material;
@@ -105,6 +105,7 @@ Simulation::Simulation(const Scene& scene, const Packing& packing, SimulationOpt
     m.damping = 0;
   }
   SphereSet spheres = make_sphere_set(packing, m.density_kg_m3);
+  packing = {};
   BondNetwork bonds = make_bond_network(spheres, m.bond_factor);
   const Box box = bounding_box(spheres);
 
