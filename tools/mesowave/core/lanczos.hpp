@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "mesowave/core/ordered_dot.hpp"
+
 namespace mesowave {
 
 /// The top Ritz value, its residual norm (ritz + residual: an upper estimate) and the iterations used.
@@ -34,14 +36,9 @@ template <class Apply, class Dot>
 LanczosResult largest_eigenvalue(const LanczosRows& rows, const Apply& apply, const Dot& dot, int max_iterations = 150,
                                  double tolerance = 1e-7);
 
-
 template <class Apply>
 LanczosResult largest_eigenvalue(std::size_t n, const Apply& apply, int max_iterations, double tolerance) {
-  const auto dot = [n](const double* a, const double* b) {
-    double sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += a[i] * b[i];
-    return sum;
-  };
+  const auto dot = [n](const double* a, const double* b) { return ordered_dot(a, b, n); };
   return largest_eigenvalue(LanczosRows{n, 0, n}, apply, dot, max_iterations, tolerance);
 }
 

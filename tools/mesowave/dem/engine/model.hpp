@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "mesowave/core/ordered_dot.hpp"
 #include "mesowave/dem/engine/state_group.hpp"
 #include "mesowave/dem/engine/vec3.hpp"
 
@@ -92,11 +93,7 @@ public:
   virtual void scaled_stiffness_action(const double* x, double* y) const = 0;
   /// sum_i a_i b_i of two such vectors over every process's rows, added in row order: the
   /// bits of one process holding them all. Collective when distributed.
-  virtual double stiffness_dot(const double* a, const double* b) const {
-    double sum = 0;
-    for (std::size_t i = 0, n = stiffness_rows().count; i < n; ++i) sum += a[i] * b[i];
-    return sum;
-  }
+  virtual double stiffness_dot(const double* a, const double* b) const { return ordered_dot(a, b, stiffness_rows().count); }
   /// Upper bound of lambda_max (Gershgorin: largest absolute row sum over every row).
   /// Collective when distributed.
   virtual double scaled_stiffness_row_sum_bound() const = 0;

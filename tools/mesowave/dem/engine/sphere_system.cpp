@@ -534,11 +534,7 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
 }
 
 double SphereSystem::stiffness_dot(const double* a, const double* b) const {
-  const std::size_t rows = stiffness_rows().count;
-  const auto continue_sum = [&](double sum) {
-    for (std::size_t i = 0; i < rows; ++i) sum += a[i] * b[i];
-    return sum;
-  };
+  const auto continue_sum = [&](double sum) { return ordered_dot(a, b, stiffness_rows().count, sum); };
   return domain_ ? chained_sum(*domain_, continue_sum) : continue_sum(0.0);
 }
 
