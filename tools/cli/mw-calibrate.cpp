@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
     const dem::CalibrationTargets targets = dem::compression_targets(E_st_GPa, nu_st, sigma_MPa, E_d_GPa, nu_d);
     if (scene.test.kind != dem::UniaxialTestSpec::Kind::compression) throw InputError("mw-calibrate cube needs a compression test scene");
     const dem::DemParameters start = dem::compression_start(m, start_E, start_nu, start_T, c_over_t);
-    const double mu_deg = friction_deg.value_or(m.friction_angle_rad * 180 / 3.141592653589793);
+    const double mu_deg = friction_deg.value_or(m.friction_angle_deg());
     dem::CompressionCalibration calibration(targets, dem::compression_tolerances(tol_E_pct, tol_nu, tol_sigma_pct), start, max_trials);
     const dem::ElasticTrials elastic = dem::elastic_trials(elastic_trials == "static", elastic_velocity, static_preconditioner);
     dem::run_trials(calibration, run_trial, mu_deg, std::cerr, elastic, [&](int k) { return trial_command.file(k, "-intact.h5"); });

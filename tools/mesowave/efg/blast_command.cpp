@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
@@ -153,7 +154,7 @@ BlastOutputs blast_outputs(const BlastSlabOptions& o, const BlastSlabResult& r) 
       {"segment_mm", r.segment_length_m * 1e3},
       {"min_crack_spacing_mm", r.min_spacing_m * 1e3},
       {"min_crack_radius_mm", r.min_radius_m * 1e3},
-      {"max_turn_deg", r.max_turn_rad * 180 / M_PI},
+      {"max_turn_deg", r.max_turn_rad * 180 / std::numbers::pi},
       {"penalty_Pa_per_m", r.penalty_Pa_per_m},
       {"project_fields", std::string(to_string(o.cracks.project_fields))},
       {"cracks", cracks},

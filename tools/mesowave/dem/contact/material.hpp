@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <string>
 
 namespace mesowave::dem {
@@ -14,6 +15,7 @@ struct CohesiveFrictionalMaterial {
   double E_dem_Pa = 0;            ///< E_dem, the contact modulus of Eq. (3)
   double stiffness_ratio = 0;     ///< nu_dem = K_s / K_n (Yade's CohFrictMat.poisson)
   double friction_angle_rad = 0;  ///< mu of Eqs. (4)-(5)
+  double friction_angle_deg() const { return friction_angle_rad * 180 / std::numbers::pi; }
   /// T and C of Eq. (6); infinity = a bond that never breaks (no strength given).
   double tensile_strength_Pa = std::numeric_limits<double>::infinity();
   double cohesion_Pa = std::numeric_limits<double>::infinity();

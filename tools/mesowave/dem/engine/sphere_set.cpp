@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <string>
 
@@ -72,7 +73,7 @@ SphereSet make_sphere_set(const Packing& packing, double density, bool renumber)
   s.inertia_kg_m2.resize(n);
   s.packing_index = order;
   s.ids.resize(n);
-  const double pi = 3.14159265358979323846;
+  constexpr double pi = std::numbers::pi;
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t p = order[k];
     const auto& c = packing.centres_m[p];
