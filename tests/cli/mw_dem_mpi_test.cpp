@@ -218,7 +218,7 @@ TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesT
 // contacts inside each and across them, in groups that the ranks' sphere ranges cut), and
 // detected ones among them (bond factor C_f 1.0: a neighbour just apart is a frictional contact,
 // not a bond): each rank detects its own contacts and places them in the whole layout from the
-// ranks' counts (set_held_contacts), and the files are one process's - a wave, and a compression
+// ranks' counts (set_contacts), and the files are one process's - a wave, and a compression
 // that detects contacts and drops them as it goes (11 passes, each a new layout).
 TEST(MwDemMpi, DetectedContactsOfTwoPartitionsLaidOutFromTheRanksCountsWriteTheSameFiles) {
   test::TempDir dir;

@@ -3,11 +3,14 @@
 // gives the same bits as the uninterrupted run - every sensor's samples, a
 // test's curves, the broken-bond count and the energies - for the full law
 // loaded to break bonds, the moment law, the linearised network and the chain.
-// A checkpoint of another run is refused.
+// A checkpoint of another run, or with its contacts in another layout, is refused.
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/threads.hpp"
@@ -218,6 +221,26 @@ TEST(Checkpoint, ACheckpointOfAnotherRunIsRefused) {
     return o;
   }());
   expect_refusal([&] { bigger.restore(dir / "c.h5", kIdentity); }, "the checkpoint is not from this run");
+  // Every contact and bond of this run, but two slots swapped (every per-slot array alike): not
+  // the layout detection makes, whose order of terms the restart would not keep.
+  {
+    const hid_t f = H5Fopen((dir / "c.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    for (const char* name : {"first", "second", "bond", "cohesive", "normal_x", "normal_y", "normal_z", "shear_x_N",
+                             "shear_y_N", "shear_z_N", "overlap0_m"}) {
+      const hid_t d = H5Dopen2(f, (std::string("/model/law/") + name).c_str(), H5P_DEFAULT);
+      ASSERT_GE(d, 0) << name;
+      const hid_t type = H5Dget_type(d), space = H5Dget_space(d);
+      std::vector<unsigned char> bytes(std::size_t(H5Sget_simple_extent_npoints(space)) * H5Tget_size(type));
+      ASSERT_GE(H5Dread(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()), 0);
+      const std::size_t size = H5Tget_size(type);
+      std::swap_ranges(bytes.begin(), bytes.begin() + std::ptrdiff_t(size), bytes.begin() + std::ptrdiff_t(size));
+      ASSERT_GE(H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()), 0);
+      H5Sclose(space), H5Tclose(type), H5Dclose(d);
+    }
+    H5Fclose(f);
+  }
+  expect_refusal([&] { sim.restore(dir / "c.h5", kIdentity); }, "its contact layout is not this packing's");
   // Not a checkpoint at all.
   test::write_file(dir / "x.h5", "not hdf5");
   EXPECT_THROW(sim.restore(dir / "x.h5", kIdentity), InputError);

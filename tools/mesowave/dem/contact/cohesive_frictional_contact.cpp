@@ -90,23 +90,19 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
   // they are not held beside the checkpoint's whole arrays (the restart's peak).
   for (auto* array : {&nx_, &ny_, &nz_, &sx_, &sy_, &sz_, &overlap0_, &cohesive_}) std::vector<double>().swap(*array);
   std::vector<std::uint32_t>().swap(bond_);
-  const std::vector<std::uint32_t> first = group.read_uint32s("first"), second = group.read_uint32s("second");
+  std::vector<std::uint32_t> first = group.read_uint32s("first"), second = group.read_uint32s("second");
   const std::size_t n = system.sphere_count(), nb = system.bond_count();
   bool fits = first.size() == second.size() && first.size() >= nb;
   for (std::size_t s = 0; fits && s < first.size(); ++s) fits = first[s] < second[s] && second[s] < n;
   if (!fits) throw InputError("checkpoint " + group.where() + ": its contacts do not fit this packing's " +
                               std::to_string(n) + " spheres: the checkpoint is not from this run");
-  const auto order = system.set_contacts(first, second, moments());
-  for (std::size_t s = 0; s < order.size(); ++s)
-    if (order[s] != system.global_slot(s))
-      throw InputError("checkpoint " + group.where() + ": its contact layout is not this packing's");
   const std::size_t m = first.size();
   std::vector<double> cohesive(m);
   group.read_into("cohesive", cohesive);
   bond_ = group.read_uint32s("bond");
   // Each bond once, in the slot of its own pair; cohesion only where a bond is (0 or 1).
   const BondNetwork& bonds = system.bonds();
-  std::vector<std::uint8_t> placed(nb, 0);
+  std::vector<std::uint32_t> slot_of_bond(nb, kNoBond);
   std::size_t bonded = 0;
   bool valid = bond_.size() == m;
   for (std::size_t s = 0; valid && s < m; ++s) {
@@ -115,12 +111,34 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
       valid = cohesive[s] == 0.0;
       continue;
     }
-    valid = b < nb && !placed[b] && bonds.first[b] == first[s] && bonds.second[b] == second[s] &&
+    valid = b < nb && slot_of_bond[b] == kNoBond && bonds.first[b] == first[s] && bonds.second[b] == second[s] &&
             (cohesive[s] == 0.0 || cohesive[s] == 1.0);
-    if (valid) placed[b] = 1, ++bonded;
+    if (valid) slot_of_bond[b] = std::uint32_t(s), ++bonded;
   }
   if (!valid || bonded != nb)
     throw InputError("checkpoint " + group.where() + ": its bonds are not this packing's " + std::to_string(nb));
+  // This rank's contacts (the slots with an end of its own) as detection lists them: the bonds
+  // by index, then the pairs by (first, second). Laid out, each must come back to its own slot,
+  // on every rank: so the checkpoint's layout is the one detection makes.
+  const auto held = [&](std::uint32_t s) { return system.is_own(first[s]) || system.is_own(second[s]); };
+  std::vector<std::uint32_t> slot_of;
+  for (const std::uint32_t s : slot_of_bond)
+    if (held(s)) slot_of.push_back(s);
+  std::vector<std::uint32_t>().swap(slot_of_bond);
+  const std::size_t held_bonds = slot_of.size();
+  for (std::size_t s = 0; s < m; ++s)
+    if (bond_[s] == kNoBond && held(std::uint32_t(s))) slot_of.push_back(std::uint32_t(s));
+  std::sort(slot_of.begin() + std::ptrdiff_t(held_bonds), slot_of.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::tie(first[a], second[a]) < std::tie(first[b], second[b]);
+  });
+  std::vector<std::uint32_t> held_first(slot_of.size()), held_second(slot_of.size());
+  for (std::size_t c = 0; c < slot_of.size(); ++c) held_first[c] = first[slot_of[c]], held_second[c] = second[slot_of[c]];
+  std::vector<std::uint32_t>().swap(first), std::vector<std::uint32_t>().swap(second);
+  const auto order = system.set_contacts(held_first, held_second, held_bonds, moments());
+  std::size_t misplaced = 0;
+  for (std::size_t s = 0; s < order.size(); ++s) misplaced += system.global_slot(s) != slot_of[order[s]];
+  if (system.sum_over_ranks(misplaced) != 0)
+    throw InputError("checkpoint " + group.where() + ": its contact layout is not this packing's");
   // Checked whole; a rank keeps its held slots' part, and reads the rest one array at a time.
   bond_ = system.held_slots(std::move(bond_));
   cohesive_ = system.held_slots(std::move(cohesive));
@@ -203,7 +221,7 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   const std::size_t pairs = system.sum_over_ranks(first.size() - nb);
   if (detection_passes_ > 1 && pairs == 0 && system.global_slot_count() == system.bond_count()) return;
   before_relayout(system);
-  const auto order = system.set_held_contacts(first, second, nb, moments());
+  const auto order = system.set_contacts(first, second, nb, moments());
   set_slots(order.size(), [&](std::size_t s) {
     const std::uint32_t c = order[s];
     if (c < nb) {

@@ -47,8 +47,8 @@ public:
   std::size_t memory_bytes() const override { return bond_.size() * (8 * sizeof(double) + sizeof(std::uint32_t)); }
   /// The contacts in slot order (pairs and per-slot state: normals, shear
   /// forces, u_0, bond, cohesion) and the detection's travel since its last
-  /// pass. Loading lays the same contacts out again (set_contacts keeps an
-  /// order that is already laid out) and refuses a list that does not fit.
+  /// pass. Loading lays the same contacts out again (each rank its own; each
+  /// must come back to its slot) and refuses a list that does not fit.
   void save_state(const SphereSystem& system, StateGroup& group) const override;
   void load_state(SphereSystem& system, const StateGroup& group) override;
   /// Candidate-list builds so far (the first at step 0).

@@ -189,9 +189,15 @@ std::vector<std::uint32_t> SphereSystem::held_bond_ids() const {
 }
 
 std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
-                                                      const std::vector<std::uint32_t>& second, bool moments) {
+                                                      const std::vector<std::uint32_t>& second, std::size_t bonds,
+                                                      bool moments) {
+  return finish_layout(first, second, domain_ ? lay_out_held(first, second, bonds) : lay_out_whole(first, second), moments);
+}
+
+std::vector<std::uint32_t> SphereSystem::lay_out_whole(const std::vector<std::uint32_t>& first,
+                                                       const std::vector<std::uint32_t>& second) {
   const std::size_t count = first.size();
-  // The whole layout: interior contacts by partition, then those across partitions.
+  // Interior contacts by partition, then those across partitions, each in the order given.
   global_interior_start_.assign(partitions_ + 1, 0);
   for (std::size_t c = 0; c < count; ++c) {
     const std::size_t p = first[c] / sphere_chunk_;
@@ -207,42 +213,16 @@ std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uin
     order[p == second[c] / sphere_chunk_ ? fill[p]++ : cross++] = std::uint32_t(c);
   }
   global_slots_ = count;
-  if (!domain_) {
-    interior_start_ = global_interior_start_;
-    return finish_layout(first, second, std::move(order), moments);
-  }
-  // Distributed: the slots with an end of this rank's own, in the same order (held_here), and
-  // the whole layout's reporters.
-  global_slot_.clear();
-  slot_runs_.clear();
-  for (std::size_t s = 0; s < count; ++s) {
-    const std::uint32_t c = order[s];
-    if (const int r = owner(first[c]); slot_runs_.empty() || slot_runs_.back().second != r)
-      slot_runs_.emplace_back(std::uint32_t(s), r);
-    if (held_here(first[c], second[c])) global_slot_.push_back(std::uint32_t(s));
-  }
-  interior_start_.resize(partitions_ + 1);
-  for (std::size_t p = 0; p <= partitions_; ++p)
-    interior_start_[p] = std::uint32_t(std::lower_bound(global_slot_.begin(), global_slot_.end(), global_interior_start_[p]) -
-                                       global_slot_.begin());
-  for (std::size_t s = 0; s < global_slot_.size(); ++s) order[s] = order[global_slot_[s]];
-  order.resize(global_slot_.size());
-  return finish_layout(first, second, std::move(order), moments);
-}
-
-std::vector<std::uint32_t> SphereSystem::set_held_contacts(const std::vector<std::uint32_t>& first,
-                                                           const std::vector<std::uint32_t>& second, std::size_t bonds,
-                                                           bool moments) {
-  if (!domain_) return set_contacts(first, second, moments);
-  return finish_layout(first, second, lay_out_held(first, second, bonds), moments);
+  interior_start_ = global_interior_start_;
+  return order;
 }
 
 std::vector<std::uint32_t> SphereSystem::set_bond_contacts() {
-  if (!domain_) return set_contacts(bonds_.first, bonds_.second);
+  if (!domain_) return set_contacts(bonds_.first, bonds_.second, bonds_.size());
   const std::vector<std::uint32_t> held = held_bond_ids();
   std::vector<std::uint32_t> first(held.size()), second(held.size());
   for (std::size_t k = 0; k < held.size(); ++k) first[k] = bonds_.first[held[k]], second[k] = bonds_.second[held[k]];
-  std::vector<std::uint32_t> order = set_held_contacts(first, second, held.size());
+  std::vector<std::uint32_t> order = set_contacts(first, second, held.size());
   for (std::uint32_t& c : order) c = held[c];
   return order;
 }

@@ -237,24 +237,21 @@ public:
   /// Sets the contacts (pairs first < second) and lays them out in slots:
   /// the spheres are cut into a fixed number of Morton ranges (partitions,
   /// set by the sphere count alone); contacts inside one partition come
-  /// first, grouped by partition, then the contacts between partitions.
+  /// first, grouped by partition, then the contacts between partitions; in each group the
+  /// bonds (the first `bonds` given) before the detected pairs, each in the order given.
   /// Returns the order: slot s holds the contact given at position order[s].
-  /// A law keeps its per-contact arrays in slot order. Distributed, the slots are those of
-  /// the whole layout with an end of this rank's own, in the same order (so every sphere of
-  /// the rank sums the serial terms in the serial order), and `order` has one entry a slot held.
-  std::vector<std::uint32_t> set_contacts(const std::vector<std::uint32_t>& first,
-                                          const std::vector<std::uint32_t>& second, bool moments = false);
-  /// The same layout from this rank's part of the list only (contact detection on several
-  /// ranks, which never sees the whole list): the contacts with an end of its own, in the
-  /// order of a whole list made of the bonds (by bond index) then the detected pairs (sorted
-  /// by (first, second)); the first `bonds` are bonds. The whole layout's order is worked out
-  /// from each rank's counts, and the slot of a contact across two ranks is sent by the rank of
-  /// its first sphere (collective). In one process, set_contacts(first, second, moments).
-  std::vector<std::uint32_t> set_held_contacts(const std::vector<std::uint32_t>& first,
-                                               const std::vector<std::uint32_t>& second, std::size_t bonds,
-                                               bool moments = false);
-  /// The bonds as the contacts (a network without detection): set_held_contacts of the held
-  /// bonds; returns the bond in each slot.
+  /// A law keeps its per-contact arrays in slot order.
+  /// Distributed (collective), a rank gives only its contacts, those with an end of its own, and
+  /// holds only their slots, in the whole layout's order (so every sphere of the rank sums the
+  /// serial terms in the serial order); `order` has one entry a slot held. Each part must then
+  /// come in the order the whole layout has it within a group (bonds by index, pairs by (first,
+  /// second), as detection lists them; or a checkpoint's slot order): the whole layout is worked
+  /// out from each rank's counts, and the slot of a contact across two ranks is sent by the rank
+  /// of its first sphere.
+  std::vector<std::uint32_t> set_contacts(const std::vector<std::uint32_t>& first, const std::vector<std::uint32_t>& second,
+                                          std::size_t bonds, bool moments = false);
+  /// The bonds as the contacts (a network without detection): set_contacts of the held bonds;
+  /// returns the bond in each slot.
   std::vector<std::uint32_t> set_bond_contacts();
 
   /// Runs kernel(slot, result) for every contact; call it from contact_forces
@@ -267,7 +264,7 @@ public:
   /// slot order. Either way every sphere sums the same terms in the same
   /// order on any number of threads.
   /// `Result` is ContactResult, or MomentContactResult for a law with moments
-  /// (set_contacts(..., true) then keeps room for them).
+  /// (set_contacts with `moments` then keeps room for them).
   /// `sum_elastic`: add up the elastic energies (energy steps); `sum_plastic`: the dissipation
   /// (laws that slide).
   template <class Result = ContactResult, class Kernel>
@@ -448,21 +445,22 @@ private:
   /// each neighbour holds as ghosts go there; returns the ghosts' rows (six a sphere) in the order
   /// of `ghost_ids`, the ghosts of every neighbour in rank order (so sorted by id).
   std::vector<double> ghost_rows(const double* x, std::vector<std::uint32_t>& ghost_ids) const;
-  bool held_here(std::uint32_t i, std::uint32_t j) const;
   void split(Domain& domain);
   /// The slots of the whole layout by reporter (the rank of the first sphere): runs of
   /// consecutive slots, each (first slot, rank), ascending; the last ends at global_slots_.
-  /// At most 2 (partitions + 1) runs a rank for a layout of set_held_contacts.
+  /// At most 2 (partitions + 1) runs a rank.
   std::vector<std::pair<std::uint32_t, int>> slot_runs_;
   /// Calls f(rank, begin, end) for each run's part in the whole layout's slots [begin, end).
   template <class F>
   void for_each_reporter(std::size_t begin, std::size_t end, const F& f) const;
-  /// set_held_contacts' whole layout (global_* and slot_runs_) from the ranks' counts, and the
-  /// held slots' places in it (global_slot_, interior_start_); returns the order (collective).
+  /// set_contacts' layout: in one process from the whole list; distributed (collective), the
+  /// whole layout (global_* and slot_runs_) from the ranks' counts and the held slots' places in
+  /// it (global_slot_, interior_start_). Each returns the order.
+  std::vector<std::uint32_t> lay_out_whole(const std::vector<std::uint32_t>& first, const std::vector<std::uint32_t>& second);
   std::vector<std::uint32_t> lay_out_held(const std::vector<std::uint32_t>& first, const std::vector<std::uint32_t>& second,
                                           std::size_t bonds);
-  /// set_contacts' and set_held_contacts' common end: the held contacts (global ids, `order`
-  /// into the lists given) in slot order, then the ghosts, the held spheres and the local ids.
+  /// set_contacts' end: the held contacts (global ids, `order` into the lists given) in slot
+  /// order, then distributed the ghosts, the held spheres and the local ids.
   std::vector<std::uint32_t> finish_layout(const std::vector<std::uint32_t>& first, const std::vector<std::uint32_t>& second,
                                            std::vector<std::uint32_t> order, bool moments);
   void lay_out_domain();

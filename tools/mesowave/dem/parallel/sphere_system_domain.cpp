@@ -6,9 +6,9 @@
 // Why the bits match. A sphere's force is the sum, in a fixed order, of its contacts'
 // results (interior contacts in slot order, then the cross-partition records in slot
 // order, then the external load): the order is set by the slot layout, which every rank
-// places its contacts in identically (set_contacts from the whole list, or set_held_contacts
-// from each rank's counts when each rank detects its own contacts, spheres_near_own), and a
-// contact's result depends only on its two spheres' state and its own history. A rank holds
+// places its contacts in identically (set_contacts: from each rank's counts, each rank giving
+// the contacts it detects, spheres_near_own), and a contact's result depends only on its two
+// spheres' state and its own history. A rank holds
 // and computes only the contacts with an end of its own (stage 3: the whole layout's slots,
 // filtered, in their order), and keeps their history
 // itself; the other end is its own or a ghost, received from its owner after every step
@@ -114,8 +114,6 @@ void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& ob
   broken_ = std::size_t(domain.sum(kernel_->broken_bonds_in(reported_)));
 }
 
-bool SphereSystem::held_here(std::uint32_t i, std::uint32_t j) const { return owner(i) == rank_ || owner(j) == rank_; }
-
 std::size_t SphereSystem::global_task_of(std::size_t s) const {
   if (s >= global_cross_begin_) return partitions_ + (s - global_cross_begin_) / kContactBlock;
   return std::size_t(std::upper_bound(global_interior_start_.begin(), global_interior_start_.end(), std::uint32_t(s)) -
@@ -151,7 +149,7 @@ std::vector<std::uint32_t> SphereSystem::lay_out_held(const std::vector<std::uin
   std::vector<double> mine(parts, 0.0), all(parts * std::size_t(ranks));
   for (std::size_t c = 0; c < count; ++c) {
     if (!is_own(first[c]) && !is_own(second[c]))
-      throw std::logic_error("SphereSystem::set_held_contacts: a contact with no end of this rank's own");
+      throw std::logic_error("SphereSystem::set_contacts: a contact with no end of this rank's own");
     if (is_own(first[c])) mine[part_of(c)] += 1;  // exact below 2^53
   }
   std::vector<int> counts(static_cast<std::size_t>(ranks), int(parts)), displs(static_cast<std::size_t>(ranks));
@@ -223,7 +221,7 @@ std::vector<std::uint32_t> SphereSystem::lay_out_held(const std::vector<std::uin
   return order;
 }
 
-// After every new slot layout (set_contacts, set_held_contacts; first_/second_ in global ids):
+// After every new slot layout (set_contacts; first_/second_ in global ids):
 // the reporters, the ghost lists and who adds which task's elastic sum; then the held spheres
 // (hold: own, ghosts, observed) and the contacts' local ids.
 void SphereSystem::lay_out_domain() {
