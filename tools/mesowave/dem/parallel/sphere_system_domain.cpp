@@ -178,15 +178,26 @@ std::vector<std::uint32_t> SphereSystem::lay_out_held(const std::vector<std::uin
   std::vector<std::uint32_t> slot_of(count);
   std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks)), in(static_cast<std::size_t>(ranks));
   std::vector<std::vector<std::uint32_t>> waiting(static_cast<std::size_t>(ranks));  // held contacts reported elsewhere
+  // Every contact across two ranks is sent once and expected once: the sum over the ranks of a
+  // hash of those sent less those expected (mod 2^64) is 0, or the ranks disagree on a contact
+  // (a detection layer that missed a sphere) and the exchange below would not match up.
+  const auto hash = [&](std::size_t c) { return ((std::uint64_t(first[c]) << 32) | second[c]) * 0x9E3779B97F4A7C15ull; };
+  std::uint64_t unmatched = 0;
   for (std::size_t c = 0; c < count; ++c) {
     if (const int oi = owner(first[c]); oi != me) {
       waiting[std::size_t(oi)].push_back(std::uint32_t(c));
+      unmatched -= hash(c);
       continue;
     }
     slot_of[c] = std::uint32_t(next[part_of(c)]++);
-    if (const int oj = owner(second[c]); oj != me)
+    if (const int oj = owner(second[c]); oj != me) {
       out[std::size_t(oj)].insert(out[std::size_t(oj)].end(), {double(slot_of[c]), double(first[c]), double(second[c])});
+      unmatched += hash(c);
+    }
   }
+  if (domain_->sum(unmatched) != 0)
+    throw std::logic_error("the ranks disagree on the contacts across them: one holds a contact its other end's rank "
+                           "does not (contact detection's ghost layer missed a sphere)");
   std::vector<Domain::Message> sends, receives;
   for (int r = 0; r < ranks; ++r) {
     auto& o = out[std::size_t(r)];
