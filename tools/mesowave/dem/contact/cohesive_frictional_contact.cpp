@@ -173,28 +173,24 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   travelled_ = 0;
   ++detection_passes_;
   const SphereSet& spheres = system.spheres();
-  const BondNetwork& bonds = system.bonds();
   const auto [r_min, r_max] = std::minmax_element(spheres.radius_m.begin(), spheres.radius_m.end());
   const double factor = 1.0 + margin_ / (2.0 * *r_min);
-  // This rank's contacts (every contact in one process): those with an end of its own.
-  const std::vector<std::uint32_t> held_bonds = system.held_bond_ids();
-  const std::size_t nb = held_bonds.size();
+  // This rank's contacts (every contact in one process): those with an end of its own. The
+  // contacts: the bonds, then the detected pairs (each with its old slot, or kNoBond when new,
+  // with its normal). Their state is looked up only for the slots laid out here.
+  auto [bond_ids, first, second] = system.held_bonds();
+  std::vector<std::uint32_t> known_slot;
+  std::vector<Vec3> normal;
+  const std::size_t nb = bond_ids.size();
 
   // Where each held bond and each detected pair lives now.
   std::vector<std::uint32_t> slot_of_bond(nb, kNoBond);
   std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>> old_pairs;
   for (std::size_t s = 0; s < bond_.size(); ++s) {
-    if (bond_[s] != kNoBond)
-      slot_of_bond[std::size_t(std::lower_bound(held_bonds.begin(), held_bonds.end(), bond_[s]) - held_bonds.begin())] = std::uint32_t(s);
+    if (bond_[s] != kNoBond) slot_of_bond[system.held_bond(bond_[s])] = std::uint32_t(s);
     else old_pairs.emplace_back(system.global_id(system.first(s)), system.global_id(system.second(s)), std::uint32_t(s));
   }
   std::sort(old_pairs.begin(), old_pairs.end());
-
-  // The contacts: the bonds, then the detected pairs (each with its old slot, or kNoBond when
-  // new, with its normal). Their state is looked up only for the slots laid out here.
-  std::vector<std::uint32_t> first(nb), second(nb), known_slot;
-  std::vector<Vec3> normal;
-  for (std::size_t k = 0; k < nb; ++k) first[k] = bonds.first[held_bonds[k]], second[k] = bonds.second[held_bonds[k]];
   {
     const auto near = system.spheres_near_own(factor * 2.0 * *r_max);
     const auto pairs = find_pairs_within(near.centres, near.radii, factor);
@@ -225,7 +221,7 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   set_slots(order.size(), [&](std::size_t s) {
     const std::uint32_t c = order[s];
     if (c < nb) {
-      const std::uint32_t bond = held_bonds[c];
+      const std::uint32_t bond = bond_ids[c];
       return slot_of_bond[c] != kNoBond ? slot(slot_of_bond[c])
                                         : Slot{system.bond_normal0(bond), {}, system.bond_overlap0(bond), bond, kCohesive};
     }

@@ -181,11 +181,15 @@ std::size_t SphereSystem::held_bond(std::size_t b) const {
   return std::size_t(at - held_cross_bonds_.begin());
 }
 
-std::vector<std::uint32_t> SphereSystem::held_bond_ids() const {
-  std::vector<std::uint32_t> ids;
-  ids.reserve(held_cross_bonds_.size() + held_bond_end_ - held_bond_begin_);
-  for_each_held_bond([&](std::size_t b) { ids.push_back(std::uint32_t(b)); });
-  return ids;
+SphereSystem::HeldBonds SphereSystem::held_bonds() const {
+  HeldBonds held;
+  for (auto* list : {&held.ids, &held.first, &held.second}) list->reserve(held_cross_bonds_.size() + held_bond_end_ - held_bond_begin_);
+  for_each_held_bond([&](std::size_t b) {
+    held.ids.push_back(std::uint32_t(b));
+    held.first.push_back(bonds_.first[b]);
+    held.second.push_back(bonds_.second[b]);
+  });
+  return held;
 }
 
 std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
@@ -219,11 +223,9 @@ std::vector<std::uint32_t> SphereSystem::lay_out_whole(const std::vector<std::ui
 
 std::vector<std::uint32_t> SphereSystem::set_bond_contacts() {
   if (!domain_) return set_contacts(bonds_.first, bonds_.second, bonds_.size());
-  const std::vector<std::uint32_t> held = held_bond_ids();
-  std::vector<std::uint32_t> first(held.size()), second(held.size());
-  for (std::size_t k = 0; k < held.size(); ++k) first[k] = bonds_.first[held[k]], second[k] = bonds_.second[held[k]];
-  std::vector<std::uint32_t> order = set_contacts(first, second, held.size());
-  for (std::uint32_t& c : order) c = held[c];
+  const HeldBonds held = held_bonds();
+  std::vector<std::uint32_t> order = set_contacts(held.first, held.second, held.ids.size());
+  for (std::uint32_t& c : order) c = held.ids[c];
   return order;
 }
 

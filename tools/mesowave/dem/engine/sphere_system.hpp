@@ -151,9 +151,14 @@ public:
   const BondNetwork& bonds() const { return bonds_; }
   /// Sphere k (a global id) is this rank's own (every sphere is in one process).
   bool is_own(std::size_t k) const { return k >= own_begin() && k < own_end(); }
-  /// The bonds with an end of this rank's own (all in one process), ascending: so sorted by
-  /// (first, second) too.
-  std::vector<std::uint32_t> held_bond_ids() const;
+  /// The bonds with an end of this rank's own (all in one process), by index, so sorted by
+  /// (first, second) too: their indices and spheres.
+  struct HeldBonds {
+    std::vector<std::uint32_t> ids, first, second;
+  };
+  HeldBonds held_bonds() const;
+  /// Bond b's place in held_bonds() (b in one process); std::logic_error for a bond not held.
+  std::size_t held_bond(std::size_t b) const;
   /// Bond b's unit normal and u_0 at step 0. Distributed, a rank keeps them only for the bonds
   /// with an end of its own (docs/mpi.md); std::logic_error for another.
   Vec3 bond_normal0(std::size_t b) const { return bond_normal0_[held_bond(b)]; }
@@ -315,7 +320,6 @@ private:
   std::size_t held_bond_begin_ = 0, held_bond_end_ = 0;
   std::vector<Vec3> bond_normal0_;
   std::vector<double> bond_overlap0_;
-  std::size_t held_bond(std::size_t b) const;
   void keep_held_bonds();
   /// f(b) for every held bond, in bond order (the cross bonds all come before the range).
   template <class F>
