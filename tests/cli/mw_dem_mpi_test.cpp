@@ -5,6 +5,7 @@
 // single rank asked for; the options a distributed run does not take are refused in one line.
 // The reference is the single-process engine itself, run without any MPI launcher.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <signal.h>
 
@@ -166,13 +167,18 @@ void expect_same_files_on_ranks(const test::TempDir& dir, const std::string& sce
       EXPECT_NE(split.find("rank 0 of " + std::to_string(np)), std::string::npos) << tag;
       // Rank 0 holds only the contacts of its own spheres (stage 3, docs/mpi.md): fewer than all.
       const auto contacts = j["contacts"].get<std::size_t>();
-      const auto at = split.find(" of " + std::to_string(contacts) + " contacts held here");
+      const auto at = split.find(" of " + std::to_string(contacts) + " contacts and ");
       ASSERT_NE(at, std::string::npos) << split;
       const auto held = std::stoul(split.substr(split.rfind(' ', at - 1) + 1));
       EXPECT_GT(held, 0u) << split;
       EXPECT_LT(held, contacts) << split;
-      // ... and the arrays of its own spheres, its ghosts and the observed ones only (hold()).
+      // ... and made only the bonds with an end of its own (make_bond_network with the domain).
       std::smatch m;
+      ASSERT_TRUE(std::regex_search(split, m, std::regex(R"((\d+) of (\d+) bonds held here)"))) << split;
+      EXPECT_EQ(std::stoul(m[2].str()), j["bonds"].get<std::size_t>()) << split;
+      EXPECT_GT(std::stoul(m[1].str()), 0u) << split;
+      EXPECT_LT(std::stoul(m[1].str()), j["bonds"].get<std::size_t>()) << split;
+      // ... and the arrays of its own spheres, its ghosts and the observed ones only (hold()).
       const std::regex spheres_held(R"(spheres (\d+)-(\d+) of (\d+) \(Morton order\), (\d+) held, (\d+) ghosts from \d+ ranks, (\d+) observed)");
       ASSERT_TRUE(std::regex_search(split, m, spheres_held)) << split;
       const auto number = [&](int k) { return std::stoul(m[k].str()); };
@@ -271,6 +277,31 @@ TEST(MwDemMpi, ACheckpointOfTwoRanksIsTheOneProcessFileAndRestartsOnThreeToTheSa
     EXPECT_EQ(test::read_file(dir / (scene + "-one.h5")), test::read_file(dir / (scene + "-np3.h5"))) << scene;
     EXPECT_EQ(test::read_file(dir / (scene + "-one.csv")), test::read_file(dir / (scene + "-np3.csv"))) << scene;
   }
+  // The same checkpoint with the first slot's bond index set to the last bonded slot's: that bond
+  // twice, the first slot's own once less. Each rank checks only the bonds it holds (made per rank),
+  // and every rank refuses it, in one line, before a step.
+  std::filesystem::copy_file(dir / "crush-np2.refused.h5", dir / "swapped.h5");
+  {
+    const hid_t f = H5Fopen((dir / "swapped.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    const hid_t d = H5Dopen2(f, "/model/law/bond", H5P_DEFAULT);
+    ASSERT_GE(d, 0);
+    const hid_t space = H5Dget_space(d);
+    std::vector<std::uint32_t> bond(std::size_t(H5Sget_simple_extent_npoints(space)));
+    ASSERT_GE(H5Dread(d, H5T_NATIVE_UINT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, bond.data()), 0);
+    std::size_t last = bond.size() - 1;
+    while (bond[last] == 0xffffffffu) --last;  // no bond (a detected pair)
+    ASSERT_NE(bond[0], bond[last]);
+    bond[0] = bond[last];
+    ASSERT_GE(H5Dwrite(d, H5T_NATIVE_UINT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, bond.data()), 0);
+    H5Sclose(space), H5Dclose(d), H5Fclose(f);
+  }
+  const auto refused = mpirun(2, {"run", (dir / "crush.toml").string(), "--quiet", "--threads", "1", "--signals",
+                                  (dir / "refused.h5").string(), "--restart", (dir / "swapped.h5").string()});
+  EXPECT_EQ(refused.exit_status, 1) << refused.err;
+  EXPECT_NE(refused.err.find("its bonds are not this packing's"), std::string::npos) << refused.err;
+  EXPECT_EQ(occurrences(refused.err, "error: "), 1u) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "refused.h5"));
 }
 
 // SIGTERM to rank 1 alone, mid-run (Slurm signals each task itself, at its own moment): the

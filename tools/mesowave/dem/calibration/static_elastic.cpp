@@ -89,15 +89,14 @@ std::vector<std::string> static_preconditioners() {
 }
 
 Matrix linear_network_stiffness(const SphereSystem& system) {
-  const BondNetwork& bonds = system.bonds();
   const CohesiveFrictionalMaterial& m = system.material();
   const double two_E_dem = 2.0 * m.E_dem_Pa, ratio = m.stiffness_ratio;
   const auto& radius = system.spheres().radius_m;
   const auto n = Eigen::Index(6 * system.sphere_count());
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(bonds.size() * 144);
-  for (std::size_t b = 0; b < bonds.size(); ++b) {
-    const std::uint32_t i = bonds.first[b], j = bonds.second[b];
+  entries.reserve(system.bond_count() * 144);
+  for (std::size_t b = 0; b < system.bond_count(); ++b) {
+    const std::uint32_t i = system.bond_first(b), j = system.bond_second(b);
     const std::size_t dof[2] = {6 * std::size_t(i), 6 * std::size_t(j)};
     for (int col = 0; col < 12; ++col) {
       // Unit value of DOF `col` of the pair (d_i, theta_i, d_j, theta_j).

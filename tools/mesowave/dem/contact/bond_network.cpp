@@ -1,11 +1,15 @@
 #include "mesowave/dem/contact/bond_network.hpp"
 
+#include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <string>
 
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/dem/engine/neighbour_search.hpp"
+#include "mesowave/dem/engine/sphere_system.hpp"
+#include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
 namespace {
@@ -14,6 +18,66 @@ std::vector<std::array<double, 3>> centres_of(const SphereSet& s) {
   std::vector<std::array<double, 3>> c(s.size());
   for (std::size_t i = 0; i < s.size(); ++i) c[i] = {s.centre_m[i].x, s.centre_m[i].y, s.centre_m[i].z};
   return c;
+}
+
+// Every pair within `factor` (r_i + r_j) with an end among the spheres [begin, end), sorted by
+// (i, j). Only those spheres and the ones within the longest such pair of their bounding box are
+// searched; a pair's test reads its two spheres alone, so it is found as the whole search finds it.
+std::vector<SpherePair> pairs_with_an_end_in(const SphereSet& s, double factor, std::size_t begin, std::size_t end) {
+  if (begin == 0 && end >= s.size()) return find_pairs_within(centres_of(s), s.radius_m, factor);
+  if (begin >= end) return {};
+  const double reach = factor * 2.0 * *std::max_element(s.radius_m.begin(), s.radius_m.end());
+  Vec3 lo = s.centre_m[begin], hi = lo;
+  for (std::size_t k = begin; k < end; ++k)
+    for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], s.centre_m[k][d]), hi[d] = std::max(hi[d], s.centre_m[k][d]);
+  std::vector<std::uint32_t> ids;
+  std::vector<std::array<double, 3>> centres;
+  std::vector<double> radii;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const Vec3& x = s.centre_m[k];
+    bool near = k >= begin && k < end;
+    if (!near) {
+      double gap2 = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double gap = std::max({0.0, lo[d] - x[d], x[d] - hi[d]});
+        gap2 += gap * gap;
+      }
+      near = gap2 <= reach * reach;
+    }
+    if (!near) continue;
+    ids.push_back(std::uint32_t(k));
+    centres.push_back({x.x, x.y, x.z});
+    radii.push_back(s.radius_m[k]);
+  }
+  std::vector<SpherePair> pairs;
+  for (const SpherePair& p : find_pairs_within(centres, radii, factor)) {
+    const std::uint32_t i = ids[p.i], j = ids[p.j];  // ids ascend, so the order is kept
+    if ((i >= begin && i < end) || (j >= begin && j < end)) pairs.push_back({i, j});
+  }
+  return pairs;
+}
+
+BondNetwork bonds_of(const SphereSet& s, const std::vector<SpherePair>& pairs) {
+  BondNetwork net;
+  net.first.reserve(pairs.size());
+  net.second.reserve(pairs.size());
+  net.overlap0_m.reserve(pairs.size());
+  net.normal0.reserve(pairs.size());
+  for (const auto& p : pairs) {
+    const Vec3 d = s.centre_m[p.j] - s.centre_m[p.i];
+    const double dist = norm(d);
+    const double sum = s.radius_m[p.i] + s.radius_m[p.j];
+    if (!(dist > 1e-9 * sum))
+      throw InputError("spheres with ids " + std::to_string(s.ids[p.i]) + " and " + std::to_string(s.ids[p.j]) +
+                       " have coincident centres (distance " + format_number(dist) +
+                       " m): their contact normal is undefined; remove one of them from the packing");
+    net.first.push_back(p.i);
+    net.second.push_back(p.j);
+    net.overlap0_m.push_back(sum - dist);
+    net.normal0.push_back((1.0 / dist) * d);
+  }
+  net.incidence = make_incidence(s.size(), net.first, net.second);
+  return net;
 }
 
 }  // namespace
@@ -39,36 +103,78 @@ Incidence make_incidence(std::size_t n, const std::vector<std::uint32_t>& first,
 
 BondNetwork make_bond_network(const SphereSet& s, double bond_factor) {
   require_positive("bond factor C_f", bond_factor);
-  const auto centres = centres_of(s);
-  const auto pairs = find_pairs_within(centres, s.radius_m, bond_factor);
-  BondNetwork net;
-  net.first.reserve(pairs.size());
-  net.second.reserve(pairs.size());
-  net.overlap0_m.reserve(pairs.size());
-  net.normal0.reserve(pairs.size());
-  for (const auto& p : pairs) {
-    const Vec3 d = s.centre_m[p.j] - s.centre_m[p.i];
-    const double dist = norm(d);
-    const double sum = s.radius_m[p.i] + s.radius_m[p.j];
-    if (!(dist > 1e-9 * sum))
-      throw InputError("spheres with ids " + std::to_string(s.ids[p.i]) + " and " + std::to_string(s.ids[p.j]) +
-                       " have coincident centres (distance " + format_number(dist) +
-                       " m): their contact normal is undefined; remove one of them from the packing");
-    net.first.push_back(p.i);
-    net.second.push_back(p.j);
-    net.overlap0_m.push_back(sum - dist);
-    net.normal0.push_back((1.0 / dist) * d);
+  return bonds_of(s, pairs_with_an_end_in(s, bond_factor, 0, s.size()));
+}
+
+BondNetwork make_bond_network(const SphereSet& s, double bond_factor, Domain& domain) {
+  require_positive("bond factor C_f", bond_factor);
+  const int ranks = domain.size(), me = domain.rank();
+  const std::vector<std::size_t> starts = SphereSystem::rank_starts(s.size(), ranks);
+  const std::size_t begin = starts[std::size_t(me)], end = starts[std::size_t(me) + 1];
+  BondNetwork net = bonds_of(s, pairs_with_an_end_in(s, bond_factor, begin, end));
+  net.own_begin = begin, net.own_end = end;
+  // The bonds whose first sphere is a lower rank's come first (sorted by first sphere).
+  const std::size_t cross = std::size_t(std::lower_bound(net.first.begin(), net.first.end(), begin) - net.first.begin());
+  // The whole network numbers the bonds by first sphere: rank r's own-first bonds after every lower rank's.
+  std::vector<double> counts(std::size_t(ranks), 0);
+  std::vector<int> ones(static_cast<std::size_t>(ranks), 1), displs(static_cast<std::size_t>(ranks));
+  for (int r = 0; r < ranks; ++r) displs[std::size_t(r)] = r;
+  const double own_first = double(net.size() - cross);
+  domain.gather_all(&own_first, 1, counts.data(), ones, displs);
+  std::size_t offset = 0;
+  for (int r = 0; r < ranks; ++r) {
+    if (r < me) offset += std::size_t(counts[std::size_t(r)]);
+    net.whole_size += std::size_t(counts[std::size_t(r)]);
   }
-  net.incidence = make_incidence(s.size(), net.first, net.second);
+  if (net.whole_size > std::size_t(0xffffffffu))
+    throw InputError(std::to_string(net.whole_size) + " bonds: more than 32-bit bond indices address");
+  net.ids.resize(net.size());
+  for (std::size_t h = cross; h < net.size(); ++h) net.ids[h] = std::uint32_t(offset + h - cross);
+  // A bond across two ranks is numbered by its first sphere's rank, which sends the number (with
+  // the pair, checked) to the second sphere's. Both found the bond from the same doubles; should they
+  // ever disagree, the hashes of the pairs sent less those expected do not add up to 0 (mod 2^64),
+  // and every rank stops here rather than in a mismatched message.
+  const auto owner = [&](std::size_t k) { return int(std::upper_bound(starts.begin(), starts.end(), k) - starts.begin()) - 1; };
+  const auto hash = [&](std::size_t h) { return ((std::uint64_t(net.first[h]) << 32) | net.second[h]) * 0x9E3779B97F4A7C15ull; };
+  std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks)), in(static_cast<std::size_t>(ranks));
+  std::uint64_t unmatched = 0;
+  for (std::size_t h = cross; h < net.size(); ++h)
+    if (const int t = owner(net.second[h]); t != me) {
+      out[std::size_t(t)].insert(out[std::size_t(t)].end(), {double(net.first[h]), double(net.second[h]), double(net.ids[h])});
+      unmatched += hash(h);
+    }
+  for (std::size_t h = 0; h < cross; ++h) {
+    in[std::size_t(owner(net.first[h]))].resize(in[std::size_t(owner(net.first[h]))].size() + 3);
+    unmatched -= hash(h);
+  }
+  if (domain.sum(unmatched) != 0)
+    throw std::logic_error("make_bond_network: the ranks disagree on the bonds across them");
+  std::vector<Domain::Message> sends, receives;
+  for (int r = 0; r < ranks; ++r) {
+    if (!out[std::size_t(r)].empty()) sends.push_back({r, out[std::size_t(r)].data(), int(out[std::size_t(r)].size())});
+    if (!in[std::size_t(r)].empty()) receives.push_back({r, in[std::size_t(r)].data(), int(in[std::size_t(r)].size())});
+  }
+  domain.exchange(sends, receives);
+  std::vector<std::size_t> read(std::size_t(ranks), 0);
+  for (std::size_t h = 0; h < cross; ++h) {
+    const auto q = std::size_t(owner(net.first[h]));
+    const double* m = &in[q][read[q]];
+    read[q] += 3;
+    if (m[0] != double(net.first[h]) || m[1] != double(net.second[h]))
+      throw std::logic_error("make_bond_network: rank " + std::to_string(q) + " numbered another bond than rank " +
+                             std::to_string(me) + "'s bond between spheres " + std::to_string(net.first[h]) + " and " +
+                             std::to_string(net.second[h]));
+    net.ids[h] = std::uint32_t(m[2]);
+  }
   return net;
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> unbonded_overlaps(const SphereSet& s, const BondNetwork& net) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-  const auto centres = centres_of(s);
-  const auto touching = find_pairs_within(centres, s.radius_m, 1.0);
+  const std::size_t begin = net.own_begin, end = std::min(net.own_end, s.size());
   std::size_t b = 0;  // both lists are sorted by (i, j)
-  for (const auto& p : touching) {
+  for (const auto& p : pairs_with_an_end_in(s, 1.0, begin, end)) {
+    if (p.i < begin) continue;  // its first sphere's rank reports it
     while (b < net.size() && (net.first[b] < p.i || (net.first[b] == p.i && net.second[b] < p.j))) ++b;
     const bool bonded = b < net.size() && net.first[b] == p.i && net.second[b] == p.j;
     const double u = s.radius_m[p.i] + s.radius_m[p.j] - norm(s.centre_m[p.j] - s.centre_m[p.i]);

@@ -7,7 +7,12 @@
 // Bonds are a flat array sorted by (first, second); `incidence` lists each
 // sphere's bonds in ascending bond order, so summing a sphere's bond forces
 // in that order gives the same bits for any thread count.
+//
+// On several MPI ranks (docs/mpi.md) each rank makes only its part: the bonds with an end among
+// its own spheres, found by a search over those and the spheres within a bond's reach of them,
+// each with its index in the whole network (from the ranks' counts, as if one process had made it).
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "mesowave/dem/engine/sphere_set.hpp"
@@ -26,12 +31,24 @@ struct Incidence {
 Incidence make_incidence(std::size_t spheres, const std::vector<std::uint32_t>& first,
                          const std::vector<std::uint32_t>& second);
 
+class Domain;
+
 struct BondNetwork {
   std::vector<std::uint32_t> first, second;  ///< first < second
   std::vector<double> overlap0_m;           ///< u_0 = r_i + r_j - |x_j - x_i| at step 0
   std::vector<Vec3> normal0;                 ///< unit vector first -> second at step 0
   Incidence incidence;
+  /// A rank's part (make_bond_network with a Domain): every bond with an end among the spheres
+  /// [own_begin, own_end), each with its index in the whole network (`ids`, ascending), and the
+  /// whole network's size. Whole (one process): `ids` empty, every sphere in the range.
+  std::vector<std::uint32_t> ids;
+  std::size_t whole_size = 0, own_begin = 0, own_end = std::numeric_limits<std::size_t>::max();
   std::size_t size() const { return first.size(); }
+  bool is_part() const { return !ids.empty() || own_begin > 0 || own_end != std::numeric_limits<std::size_t>::max(); }
+  /// Bonds in the whole network.
+  std::size_t total() const { return is_part() ? whole_size : first.size(); }
+  /// Sphere k's bonds are all listed.
+  bool lists_all_of(std::size_t k) const { return k >= own_begin && k < own_end; }
 };
 
 /// Bonds for every pair within `bond_factor` (C_f) times the sum of radii.
@@ -40,9 +57,16 @@ struct BondNetwork {
 /// (distance below 1e-9 of the radii sum).
 BondNetwork make_bond_network(const SphereSet& spheres, double bond_factor);
 
+/// This rank's part of that network (collective): the bonds with an end among its own spheres
+/// (SphereSystem::rank_starts), their indices from each rank's count of the bonds whose first
+/// sphere is its own and, for a bond whose first sphere is another rank's, from that rank.
+/// std::logic_error if two ranks find different bonds between their spheres (never, by construction).
+BondNetwork make_bond_network(const SphereSet& spheres, double bond_factor, Domain& domain);
+
 /// Pairs that overlap (u > 0) at step 0 but are not bonded: possible only
 /// with C_f < 1 (the rod paper's L_int). The full law would start them as
-/// fresh frictional contacts carrying K_n u, i.e. not force-free.
+/// fresh frictional contacts carrying K_n u, i.e. not force-free. Of a part, the
+/// pairs whose first sphere is among its own (each pair on one rank).
 std::vector<std::pair<std::uint32_t, std::uint32_t>> unbonded_overlaps(const SphereSet& spheres,
                                                                        const BondNetwork& bonds);
 

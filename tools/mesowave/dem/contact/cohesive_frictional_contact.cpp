@@ -18,12 +18,14 @@ namespace mesowave::dem {
 
 void CohesiveFrictionalContact::attach(SphereSystem& system) {
   const SphereSet& spheres = system.spheres();
-  const auto stray = unbonded_overlaps(spheres, system.bonds());
-  if (!stray.empty()) {
+  const auto stray = unbonded_overlaps(spheres, system.held_bond_network());
+  // Distributed, each rank finds the pairs whose first sphere is its own: all ranks report them.
+  if (const std::size_t count = system.sum_over_ranks(stray.size()); count > 0) {
     double worst = 0;
     for (auto [i, j] : stray)
       worst = std::max(worst, spheres.radius_m[i] + spheres.radius_m[j] - norm(spheres.centre_m[j] - spheres.centre_m[i]));
-    throw InputError(std::to_string(stray.size()) + " pairs of spheres overlap at step 0 without a bond (bond factor C_f " +
+    worst = system.max_over_ranks(worst);
+    throw InputError(std::to_string(count) + " pairs of spheres overlap at step 0 without a bond (bond factor C_f " +
                      format_number(system.material().bond_factor) + " < 1; largest overlap " + format_number(worst) +
                      " m): the full law would start them as contacts pushing with K_n u; raise C_f to bond them, or "
                      "run --model linear/chain, which never adds contacts");
@@ -100,31 +102,30 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
   std::vector<double> cohesive(m);
   group.read_into("cohesive", cohesive);
   bond_ = group.read_uint32s("bond");
-  // Each bond once, in the slot of its own pair; cohesion only where a bond is (0 or 1).
-  const BondNetwork& bonds = system.bonds();
-  std::vector<std::uint32_t> slot_of_bond(nb, kNoBond);
+  // Each bond once, in the slot of its own pair; cohesion only where a bond is (0 or 1). A rank
+  // checks the bonds it holds (an end of its own; each bond is some rank's, all in one process),
+  // and a slot with an end of its own can only be one of those or a pair.
+  const auto held = [&](std::uint32_t s) { return system.is_own(first[s]) || system.is_own(second[s]); };
+  std::vector<std::uint32_t> slot_of(system.held_bond_network().size(), kNoBond);  // each held bond's, in index order
   std::size_t bonded = 0;
   bool valid = bond_.size() == m;
   for (std::size_t s = 0; valid && s < m; ++s) {
     const std::uint32_t b = bond_[s];
-    if (b == kNoBond) {
-      valid = cohesive[s] == 0.0;
+    valid = cohesive[s] == 0.0 || (b != kNoBond && cohesive[s] == 1.0);
+    if (b == kNoBond || !valid) continue;
+    if (b >= nb || !system.holds_bond(b)) {
+      valid = b < nb && !held(std::uint32_t(s));
       continue;
     }
-    valid = b < nb && slot_of_bond[b] == kNoBond && bonds.first[b] == first[s] && bonds.second[b] == second[s] &&
-            (cohesive[s] == 0.0 || cohesive[s] == 1.0);
-    if (valid) slot_of_bond[b] = std::uint32_t(s), ++bonded;
+    const std::size_t h = system.held_bond(b);
+    valid = slot_of[h] == kNoBond && system.bond_first(b) == first[s] && system.bond_second(b) == second[s];
+    slot_of[h] = std::uint32_t(s), ++bonded;
   }
-  if (!valid || bonded != nb)
+  if (system.sum_over_ranks(valid && bonded == slot_of.size() ? 0 : 1) != 0)
     throw InputError("checkpoint " + group.where() + ": its bonds are not this packing's " + std::to_string(nb));
   // This rank's contacts (the slots with an end of its own) as detection lists them: the bonds
   // by index, then the pairs by (first, second). Laid out, each must come back to its own slot,
   // on every rank: so the checkpoint's layout is the one detection makes.
-  const auto held = [&](std::uint32_t s) { return system.is_own(first[s]) || system.is_own(second[s]); };
-  std::vector<std::uint32_t> slot_of;
-  for (const std::uint32_t s : slot_of_bond)
-    if (held(s)) slot_of.push_back(s);
-  std::vector<std::uint32_t>().swap(slot_of_bond);
   const std::size_t held_bonds = slot_of.size();
   for (std::size_t s = 0; s < m; ++s)
     if (bond_[s] == kNoBond && held(std::uint32_t(s))) slot_of.push_back(std::uint32_t(s));
@@ -178,10 +179,10 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   // This rank's contacts (every contact in one process): those with an end of its own. The
   // contacts: the bonds, then the detected pairs (each with its old slot, or kNoBond when new,
   // with its normal). Their state is looked up only for the slots laid out here.
-  auto [bond_ids, first, second] = system.held_bonds();
+  std::vector<std::uint32_t> first = system.held_bond_network().first, second = system.held_bond_network().second;
   std::vector<std::uint32_t> known_slot;
   std::vector<Vec3> normal;
-  const std::size_t nb = bond_ids.size();
+  const std::size_t nb = first.size();
 
   // Where each held bond and each detected pair lives now.
   std::vector<std::uint32_t> slot_of_bond(nb, kNoBond);
@@ -221,7 +222,7 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   set_slots(order.size(), [&](std::size_t s) {
     const std::uint32_t c = order[s];
     if (c < nb) {
-      const std::uint32_t bond = bond_ids[c];
+      const auto bond = std::uint32_t(system.held_bond_id(c));
       return slot_of_bond[c] != kNoBond ? slot(slot_of_bond[c])
                                         : Slot{system.bond_normal0(bond), {}, system.bond_overlap0(bond), bond, kCohesive};
     }

@@ -74,8 +74,8 @@ std::size_t CohesiveMomentContact::memory_bytes() const {
 
 void CohesiveMomentContact::moment_stiffness(const SphereSystem& system, std::size_t bond, double& k_r,
                                              double& k_tw) const {
-  const double ri = system.spheres().radius_m[system.bonds().first[bond]];
-  const double rj = system.spheres().radius_m[system.bonds().second[bond]];
+  const double ri = system.spheres().radius_m[system.bond_first(bond)];
+  const double rj = system.spheres().radius_m[system.bond_second(bond)];
   k_r = rolling_stiffness(system.material(), p_, ri, rj);
   k_tw = twisting_stiffness(system.material(), p_, ri, rj);
 }
@@ -100,12 +100,13 @@ void CohesiveMomentContact::load_state(SphereSystem& system, const StateGroup& g
 }
 
 void CohesiveMomentContact::before_relayout(const SphereSystem& system) {
-  saved_b_.assign(system.bonds().size(), Vec3{});
-  saved_t_.assign(system.bonds().size(), Vec3{});
+  // By held bond (those of this rank's slots): the bonds keep their moments across layouts.
+  saved_b_.assign(system.held_bond_network().size(), Vec3{});
+  saved_t_.assign(system.held_bond_network().size(), Vec3{});
   for (std::size_t s = 0; s < mb_[0].size(); ++s)
     if (const std::uint32_t b = bond_of_slot(s); b != kNoBond) {
-      saved_b_[b] = bending_moment(s);
-      saved_t_[b] = twisting_moment(s);
+      saved_b_[system.held_bond(b)] = bending_moment(s);
+      saved_t_[system.held_bond(b)] = twisting_moment(s);
     }
 }
 
@@ -118,8 +119,8 @@ void CohesiveMomentContact::after_relayout(const SphereSystem& system) {
   for (std::size_t s = 0; s < slots; ++s)
     if (const std::uint32_t b = bond_of_slot(s); b != kNoBond)
       for (int d = 0; d < 3; ++d) {
-        mb_[d][s] = saved_b_[b][d];
-        mt_[d][s] = saved_t_[b][d];
+        mb_[d][s] = saved_b_[system.held_bond(b)][d];
+        mt_[d][s] = saved_t_[system.held_bond(b)][d];
       }
 }
 

@@ -106,7 +106,9 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
   }
   SphereSet spheres = make_sphere_set(packing, m.density_kg_m3);
   packing = {};
-  BondNetwork bonds = make_bond_network(spheres, m.bond_factor);
+  // On several ranks each makes its part of the network (the bonds of its own spheres).
+  Domain* domain = options_.domain && options_.domain->size() > 1 ? options_.domain : nullptr;
+  BondNetwork bonds = domain ? make_bond_network(spheres, m.bond_factor, *domain) : make_bond_network(spheres, m.bond_factor);
   const Box box = bounding_box(spheres);
 
   const std::optional<Vec3> line = line_axis(spheres);
@@ -124,7 +126,7 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
       sensor_groups.back().push_back(resolve(*target, spheres, box, line, who + label));
   }
   const std::string requested = options_.model != "auto" ? options_.model : scene_.model;
-  choice_ = choose_model(requested, scene_, spheres, bonds, loads);
+  choice_ = choose_model(requested, scene_, spheres, bonds, loads, domain);
   if (choice_.model == "chain" && m.viscous_damping_1_s != 0)
     throw InputError("[model] damping_law = \"viscous\" is not implemented for the chain model; use --model linear");
 
@@ -139,17 +141,19 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
       std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return order_along(a) < order_along(b); });
       for (std::size_t r = 0; r < idx.size(); ++r) rank[idx[r]] = r;
     }
-    for (std::size_t b = 0; b < bonds.size(); ++b)
-      if (std::llabs(std::int64_t(rank[bonds.first[b]]) - std::int64_t(rank[bonds.second[b]])) > 1) ++far;
+    for (std::size_t b = 0; b < bonds.size(); ++b)  // a rank counts the bonds whose first sphere is its own
+      if (bonds.lists_all_of(bonds.first[b]) && std::llabs(std::int64_t(rank[bonds.first[b]]) - std::int64_t(rank[bonds.second[b]])) > 1) ++far;
+    if (domain) far = std::size_t(domain->sum(far));
     if (far > 0)
-      notes_.push_back(std::to_string(far) + " of " + std::to_string(bonds.size()) +
+      notes_.push_back(std::to_string(far) + " of " + std::to_string(bonds.total()) +
                        " bonds link spheres that are not neighbours on the line: at this spacing a sphere reaches its "
                        "second neighbours within C_f (r_i + r_j) = " + format_number(m.bond_factor) +
                        " (r_i + r_j), so they are bonded too (the rod paper's L_int < 2d would exclude them; a "
                        "bond_factor below (2 d)/(2 R) does)");
   }
 
-  Domain* domain = options_.domain && options_.domain->size() > 1 ? options_.domain : nullptr;
+  // The chain (a line of spheres, one process only: Model::distribute refuses it) takes the whole network.
+  if (domain && choice_.model == "chain") bonds = make_bond_network(spheres, m.bond_factor);
   model_ = contact_laws()
                .get(scene_.contact_law, "[material].law")
                .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line, domain});

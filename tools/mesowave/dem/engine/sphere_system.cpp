@@ -49,16 +49,17 @@ struct LinearBond {
   }
 };
 
-LinearBond linear_bond(const SphereSystem& system, std::size_t k) {
+// Held bond h (held_bond_network(): the setup's Lanczos applies every one a hundred times or so,
+// so by place, not by index).
+LinearBond linear_bond(const SphereSystem& system, std::size_t h) {
   const SphereSet& s = system.spheres();
-  const BondNetwork& b = system.bonds();
+  const BondNetwork& held = system.held_bond_network();
   const CohesiveFrictionalMaterial& m = system.material();
-  const double ri = s.radius_m[b.first[k]], rj = s.radius_m[b.second[k]];
-  const double dist0 = ri + rj - system.bond_overlap0(k);
+  const double ri = s.radius_m[held.first[h]], rj = s.radius_m[held.second[h]];
+  const double dist0 = ri + rj - held.overlap0_m[h];
   const double alpha = (ri + rj) / dist0;
-  LinearBond lb{system.bond_normal0(k), normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha,
-                rj / alpha};
-  system.kernel().moment_stiffness(system, k, lb.kr, lb.ktw);
+  LinearBond lb{held.normal0[h], normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha, rj / alpha};
+  system.kernel().moment_stiffness(system, system.held_bond_id(h), lb.kr, lb.ktw);
   return lb;
 }
 
@@ -149,28 +150,26 @@ std::uint32_t SphereSystem::local_id(std::size_t k) const {
 
 SphereSystem::~SphereSystem() = default;
 
+// One process takes the whole network; each of several ranks its part (make_bond_network with the
+// domain): the bonds with an end of its own, whose indices it keeps as two runs.
 void SphereSystem::keep_held_bonds() {
-  const std::size_t first = own_begin(), end = own_end();
-  held_bond_begin_ = std::size_t(std::lower_bound(bonds_.first.begin(), bonds_.first.end(), first) - bonds_.first.begin());
-  held_bond_end_ = std::size_t(std::lower_bound(bonds_.first.begin(), bonds_.first.end(), end) - bonds_.first.begin());
-  held_cross_bonds_.clear();
-  for (std::size_t b = 0; b < held_bond_begin_; ++b)
-    if (is_own(bonds_.second[b])) held_cross_bonds_.push_back(std::uint32_t(b));
-  if (!domain_) {
-    bond_normal0_ = std::move(bonds_.normal0), bond_overlap0_ = std::move(bonds_.overlap0_m);
-  } else {
-    for (const std::uint32_t b : held_cross_bonds_) {
-      bond_normal0_.push_back(bonds_.normal0[b]);
-      bond_overlap0_.push_back(bonds_.overlap0_m[b]);
-    }
-    bond_normal0_.insert(bond_normal0_.end(), bonds_.normal0.begin() + std::ptrdiff_t(held_bond_begin_),
-                         bonds_.normal0.begin() + std::ptrdiff_t(held_bond_end_));
-    bond_overlap0_.insert(bond_overlap0_.end(), bonds_.overlap0_m.begin() + std::ptrdiff_t(held_bond_begin_),
-                          bonds_.overlap0_m.begin() + std::ptrdiff_t(held_bond_end_));
-  }
-  std::vector<Vec3>().swap(bonds_.normal0);
-  std::vector<double>().swap(bonds_.overlap0_m);
   bonds_.incidence = {};
+  const std::size_t first = own_begin(), end = own_end();
+  if (!domain_ && !bonds_.is_part()) {
+    bond_count_ = held_bond_end_ = bonds_.size();
+    return;
+  }
+  if (!domain_ || bonds_.own_begin != first || bonds_.own_end != end)
+    throw std::logic_error("SphereSystem: the bonds are not this rank's part of the network (make_bond_network with its domain)");
+  bond_count_ = bonds_.whole_size;
+  const std::size_t cross = std::size_t(std::lower_bound(bonds_.first.begin(), bonds_.first.end(), first) - bonds_.first.begin());
+  held_cross_bonds_.assign(bonds_.ids.begin(), bonds_.ids.begin() + std::ptrdiff_t(cross));
+  // An empty run of own-first bonds sits past every index, where held_bond finds none.
+  held_bond_begin_ = cross < bonds_.size() ? bonds_.ids[cross] : bond_count_;
+  held_bond_end_ = held_bond_begin_ + (bonds_.size() - cross);
+  if (cross < bonds_.size() && bonds_.ids.back() + 1 != held_bond_end_)
+    throw std::logic_error("SphereSystem: this rank's own-first bonds are not one run of indices");
+  std::vector<std::uint32_t>().swap(bonds_.ids);
 }
 
 std::size_t SphereSystem::held_bond(std::size_t b) const {
@@ -181,15 +180,9 @@ std::size_t SphereSystem::held_bond(std::size_t b) const {
   return std::size_t(at - held_cross_bonds_.begin());
 }
 
-SphereSystem::HeldBonds SphereSystem::held_bonds() const {
-  HeldBonds held;
-  for (auto* list : {&held.ids, &held.first, &held.second}) list->reserve(held_cross_bonds_.size() + held_bond_end_ - held_bond_begin_);
-  for_each_held_bond([&](std::size_t b) {
-    held.ids.push_back(std::uint32_t(b));
-    held.first.push_back(bonds_.first[b]);
-    held.second.push_back(bonds_.second[b]);
-  });
-  return held;
+bool SphereSystem::holds_bond(std::size_t b) const {
+  return (b >= held_bond_begin_ && b < held_bond_end_) ||
+         std::binary_search(held_cross_bonds_.begin(), held_cross_bonds_.end(), std::uint32_t(b));
 }
 
 std::vector<std::uint32_t> SphereSystem::set_contacts(const std::vector<std::uint32_t>& first,
@@ -222,10 +215,8 @@ std::vector<std::uint32_t> SphereSystem::lay_out_whole(const std::vector<std::ui
 }
 
 std::vector<std::uint32_t> SphereSystem::set_bond_contacts() {
-  if (!domain_) return set_contacts(bonds_.first, bonds_.second, bonds_.size());
-  const HeldBonds held = held_bonds();
-  std::vector<std::uint32_t> order = set_contacts(held.first, held.second, held.ids.size());
-  for (std::uint32_t& c : order) c = held.ids[c];
+  std::vector<std::uint32_t> order = set_contacts(bonds_.first, bonds_.second, bonds_.size());
+  for (std::uint32_t& c : order) c = std::uint32_t(held_bond_id(c));
   return order;
 }
 
@@ -503,16 +494,16 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
     const double s = e.scale[part];
     for (int d = 0; d < 3; ++d) e.y[3 * part + d] -= s * g[d];  // K x = -(force)
   };
-  for_each_held_bond([&](std::size_t b) {
-    const End i = end_of(bonds_.first[b]), j = end_of(bonds_.second[b]);
-    const LinearBond lb = linear_bond(*this, b);
+  for (std::size_t h = 0; h < bonds_.size(); ++h) {  // in bond order
+    const End i = end_of(bonds_.first[h]), j = end_of(bonds_.second[h]);
+    const LinearBond lb = linear_bond(*this, h);
     Vec3 fi, mi, fj, mj;
     lb.forces(dof(i, 0), dof(i, 1), dof(j, 0), dof(j, 1), fi, mi, fj, mj);
     add(i, 0, fi);
     add(i, 1, mi);
     add(j, 0, fj);
     add(j, 1, mj);
-  });
+  }
 }
 
 double SphereSystem::stiffness_dot(const double* a, const double* b) const {
@@ -523,9 +514,9 @@ double SphereSystem::stiffness_dot(const double* a, const double* b) const {
 double SphereSystem::scaled_stiffness_row_sum_bound() const {
   const std::size_t first = own_begin();
   std::vector<double> row(6 * (own_end() - first), 0.0);
-  for_each_held_bond([&](std::size_t b) {
-    const std::size_t ends[2] = {bonds_.first[b], bonds_.second[b]};
-    const LinearBond lb = linear_bond(*this, b);
+  for (std::size_t h = 0; h < bonds_.size(); ++h) {
+    const std::size_t ends[2] = {bonds_.first[h], bonds_.second[h]};
+    const LinearBond lb = linear_bond(*this, h);
     double end_scale[2][2], scale[12];  // M^-1/2: each end's 1/sqrt(m) and 1/sqrt(I), once
     for (int e = 0; e < 2; ++e)
       end_scale[e][0] = 1.0 / std::sqrt(spheres_.mass_kg[ends[e]]), end_scale[e][1] = 1.0 / std::sqrt(spheres_.inertia_kg_m2[ends[e]]);
@@ -542,7 +533,7 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
         row[6 * (k - first) + std::size_t(r % 6)] += std::abs(entry) * scale[r] * scale[c];
       }
     }
-  });
+  }
   const double bound = row.empty() ? 0.0 : *std::max_element(row.begin(), row.end());
   return domain_ ? domain_->max(bound) : bound;  // a maximum: exact in any order
 }
@@ -616,7 +607,7 @@ std::size_t SphereSystem::memory_bytes() const {
   const std::size_t n = held_sphere_count();
   std::size_t bytes = n * (sizeof(Vec3) * (6 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + 2 * sizeof(double) +
                            sizeof(std::uint32_t) + sizeof(std::int64_t) + 1);
-  bytes += bonds_.size() * 2 * sizeof(std::uint32_t) + bond_normal0_.size() * (sizeof(Vec3) + sizeof(double)) +
+  bytes += bonds_.size() * (2 * sizeof(std::uint32_t) + sizeof(Vec3) + sizeof(double)) +
            held_cross_bonds_.size() * sizeof(std::uint32_t);
   bytes += kernel_->memory_bytes() + out_moment_.size() * sizeof(Vec3);
   bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +

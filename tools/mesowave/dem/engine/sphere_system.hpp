@@ -25,8 +25,8 @@
 // actuators and sensors read, and the task sums are redone from the contacts' values
 // gathered in slot order, so every rank holds what the single-process run holds of its
 // own spheres, its ghosts and the observed spheres, bit for bit. The critical step's Lanczos
-// runs on each rank's own rows (scaled_stiffness_action, stiffness_dot), and a rank keeps the
-// step-0 state of its held bonds only (bond_normal0). A rank's per-sphere arrays hold only the
+// runs on each rank's own rows (scaled_stiffness_action, stiffness_dot), and a rank keeps
+// its held bonds only, made by itself (held_bond_network, make_bond_network). A rank's per-sphere arrays hold only the
 // spheres it holds (own, ghosts, observed), numbered locally in global id order (hold()), so
 // that first < second and every sphere's order of terms survive; the Model interface takes
 // global ids (the packing's order), a contact kernel reads local ones.
@@ -90,7 +90,8 @@ class SphereSystem final : public Model {
 public:
   /// With a `domain` of several ranks (docs/mpi.md) the system is split from the start: the
   /// law lays out and holds only the contacts of this rank's spheres; distribute() must then
-  /// be given the same domain.
+  /// be given the same domain. `bonds` is the whole network or this rank's part of it
+  /// (make_bond_network with the domain); the system keeps the bonds with an end of its own.
   SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
                std::unique_ptr<ContactKernel> kernel, Domain* domain = nullptr);
   ~SphereSystem() override;
@@ -100,7 +101,7 @@ public:
   std::size_t contact_count() const override { return global_slots_; }
   std::size_t broken_bond_count() const override;
   std::size_t sphere_count() const override { return spheres_.size(); }
-  std::size_t bond_count() const override { return bonds_.size(); }
+  std::size_t bond_count() const override { return bond_count_; }
   std::size_t degrees_of_freedom() const override { return 6 * spheres_.size(); }
   Vec3 reference_position(std::size_t k) const override { return spheres_.centre_m[k]; }
   double radius(std::size_t k) const override { return spheres_.radius_m[k]; }
@@ -142,27 +143,35 @@ public:
     std::vector<double> radii;
   };
   Nearby spheres_near_own(double reach_m);
-  /// The sum of every rank's count (itself in one process; collective).
+  /// The sum of every rank's count, the largest of their values (itself in one process; collective).
   std::size_t sum_over_ranks(std::size_t count) const;
+  double max_over_ranks(double value) const;
 
   const SphereSet& spheres() const { return spheres_; }
-  /// The bonds' pairs (first, second). Their step-0 normals and u_0 are bond_normal0() and
-  /// bond_overlap0(); the system keeps no incidence (only the model's choice reads it, before).
-  const BondNetwork& bonds() const { return bonds_; }
+  /// Bond b's spheres (first < second), a held bond's (held_bond); its step-0 normal and u_0 are
+  /// bond_normal0() and bond_overlap0().
+  std::uint32_t bond_first(std::size_t b) const { return bonds_.first[held_bond(b)]; }
+  std::uint32_t bond_second(std::size_t b) const { return bonds_.second[held_bond(b)]; }
+  /// The spheres rank r of `ranks` owns, [starts[r], starts[r + 1]): whole blocks of kSphereBlock
+  /// spheres in Morton order, rank r the blocks [B r / N, B (r + 1) / N) of B.
+  static std::vector<std::size_t> rank_starts(std::size_t spheres, int ranks);
   /// Sphere k (a global id) is this rank's own (every sphere is in one process).
   bool is_own(std::size_t k) const { return k >= own_begin() && k < own_end(); }
-  /// The bonds with an end of this rank's own (all in one process), by index, so sorted by
-  /// (first, second) too: their indices and spheres.
-  struct HeldBonds {
-    std::vector<std::uint32_t> ids, first, second;
-  };
-  HeldBonds held_bonds() const;
-  /// Bond b's place in held_bonds() (b in one process); std::logic_error for a bond not held.
+  /// The held bonds: those with an end of this rank's own (all in one process), by index, so
+  /// sorted by (first, second) too; own_begin and own_end give the rank's spheres (no incidence, no ids).
+  const BondNetwork& held_bond_network() const { return bonds_; }
+  /// The index of held bond h (h in one process).
+  std::size_t held_bond_id(std::size_t h) const {
+    return h < held_cross_bonds_.size() ? held_cross_bonds_[h] : held_bond_begin_ + (h - held_cross_bonds_.size());
+  }
+  /// Bond b's place among the held bonds (b in one process); std::logic_error for a bond not held.
   std::size_t held_bond(std::size_t b) const;
+  /// Bond b (< bond_count()) has an end of this rank's own (every bond in one process).
+  bool holds_bond(std::size_t b) const;
   /// Bond b's unit normal and u_0 at step 0. Distributed, a rank keeps them only for the bonds
   /// with an end of its own (docs/mpi.md); std::logic_error for another.
-  Vec3 bond_normal0(std::size_t b) const { return bond_normal0_[held_bond(b)]; }
-  double bond_overlap0(std::size_t b) const { return bond_overlap0_[held_bond(b)]; }
+  Vec3 bond_normal0(std::size_t b) const { return bonds_.normal0[held_bond(b)]; }
+  double bond_overlap0(std::size_t b) const { return bonds_.overlap0_m[held_bond(b)]; }
   const CohesiveFrictionalMaterial& material() const { return material_; }
   const ContactKernel& kernel() const { return *kernel_; }
   /// Angular velocity w_{n+1/2} of sphere k (and its initial value, for tests).
@@ -305,28 +314,20 @@ public:
 
 private:
   SphereSet spheres_;
-  BondNetwork bonds_;
+  BondNetwork bonds_;  ///< the held bonds (all in one process), without incidence or ids
+  std::size_t bond_count_ = 0;  ///< in the whole network
   CohesiveFrictionalMaterial material_;
   std::unique_ptr<ContactKernel> kernel_;
   bool displacement_state_, track_rotation_;
   int threads_ = 1;
   bool parallel_ = false;
 
-  // The bonds' step-0 normals and u_0, for the bonds with an end of this rank's own (all in one
-  // process), in bond order: those whose first sphere lies below the rank's spheres
-  // (held_cross_bonds_), then the bonds [held_bond_begin_, held_bond_end_), whose first sphere is
-  // its own (bonds are sorted by first sphere).
+  // The held bonds (an end of this rank's own; all in one process), in bond order: those whose
+  // first sphere lies below the rank's spheres (held_cross_bonds_, their indices), then the bonds
+  // [held_bond_begin_, held_bond_end_), whose first sphere is its own (bonds are sorted by first sphere).
   std::vector<std::uint32_t> held_cross_bonds_;
   std::size_t held_bond_begin_ = 0, held_bond_end_ = 0;
-  std::vector<Vec3> bond_normal0_;
-  std::vector<double> bond_overlap0_;
   void keep_held_bonds();
-  /// f(b) for every held bond, in bond order (the cross bonds all come before the range).
-  template <class F>
-  void for_each_held_bond(const F& f) const {
-    for (const std::uint32_t b : held_cross_bonds_) f(std::size_t(b));
-    for (std::size_t b = held_bond_begin_; b < held_bond_end_; ++b) f(b);
-  }
 
   // Per held sphere, in local numbering (hold()).
   std::vector<Vec3> x_, v_, w_, a_, theta_, f_ext_;

@@ -61,6 +61,13 @@ void Model::distribute(Domain& /*domain*/, const std::vector<std::size_t>& /*obs
   throw InputError("the " + name() + " model runs on one process only; on several MPI ranks run --model linear or full");
 }
 
+std::vector<std::size_t> SphereSystem::rank_starts(std::size_t n, int ranks) {
+  const std::size_t blocks = (n + kSphereBlock - 1) / kSphereBlock;
+  std::vector<std::size_t> starts(std::size_t(ranks) + 1);
+  for (int r = 0; r <= ranks; ++r) starts[std::size_t(r)] = std::min(n, blocks * std::size_t(r) / std::size_t(ranks) * kSphereBlock);
+  return starts;
+}
+
 // Called by the constructor, before the law lays out its contacts, so that no rank ever holds
 // all of them: the owners of the spheres.
 void SphereSystem::split(Domain& domain) {
@@ -74,13 +81,13 @@ void SphereSystem::split(Domain& domain) {
   domain_ = &domain;
   rank_ = me;
   ghost_layer_m_ = test_ghost_layer_m(), ghost_layer_rank_ = test_ghost_layer_rank();
-  // Whole blocks in Morton order: rank r holds blocks [B r / N, B (r + 1) / N).
+  const std::vector<std::size_t> starts = rank_starts(n, ranks);
   sphere_counts_.assign(std::size_t(ranks), 0), sphere_displs_.assign(std::size_t(ranks), 0);
   block_counts_.assign(std::size_t(ranks), 0), block_displs_.assign(std::size_t(ranks), 0);
   block_owner_.resize(blocks);
   for (int r = 0; r < ranks; ++r) {
-    const std::size_t b0 = blocks * std::size_t(r) / std::size_t(ranks), b1 = blocks * std::size_t(r + 1) / std::size_t(ranks);
-    const std::size_t s0 = b0 * kSphereBlock, s1 = std::min(n, b1 * kSphereBlock);
+    const std::size_t s0 = starts[std::size_t(r)], s1 = starts[std::size_t(r) + 1];
+    const std::size_t b0 = s0 / kSphereBlock, b1 = (s1 + kSphereBlock - 1) / kSphereBlock;
     std::fill(block_owner_.begin() + std::ptrdiff_t(b0), block_owner_.begin() + std::ptrdiff_t(b1), r);
     block_displs_[std::size_t(r)] = int(b0), block_counts_[std::size_t(r)] = int(b1 - b0);
     sphere_displs_[std::size_t(r)] = int(3 * s0), sphere_counts_[std::size_t(r)] = int(3 * (s1 - s0));
@@ -277,7 +284,7 @@ void SphereSystem::lay_out_domain() {
     for (auto b = std::size_t(at - bonds_.first.begin()); b < bonds_.size() && bonds_.first[b] == i; ++b)
       if (bonds_.second[b] == j) bond = b;
     throw InputError("rank " + std::to_string(me) + " of " + std::to_string(ranks) + ": " +
-                     (bond < bonds_.size() ? "bond " + std::to_string(bond) : std::string("the contact")) +
+                     (bond < bonds_.size() ? "bond " + std::to_string(held_bond_id(bond)) : std::string("the contact")) +
                      " between spheres " + std::to_string(spheres_.packing_index[i]) + " and " +
                      std::to_string(spheres_.packing_index[j]) + " (packing ids) has lost its partner: sphere " +
                      std::to_string(spheres_.packing_index[missing]) + " is neither held nor a ghost on this rank (ghost layer " +
@@ -552,6 +559,8 @@ std::size_t SphereSystem::sum_over_ranks(std::size_t count) const {
   return domain_ ? std::size_t(domain_->sum(count)) : count;
 }
 
+double SphereSystem::max_over_ranks(double value) const { return domain_ ? domain_->max(value) : value; }
+
 SphereSystem::Nearby SphereSystem::spheres_near_own(double reach_m) {
   Nearby near;
   const auto add = [&](std::size_t k, const Vec3& x) {
@@ -730,7 +739,8 @@ std::string SphereSystem::distribution() const {
          std::to_string(own_begin_) + "-" + std::to_string(own_end_) + " of " + std::to_string(spheres_.size()) +
          " (Morton order), " + std::to_string(held_sphere_count()) + " held, " + std::to_string(ghosts_) +
          " ghosts from " + std::to_string(ghost_receives_.size()) + " ranks, " + std::to_string(observed_.size()) + " observed spheres, " +
-         std::to_string(first_.size()) + " of " + std::to_string(global_slots_) + " contacts held here; received per step: " + std::to_string(ghost_doubles_ * 8 / steps) + " B of ghosts in " +
+         std::to_string(first_.size()) + " of " + std::to_string(global_slots_) + " contacts and " + std::to_string(bonds_.size()) +
+         " of " + std::to_string(bond_count_) + " bonds held here; received per step: " + std::to_string(ghost_doubles_ * 8 / steps) + " B of ghosts in " +
          format_number(double(ghost_messages_) / double(steps)) + " messages, " +
          std::to_string(shared_doubles_ * 8 / steps) + " B gathered (the replicated state of stage 1: " +
          std::to_string(replicated) + " B)" +

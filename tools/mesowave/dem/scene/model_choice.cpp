@@ -8,6 +8,7 @@
 #include "mesowave/core/format.hpp"
 #include "mesowave/dem/scene/plugins.hpp"
 #include "mesowave/dem/loading/sphere_selection.hpp"
+#include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
 
@@ -27,9 +28,10 @@ std::optional<Vec3> line_axis(const SphereSet& s) {
 }
 
 double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& s, const BondNetwork& bonds,
-                             const CohesiveFrictionalMaterial& m, double duration_s) {
+                             const CohesiveFrictionalMaterial& m, double duration_s, Domain* domain) {
   double weakest = std::numeric_limits<double>::infinity(), stiffest = 0;
-  for (std::size_t k : load.spheres)
+  for (std::size_t k : load.spheres) {
+    if (!bonds.lists_all_of(k)) continue;  // another rank's sphere: that rank takes it
     for (std::uint32_t e = bonds.incidence.offset[k]; e < bonds.incidence.offset[k + 1]; ++e) {
       const std::uint32_t b = Incidence::bond(bonds.incidence.entry[e]);
       const double ri = s.radius_m[bonds.first[b]], rj = s.radius_m[bonds.second[b]];
@@ -40,16 +42,18 @@ double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& s, const
       weakest = std::min(weakest, strength);
       stiffest = std::max(stiffest, kn);
     }
+  }
+  if (domain) weakest = -domain->max(-weakest), stiffest = domain->max(stiffest);  // exact in any order
   if (!std::isfinite(weakest)) return std::numeric_limits<double>::infinity();  // a loaded sphere without bonds
   const ActuatorKind& kind = actuator_kinds().get(load.spec->kind, "actuator " + load.spec->name);
   return kind.peak_sphere_force(*load.spec, load.spheres.size(), stiffest, duration_s) / weakest;
 }
 
 ModelChoice choose_model(const std::string& requested, const Scene& scene, const SphereSet& s,
-                         const BondNetwork& bonds, const std::vector<ResolvedLoad>& loads) {
+                         const BondNetwork& bonds, const std::vector<ResolvedLoad>& loads, Domain* domain) {
   ModelChoice c;
   for (const auto& load : loads)
-    c.estimated_force_ratio = std::max(c.estimated_force_ratio, estimated_force_ratio(load, s, bonds, scene.material, scene.duration_s));
+    c.estimated_force_ratio = std::max(c.estimated_force_ratio, estimated_force_ratio(load, s, bonds, scene.material, scene.duration_s, domain));
   const auto axis = line_axis(s);
 
   const ContactLaw& law = contact_laws().get(scene.contact_law, "[material].law");

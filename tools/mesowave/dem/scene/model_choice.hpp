@@ -44,12 +44,14 @@ struct ResolvedLoad {
 /// K_n there times |amplitude|, or times |velocity| x duration for a moving
 /// platen or wall) over the weakest bond at those spheres
 /// (min(T, C) R^2; K_n R, a strain of one, when the bonds never break).
+/// With a rank's part of the network and its `domain` (collective), each rank takes the loaded
+/// spheres whose bonds it lists, and the weakest and stiffest come from every rank (exact).
 double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& spheres, const BondNetwork& bonds,
-                             const CohesiveFrictionalMaterial& material, double duration_s);
+                             const CohesiveFrictionalMaterial& material, double duration_s, Domain* domain = nullptr);
 
 /// `requested`: auto | full | linear | chain. InputError for chain on a
-/// packing that is not a line.
+/// packing that is not a line. `domain`: as for estimated_force_ratio.
 ModelChoice choose_model(const std::string& requested, const Scene& scene, const SphereSet& spheres,
-                         const BondNetwork& bonds, const std::vector<ResolvedLoad>& loads);
+                         const BondNetwork& bonds, const std::vector<ResolvedLoad>& loads, Domain* domain = nullptr);
 
 }  // namespace mesowave::dem
