@@ -5,7 +5,6 @@
 // single rank asked for; the options a distributed run does not take are refused in one line.
 // The reference is the single-process engine itself, run without any MPI launcher.
 #include <gtest/gtest.h>
-#include <hdf5.h>
 
 #include <signal.h>
 
@@ -19,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dem/checkpoint_edits.hpp"
 #include "dem/test_packings.hpp"
 #include "mesowave/dem/packing/packing_file.hpp"
 #include "mesowave/prov/database.hpp"
@@ -281,21 +281,7 @@ TEST(MwDemMpi, ACheckpointOfTwoRanksIsTheOneProcessFileAndRestartsOnThreeToTheSa
   // twice, the first slot's own once less. Each rank checks only the bonds it holds (made per rank),
   // and every rank refuses it, in one line, before a step.
   std::filesystem::copy_file(dir / "crush-np2.refused.h5", dir / "swapped.h5");
-  {
-    const hid_t f = H5Fopen((dir / "swapped.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-    ASSERT_GE(f, 0);
-    const hid_t d = H5Dopen2(f, "/model/law/bond", H5P_DEFAULT);
-    ASSERT_GE(d, 0);
-    const hid_t space = H5Dget_space(d);
-    std::vector<std::uint32_t> bond(std::size_t(H5Sget_simple_extent_npoints(space)));
-    ASSERT_GE(H5Dread(d, H5T_NATIVE_UINT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, bond.data()), 0);
-    std::size_t last = bond.size() - 1;
-    while (bond[last] == 0xffffffffu) --last;  // no bond (a detected pair)
-    ASSERT_NE(bond[0], bond[last]);
-    bond[0] = bond[last];
-    ASSERT_GE(H5Dwrite(d, H5T_NATIVE_UINT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, bond.data()), 0);
-    H5Sclose(space), H5Dclose(d), H5Fclose(f);
-  }
+  ASSERT_NO_FATAL_FAILURE(test::give_the_first_slot_the_last_bond(dir / "swapped.h5"));
   const auto refused = mpirun(2, {"run", (dir / "crush.toml").string(), "--quiet", "--threads", "1", "--signals",
                                   (dir / "refused.h5").string(), "--restart", (dir / "swapped.h5").string()});
   EXPECT_EQ(refused.exit_status, 1) << refused.err;

@@ -16,6 +16,7 @@
 #include "mesowave/core/threads.hpp"
 #include "mesowave/dem/contact/cohesive_frictional_contact.hpp"
 #include "mesowave/dem/engine/simulation.hpp"
+#include "dem/checkpoint_edits.hpp"
 #include "dem/test_packings.hpp"
 #include "support/input_error.hpp"
 #include "support/run_tool.hpp"
@@ -243,20 +244,7 @@ TEST(Checkpoint, ACheckpointOfAnotherRunIsRefused) {
   expect_refusal([&] { sim.restore(dir / "c.h5", kIdentity); }, "its contact layout is not this packing's");
   // The first slot's bond index set to the last bonded slot's: that bond twice, the first slot's not at all.
   run_to(scene, packing, "full", 10, dir / "d.h5");
-  {
-    const hid_t f = H5Fopen((dir / "d.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-    ASSERT_GE(f, 0);
-    const hid_t d = H5Dopen2(f, "/model/law/bond", H5P_DEFAULT);
-    const hid_t space = H5Dget_space(d);
-    std::vector<std::uint32_t> bond(std::size_t(H5Sget_simple_extent_npoints(space)));
-    ASSERT_GE(H5Dread(d, H5T_NATIVE_UINT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, bond.data()), 0);
-    std::size_t last = bond.size() - 1;
-    while (bond[last] == 0xffffffffu) --last;  // no bond (a detected pair)
-    ASSERT_NE(bond[0], bond[last]);
-    bond[0] = bond[last];
-    ASSERT_GE(H5Dwrite(d, H5T_NATIVE_UINT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, bond.data()), 0);
-    H5Sclose(space), H5Dclose(d), H5Fclose(f);
-  }
+  ASSERT_NO_FATAL_FAILURE(test::give_the_first_slot_the_last_bond(dir / "d.h5"));
   expect_refusal([&] { sim.restore(dir / "d.h5", kIdentity); }, "its bonds are not this packing's");
   // Not a checkpoint at all.
   test::write_file(dir / "x.h5", "not hdf5");

@@ -73,8 +73,12 @@ void write_dataset(hid_t parent, const std::string& name, const std::vector<T>& 
     check_status(H5Dwrite(set.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write dataset " + name);
 }
 
-template <typename T>
-std::vector<T> read_dataset(hid_t parent, const std::string& name, hid_t mem_type, std::vector<hsize_t>* shape) {
+// A numeric dataset opened for reading, its dataspace and dimensions; InputError if it is missing or not numbers.
+struct NumericDataset {
+  Handle set, space;
+  std::vector<hsize_t> dims;
+};
+NumericDataset open_numeric(hid_t parent, const std::string& name) {
   if (!has_link(parent, name)) throw InputError("HDF5 dataset '" + name + "' is missing");
   Handle set(check_read(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), "open dataset " + name));
   Handle type(check_read(H5Dget_type(set.id()), "get the type of dataset " + name));
@@ -82,8 +86,14 @@ std::vector<T> read_dataset(hid_t parent, const std::string& name, hid_t mem_typ
   Handle space(check_read(H5Dget_space(set.id()), "get dataspace of " + name));
   const int rank = H5Sget_simple_extent_ndims(space.id());
   check_read_status(rank, "get the rank of dataset " + name);
-  std::vector<hsize_t> dims(std::size_t(std::max(rank, 0)));
+  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
   H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr);
+  return {std::move(set), std::move(space), std::move(dims)};
+}
+
+template <typename T>
+std::vector<T> read_dataset(hid_t parent, const std::string& name, hid_t mem_type, std::vector<hsize_t>* shape) {
+  const auto [set, space, dims] = open_numeric(parent, name);
   std::size_t count = 1;
   for (auto d : dims) {
     if (d != 0 && count > std::numeric_limits<std::size_t>::max() / sizeof(T) / std::size_t(d))
@@ -195,6 +205,43 @@ void write_doubles(hid_t parent, const std::string& name, const std::vector<doub
 
 void write_int64s(hid_t parent, const std::string& name, const std::vector<std::int64_t>& data, std::size_t cols) {
   write_dataset(parent, name, data, cols, H5T_NATIVE_INT64, H5T_STD_I64LE, false);
+}
+
+template <typename T>
+std::vector<T> read_rows(hid_t parent, const std::string& name, std::size_t first, std::size_t count, hid_t mem_type,
+                         std::vector<hsize_t>* shape) {
+  const auto [set, space, dims] = open_numeric(parent, name);
+  const int rank = int(dims.size());
+  if (rank != 1 && rank != 2) throw InputError("HDF5 dataset '" + name + "' is not a list of rows (rank " + std::to_string(rank) + ")");
+  if (first > dims[0] || count > dims[0] - first)
+    throw InputError("HDF5 dataset '" + name + "' has " + std::to_string(dims[0]) + " rows, not rows " + std::to_string(first) +
+                     " to " + std::to_string(first + count));
+  const hsize_t cols = rank == 2 ? dims[1] : 1;
+  std::vector<T> data(count * std::size_t(cols));
+  if (count > 0) {
+    const hsize_t start[2] = {hsize_t(first), 0}, size[2] = {hsize_t(count), cols};
+    check_read_status(H5Sselect_hyperslab(space.id(), H5S_SELECT_SET, start, nullptr, size, nullptr), "select rows of " + name);
+    Handle memory(check_read(H5Screate_simple(rank, size, nullptr), "create a memory space for " + name));
+    check_read_status(H5Dread(set.id(), mem_type, memory.id(), space.id(), H5P_DEFAULT, data.data()), "read rows of " + name);
+  }
+  if (shape) *shape = dims;
+  return data;
+}
+
+std::vector<double> read_double_rows(hid_t parent, const std::string& name, std::size_t first, std::size_t count,
+                                     std::vector<hsize_t>* shape) {
+  return read_rows<double>(parent, name, first, count, H5T_NATIVE_DOUBLE, shape);
+}
+
+std::vector<std::int64_t> read_int64_rows(hid_t parent, const std::string& name, std::size_t first, std::size_t count,
+                                          std::vector<hsize_t>* shape) {
+  return read_rows<std::int64_t>(parent, name, first, count, H5T_NATIVE_INT64, shape);
+}
+
+std::vector<hsize_t> dataset_shape(hid_t parent, const std::string& name) {
+  std::vector<hsize_t> dims;
+  read_rows<double>(parent, name, 0, 0, H5T_NATIVE_DOUBLE, &dims);
+  return dims;
 }
 
 std::vector<double> read_doubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape) {

@@ -48,6 +48,14 @@ void write_doubles(hid_t parent, const std::string& name, const std::vector<doub
 void write_int64s(hid_t parent, const std::string& name, const std::vector<std::int64_t>& data, std::size_t cols = 0);
 std::vector<double> read_doubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape = nullptr);
 std::vector<std::int64_t> read_int64s(hid_t parent, const std::string& name, std::vector<hsize_t>* shape = nullptr);
+/// Rows [first, first + count) of a 1-D or 2-D dataset (row-major, one hyperslab), and `shape`
+/// its dimensions: a piece of a dataset too large to hold whole. InputError if the rows are not there.
+std::vector<double> read_double_rows(hid_t parent, const std::string& name, std::size_t first, std::size_t count,
+                                     std::vector<hsize_t>* shape = nullptr);
+std::vector<std::int64_t> read_int64_rows(hid_t parent, const std::string& name, std::size_t first, std::size_t count,
+                                          std::vector<hsize_t>* shape = nullptr);
+/// A dataset's dimensions.
+std::vector<hsize_t> dataset_shape(hid_t parent, const std::string& name);
 
 void set_attribute(hid_t object, const std::string& name, const std::string& value);
 void set_attribute(hid_t object, const std::string& name, double value);

@@ -92,57 +92,75 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
   // they are not held beside the checkpoint's whole arrays (the restart's peak).
   for (auto* array : {&nx_, &ny_, &nz_, &sx_, &sy_, &sz_, &overlap0_, &cohesive_}) std::vector<double>().swap(*array);
   std::vector<std::uint32_t>().swap(bond_);
-  std::vector<std::uint32_t> first = group.read_uint32s("first"), second = group.read_uint32s("second");
+  // The contact list a piece at a time: every rank checks that it fits, and keeps its held slots
+  // (an end of its own), ascending, with their spheres (one process: every slot, so no list).
   const std::size_t n = system.sphere_count(), nb = system.bond_count();
-  bool fits = first.size() == second.size() && first.size() >= nb;
-  for (std::size_t s = 0; fits && s < first.size(); ++s) fits = first[s] < second[s] && second[s] < n;
+  std::size_t m = 0, m_second = 0;
+  group.read_uint32s("first", 0, 0, &m);
+  group.read_uint32s("second", 0, 0, &m_second);
+  bool fits = m == m_second && m >= nb;
+  std::vector<std::uint32_t> slots, first, second;
+  if (!system.distributed()) first.reserve(m), second.reserve(m);
+  for (std::size_t start = 0; fits && start < m; start += StateGroup::kPieceRows) {
+    const std::size_t count = std::min(StateGroup::kPieceRows, m - start);
+    const auto f = group.read_uint32s("first", start, count), g = group.read_uint32s("second", start, count);
+    for (std::size_t q = 0; fits && q < count; ++q) {
+      fits = f[q] < g[q] && g[q] < n;
+      if (!system.is_own(f[q]) && !system.is_own(g[q])) continue;
+      if (system.distributed()) slots.push_back(std::uint32_t(start + q));
+      first.push_back(f[q]), second.push_back(g[q]);
+    }
+  }
   if (!fits) throw InputError("checkpoint " + group.where() + ": its contacts do not fit this packing's " +
                               std::to_string(n) + " spheres: the checkpoint is not from this run");
-  const std::size_t m = first.size();
-  std::vector<double> cohesive(m);
-  group.read_into("cohesive", cohesive);
-  bond_ = group.read_uint32s("bond");
-  // Each bond once, in the slot of its own pair; cohesion only where a bond is (0 or 1). A rank
-  // checks the bonds it holds (an end of its own; each bond is some rank's, all in one process),
-  // and a slot with an end of its own can only be one of those or a pair.
-  const auto held = [&](std::uint32_t s) { return system.is_own(first[s]) || system.is_own(second[s]); };
-  std::vector<std::uint32_t> slot_of(system.held_bond_network().size(), kNoBond);  // each held bond's, in index order
-  std::size_t bonded = 0;
-  bool valid = bond_.size() == m;
-  for (std::size_t s = 0; valid && s < m; ++s) {
-    const std::uint32_t b = bond_[s];
-    valid = cohesive[s] == 0.0 || (b != kNoBond && cohesive[s] == 1.0);
-    if (b == kNoBond || !valid) continue;
-    if (b >= nb || !system.holds_bond(b)) {
-      valid = b < nb && !held(std::uint32_t(s));
-      continue;
-    }
-    const std::size_t h = system.held_bond(b);
-    valid = slot_of[h] == kNoBond && system.bond_first(b) == first[s] && system.bond_second(b) == second[s];
-    slot_of[h] = std::uint32_t(s), ++bonded;
+  std::vector<double> cohesive;
+  if (system.distributed()) {
+    bond_ = group.read_uint32s_at("bond", m, slots);
+    cohesive = group.read_at("cohesive", m, slots);
+  } else {
+    bond_ = group.read_uint32s("bond");
+    cohesive.resize(m);
+    group.read_into("cohesive", cohesive);
   }
-  if (system.sum_over_ranks(valid && bonded == slot_of.size() ? 0 : 1) != 0)
+  const auto row = [&](std::size_t c) { return system.distributed() ? slots[c] : std::uint32_t(c); };
+  // Each bond once, in the slot of its own pair; cohesion only where a bond is (0 or 1). A rank
+  // checks the bonds it holds (an end of its own; each bond is some rank's, all in one process):
+  // a held slot holds one of those or none.
+  std::vector<std::uint32_t> held_of(system.held_bond_network().size(), kNoBond);  // each held bond's held row
+  std::size_t bonded = 0;
+  bool valid = bond_.size() == first.size();
+  for (std::size_t c = 0; valid && c < first.size(); ++c) {
+    const std::uint32_t b = bond_[c];
+    valid = cohesive[c] == 0.0 || (b != kNoBond && cohesive[c] == 1.0);
+    if (b == kNoBond || !valid) continue;
+    valid = b < nb && system.holds_bond(b);
+    if (!valid) continue;
+    const std::size_t h = system.held_bond(b);
+    valid = held_of[h] == kNoBond && system.bond_first(b) == first[c] && system.bond_second(b) == second[c];
+    held_of[h] = std::uint32_t(c), ++bonded;
+  }
+  if (system.sum_over_ranks(valid && bonded == held_of.size() ? 0 : 1) != 0)
     throw InputError("checkpoint " + group.where() + ": its bonds are not this packing's " + std::to_string(nb));
-  // This rank's contacts (the slots with an end of its own) as detection lists them: the bonds
-  // by index, then the pairs by (first, second). Laid out, each must come back to its own slot,
-  // on every rank: so the checkpoint's layout is the one detection makes.
-  const std::size_t held_bonds = slot_of.size();
-  for (std::size_t s = 0; s < m; ++s)
-    if (bond_[s] == kNoBond && held(std::uint32_t(s))) slot_of.push_back(std::uint32_t(s));
-  std::sort(slot_of.begin() + std::ptrdiff_t(held_bonds), slot_of.end(), [&](std::uint32_t a, std::uint32_t b) {
+  // The held slots as detection lists them: the bonds by index, then the pairs by (first,
+  // second). Laid out, each must come back to its own slot, on every rank: so the checkpoint's
+  // layout is the one detection makes.
+  std::vector<std::uint32_t> listed = std::move(held_of);
+  const std::size_t held_bonds = listed.size();
+  for (std::size_t c = 0; c < bond_.size(); ++c)
+    if (bond_[c] == kNoBond) listed.push_back(std::uint32_t(c));
+  std::sort(listed.begin() + std::ptrdiff_t(held_bonds), listed.end(), [&](std::uint32_t a, std::uint32_t b) {
     return std::tie(first[a], second[a]) < std::tie(first[b], second[b]);
   });
-  std::vector<std::uint32_t> held_first(slot_of.size()), held_second(slot_of.size());
-  for (std::size_t c = 0; c < slot_of.size(); ++c) held_first[c] = first[slot_of[c]], held_second[c] = second[slot_of[c]];
+  std::vector<std::uint32_t> held_first(listed.size()), held_second(listed.size());
+  for (std::size_t c = 0; c < listed.size(); ++c) held_first[c] = first[listed[c]], held_second[c] = second[listed[c]];
   std::vector<std::uint32_t>().swap(first), std::vector<std::uint32_t>().swap(second);
   const auto order = system.set_contacts(held_first, held_second, held_bonds, moments());
   std::size_t misplaced = 0;
-  for (std::size_t s = 0; s < order.size(); ++s) misplaced += system.global_slot(s) != slot_of[order[s]];
+  for (std::size_t s = 0; s < order.size(); ++s) misplaced += system.global_slot(s) != row(listed[order[s]]);
   if (system.sum_over_ranks(misplaced) != 0)
     throw InputError("checkpoint " + group.where() + ": its contact layout is not this packing's");
-  // Checked whole; a rank keeps its held slots' part, and reads the rest one array at a time.
-  bond_ = system.held_slots(std::move(bond_));
-  cohesive_ = system.held_slots(std::move(cohesive));
+  // Each held slot in its place: the layout's held slots are `slots`, in the same ascending order.
+  cohesive_ = std::move(cohesive);
   nx_ = system.read_slots(group, "normal_x"), ny_ = system.read_slots(group, "normal_y");
   nz_ = system.read_slots(group, "normal_z");
   sx_ = system.read_slots(group, "shear_x_N"), sy_ = system.read_slots(group, "shear_y_N");

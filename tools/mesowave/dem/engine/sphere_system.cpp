@@ -570,19 +570,20 @@ void SphereSystem::save_state(StateGroup& group) const {
 }
 
 std::vector<double> SphereSystem::read_slots(const StateGroup& group, const std::string& name) const {
-  std::vector<double> whole(global_slots_);
-  group.read_into(name, whole);
-  return held_slots(std::move(whole));
+  if (!domain_) {
+    std::vector<double> whole(global_slots_);
+    group.read_into(name, whole);
+    return whole;
+  }
+  return group.read_at(name, global_slots_, global_slot_);
 }
 
-// Every rank reads the whole file, one array at a time, and keeps its held spheres' and slots' part.
+// Distributed, every rank reads its held spheres' and slots' rows of each array, a piece at a time.
 void SphereSystem::load_state(const StateGroup& group) {
   kernel_->load_state(*this, group.open("law"));
   const auto read_held = [&](const char* name, std::vector<Vec3>& held) {
     if (!domain_) return group.read_into(name, held);
-    std::vector<Vec3> whole(spheres_.size());
-    group.read_into(name, whole);
-    for (std::size_t l = 0; l < held.size(); ++l) held[l] = whole[held_ids_[l]];
+    held = group.read_vec3s_at(name, spheres_.size(), held_ids_);
   };
   read_held("x", x_);
   read_held("v", v_);

@@ -155,6 +155,8 @@ public:
   /// The spheres rank r of `ranks` owns, [starts[r], starts[r + 1]): whole blocks of kSphereBlock
   /// spheres in Morton order, rank r the blocks [B r / N, B (r + 1) / N) of B.
   static std::vector<std::size_t> rank_starts(std::size_t spheres, int ranks);
+  /// Split over several ranks (a Domain of more than one).
+  bool distributed() const { return domain_ != nullptr; }
   /// Sphere k (a global id) is this rank's own (every sphere is in one process).
   bool is_own(std::size_t k) const { return k >= own_begin() && k < own_end(); }
   /// The held bonds: those with an end of this rank's own (all in one process), by index, so
@@ -208,15 +210,10 @@ public:
   void write_slots(StateGroup& group, const std::string& name, const std::vector<std::uint32_t>& held) const;
   /// A restart (load_state, once set_contacts has laid out the checkpoint's contacts): the held
   /// slots' part of the whole layout's array `name` (InputError if its length is not the
-  /// layout's), or of an array read whole; any rank count may restart a checkpoint.
+  /// layout's), read a piece at a time; any rank count may restart a checkpoint. The held slots
+  /// are in the whole layout's order, so a law that read its held slots' rows ascending has them
+  /// in place.
   std::vector<double> read_slots(const StateGroup& group, const std::string& name) const;
-  template <class T>
-  std::vector<T> held_slots(std::vector<T> whole) const {
-    if (!domain_) return whole;
-    std::vector<T> held(global_slot_.size());
-    for (std::size_t s = 0; s < held.size(); ++s) held[s] = whole[global_slot_[s]];
-    return held;
-  }
   std::uint32_t first(std::size_t slot) const { return first_[slot]; }  ///< local ids
   std::uint32_t second(std::size_t slot) const { return second_[slot]; }
   /// Largest |v| after the last step.

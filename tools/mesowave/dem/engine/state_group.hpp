@@ -55,6 +55,19 @@ public:
   void read_into(const std::string& name, std::vector<double>& values) const;
   void read_into(const std::string& name, std::vector<Vec3>& values) const;
 
+  /// Rows read at once by the piecewise reads below (256 Ki: 6 MB of vectors).
+  static constexpr std::size_t kPieceRows = std::size_t(1) << 18;
+  /// Rows [first, first + count) of index array `name` (InputError past its end, or for a value
+  /// that is not an index), and `rows` its length: an array read a piece at a time.
+  std::vector<std::uint32_t> read_uint32s(const std::string& name, std::size_t first, std::size_t count,
+                                          std::size_t* rows = nullptr) const;
+  /// The rows at the ascending indices `at` of array `name`, which must have `rows` rows
+  /// (InputError otherwise), read a piece at a time: a rank of a distributed restart holds its
+  /// part of an array, never the whole array (SphereSystem::read_slots and load_state).
+  std::vector<double> read_at(const std::string& name, std::size_t rows, const std::vector<std::uint32_t>& at) const;
+  std::vector<Vec3> read_vec3s_at(const std::string& name, std::size_t rows, const std::vector<std::uint32_t>& at) const;
+  std::vector<std::uint32_t> read_uint32s_at(const std::string& name, std::size_t rows, const std::vector<std::uint32_t>& at) const;
+
   /// "FILE:/model/kernel", for messages.
   const std::string& where() const { return where_; }
   std::int64_t id() const { return id_; }
