@@ -26,10 +26,11 @@
 // gathered in slot order, so every rank holds what the single-process run holds of its
 // own spheres, its ghosts and the observed spheres, bit for bit. The critical step's Lanczos
 // runs on each rank's own rows (scaled_stiffness_action, stiffness_dot), and a rank keeps
-// its held bonds only, made by itself (held_bond_network, make_bond_network). A rank's per-sphere arrays hold only the
-// spheres it holds (own, ghosts, observed), numbered locally in global id order (hold()), so
-// that first < second and every sphere's order of terms survive; the Model interface takes
-// global ids (the packing's order), a contact kernel reads local ones.
+// its held bonds only, made by itself (held_bond_network, make_bond_network). A rank's
+// per-sphere arrays hold only the spheres it holds (own, ghosts, observed), numbered locally
+// in global id order (hold()), so that first < second and every sphere's order of terms
+// survive; the Model interface takes global ids (the packing's order), a contact kernel reads
+// local ones.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -90,8 +91,8 @@ class SphereSystem final : public Model {
 public:
   /// With a `domain` of several ranks (docs/mpi.md) the system is split from the start: the
   /// law lays out and holds only the contacts of this rank's spheres; distribute() must then
-  /// be given the same domain. `bonds` is the whole network or this rank's part of it
-  /// (make_bond_network with the domain); the system keeps the bonds with an end of its own.
+  /// be given the same domain. `bonds`: the whole network in one process, this rank's part of it
+  /// on several (make_bond_network with the domain: the bonds with an end of its own).
   SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
                std::unique_ptr<ContactKernel> kernel, Domain* domain = nullptr);
   ~SphereSystem() override;
