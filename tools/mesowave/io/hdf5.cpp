@@ -238,12 +238,6 @@ std::vector<std::int64_t> read_int64_rows(hid_t parent, const std::string& name,
   return read_rows<std::int64_t>(parent, name, first, count, H5T_NATIVE_INT64, shape);
 }
 
-std::vector<hsize_t> dataset_shape(hid_t parent, const std::string& name) {
-  std::vector<hsize_t> dims;
-  read_rows<double>(parent, name, 0, 0, H5T_NATIVE_DOUBLE, &dims);
-  return dims;
-}
-
 std::vector<double> read_doubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape) {
   return read_dataset<double>(parent, name, H5T_NATIVE_DOUBLE, shape);
 }

@@ -54,8 +54,6 @@ std::vector<double> read_double_rows(hid_t parent, const std::string& name, std:
                                      std::vector<hsize_t>* shape = nullptr);
 std::vector<std::int64_t> read_int64_rows(hid_t parent, const std::string& name, std::size_t first, std::size_t count,
                                           std::vector<hsize_t>* shape = nullptr);
-/// A dataset's dimensions.
-std::vector<hsize_t> dataset_shape(hid_t parent, const std::string& name);
 
 void set_attribute(hid_t object, const std::string& name, const std::string& value);
 void set_attribute(hid_t object, const std::string& name, double value);

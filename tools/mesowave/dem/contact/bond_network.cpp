@@ -131,11 +131,10 @@ BondNetwork make_bond_network(const SphereSet& s, double bond_factor, Domain& do
   net.ids.resize(net.size());
   for (std::size_t h = cross; h < net.size(); ++h) net.ids[h] = std::uint32_t(offset + h - cross);
   // A bond across two ranks is numbered by its first sphere's rank, which sends the number (with
-  // the pair, checked) to the second sphere's. Both found the bond from the same doubles; should they
-  // ever disagree, the hashes of the pairs sent less those expected do not add up to 0 (mod 2^64),
-  // and every rank stops here rather than in a mismatched message.
+  // the pair, checked) to the second sphere's. Both found the bond from the same doubles; the
+  // ranks check that they agree (pair_hash) before the exchange.
   const auto owner = [&](std::size_t k) { return int(std::upper_bound(starts.begin(), starts.end(), k) - starts.begin()) - 1; };
-  const auto hash = [&](std::size_t h) { return ((std::uint64_t(net.first[h]) << 32) | net.second[h]) * 0x9E3779B97F4A7C15ull; };
+  const auto hash = [&](std::size_t h) { return pair_hash(net.first[h], net.second[h]); };
   std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks)), in(static_cast<std::size_t>(ranks));
   std::uint64_t unmatched = 0;
   for (std::size_t h = cross; h < net.size(); ++h)
@@ -144,7 +143,8 @@ BondNetwork make_bond_network(const SphereSet& s, double bond_factor, Domain& do
       unmatched += hash(h);
     }
   for (std::size_t h = 0; h < cross; ++h) {
-    in[std::size_t(owner(net.first[h]))].resize(in[std::size_t(owner(net.first[h]))].size() + 3);
+    auto& from = in[std::size_t(owner(net.first[h]))];
+    from.resize(from.size() + 3);
     unmatched -= hash(h);
   }
   if (domain.sum(unmatched) != 0)

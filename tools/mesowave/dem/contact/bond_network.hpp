@@ -44,7 +44,7 @@ struct BondNetwork {
   std::vector<std::uint32_t> ids;
   std::size_t whole_size = 0, own_begin = 0, own_end = std::numeric_limits<std::size_t>::max();
   std::size_t size() const { return first.size(); }
-  bool is_part() const { return !ids.empty() || own_begin > 0 || own_end != std::numeric_limits<std::size_t>::max(); }
+  bool is_part() const { return own_end != std::numeric_limits<std::size_t>::max(); }
   /// Bonds in the whole network.
   std::size_t total() const { return is_part() ? whole_size : first.size(); }
   /// Sphere k's bonds are all listed.

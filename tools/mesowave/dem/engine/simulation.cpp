@@ -152,8 +152,6 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
                        "bond_factor below (2 d)/(2 R) does)");
   }
 
-  // The chain (a line of spheres, one process only: Model::distribute refuses it) takes the whole network.
-  if (domain && choice_.model == "chain") bonds = make_bond_network(spheres, m.bond_factor);
   model_ = contact_laws()
                .get(scene_.contact_law, "[material].law")
                .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line, domain});

@@ -48,6 +48,14 @@ public:
   virtual std::uint64_t sum(std::uint64_t count) = 0;
 };
 
+/// A hash of a pair of spheres (first, second), for the ranks' check that they agree on the pairs
+/// across them before an exchange: each adds the hashes of the pairs it sends and subtracts those
+/// it expects, and the integer sum over the ranks (mod 2^64) is 0 unless they disagree, in which
+/// case every rank stops with one line rather than in a message of the wrong size.
+inline std::uint64_t pair_hash(std::uint32_t first, std::uint32_t second) {
+  return ((std::uint64_t(first) << 32) | second) * 0x9E3779B97F4A7C15ull;
+}
+
 /// A floating-point sum in the serial order of parts held rank after rank (rank r's part comes
 /// after rank r - 1's, as the spheres' ranges do): rank 0 starts from 0, each rank continues the
 /// previous rank's partial sum (`continue_sum(partial)` adds its own terms in order) and passes

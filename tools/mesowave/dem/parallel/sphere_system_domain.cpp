@@ -185,10 +185,9 @@ std::vector<std::uint32_t> SphereSystem::lay_out_held(const std::vector<std::uin
   std::vector<std::uint32_t> slot_of(count);
   std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks)), in(static_cast<std::size_t>(ranks));
   std::vector<std::vector<std::uint32_t>> waiting(static_cast<std::size_t>(ranks));  // held contacts reported elsewhere
-  // Every contact across two ranks is sent once and expected once: the sum over the ranks of a
-  // hash of those sent less those expected (mod 2^64) is 0, or the ranks disagree on a contact
-  // (a detection layer that missed a sphere) and the exchange below would not match up.
-  const auto hash = [&](std::size_t c) { return ((std::uint64_t(first[c]) << 32) | second[c]) * 0x9E3779B97F4A7C15ull; };
+  // Every contact across two ranks is sent once and expected once (pair_hash; a disagreement is
+  // a detection layer that missed a sphere).
+  const auto hash = [&](std::size_t c) { return pair_hash(first[c], second[c]); };
   std::uint64_t unmatched = 0;
   for (std::size_t c = 0; c < count; ++c) {
     if (const int oi = owner(first[c]); oi != me) {
