@@ -204,6 +204,48 @@ TEST(MwDemMpi, AFullLawWaveOnTwoToFourRanksWritesTheSameFilesAsOneProcess) {
   write_block(dir);
   test::write_file(dir / "wave.toml", wave_scene(dir / "block.h5"));
   expect_same_files_on_ranks(dir, "wave.toml", {"--model", "full"}, {2, 3, 4});
+  // Snapshots: rank 0 writes every sphere's position, displacement, velocity, radius and packing
+  // index, gathered from the ranks that hold them (no rank holds every sphere's after the setup).
+  const auto snapshots = [&](const std::string& tag) {
+    return std::vector<std::string>{"run", (dir / "wave.toml").string(), "--quiet", "--model", "full", "--signals",
+                                    (dir / (tag + "-s.h5")).string(), "--snapshots", (dir / tag).string(),
+                                    "--snapshot-interval-us", "8", "--threads", "1"};
+  };
+  const auto one = run_tool("mw-dem", snapshots("snap1"));
+  ASSERT_EQ(one.exit_status, 0) << one.err;
+  const auto three = mpirun(3, snapshots("snap3"));
+  ASSERT_EQ(three.exit_status, 0) << three.err;
+  for (const char* file : {"snapshot-0.vtp", "snapshot-1.vtp", "snapshot-2.vtp", "snapshots.pvd"}) {
+    const std::string vtp = test::read_file(dir / "snap1" / file);
+    EXPECT_FALSE(vtp.empty()) << file;
+    EXPECT_EQ(vtp, test::read_file(dir / "snap3" / file)) << file;
+  }
+}
+
+// A platen (a velocity actuator) imposes its motion on the spheres under it and reports the force
+// that takes, m (a_imposed - a_free) a sphere: each sphere's own mass (the block's radii differ),
+// read on a rank that holds it by its local number.
+TEST(MwDemMpi, APlatensForceOnTwoAndThreeRanksIsTheOneProcessForce) {
+  test::TempDir dir;
+  write_block(dir);
+  test::write_file(dir / "platen.toml", wave_scene(dir / "block.h5") + R"(
+[[actuator]]
+name = "platen"
+kind = "velocity"
+face = "z+"
+centre_rel = [0.5, 0.5, 1]
+patch_mm = [20.0, 20.0]
+direction = "inward"
+velocity_mm_s = 25.0
+ramp_us = 4
+[[sensor]]
+name = "F"
+quantity = "force"
+actuator = "platen"
+)");
+  expect_same_files_on_ranks(dir, "platen.toml", {"--model", "full"}, {2, 3});
+  const std::string forces = test::read_file(dir / "one.csv");
+  EXPECT_NE(forces.find("F [N]"), std::string::npos) << forces.substr(0, 200);
 }
 
 // Bonds break, contacts are detected and relaid out, friction dissipates: the same bits.

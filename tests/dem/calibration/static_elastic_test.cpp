@@ -123,7 +123,7 @@ TEST(StaticElastic, StiffnessTimesDisplacementIsOneDynamicStepsForce) {
   const Eigen::VectorXd f = -(linear_network_stiffness(s) * u);
   double f_max = 0, t_max = 0, f_err = 0, t_err = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    const double inertia = s.spheres().inertia_kg_m2[k];
+    const double inertia = s.held_spheres().inertia_kg_m2[k];
     for (int c = 0; c < 3; ++c) {
       const double force = s.acceleration(k)[c] * s.mass(k);
       const double torque = (s.angular_velocity(k)[c] - w[k][c]) / dt * inertia;

@@ -50,7 +50,7 @@ Trace rotate(SphereSystem& sys, const Vec3& e, double w0, double dt, int steps) 
   const std::size_t a = sys.packing_index(0) == 0 ? 0 : 1, b = 1 - a;  // n points from a to b
   sys.set_angular_velocity(a, -w0 * e);
   sys.set_angular_velocity(b, w0 * e);
-  const double inertia = sys.spheres().inertia_kg_m2[b];
+  const double inertia = sys.held_spheres().inertia_kg_m2[b];
   Trace t;
   double theta = 0;
   for (int n = 0; n < steps; ++n) {
@@ -78,7 +78,7 @@ void check_spring(const Vec3& e, bool twist) {
   auto sys = pair(m, p);
   const double k = twist ? twisting_stiffness(m, p, kR, kR) : rolling_stiffness(m, p, kR, kR);
   EXPECT_DOUBLE_EQ(k, (twist ? 0.7 : 1.5) * m.stiffness_ratio * m.E_dem_Pa * kR * kR * kR);  // alpha K_s R^2, K_s = nu E R
-  const double inertia = sys->spheres().inertia_kg_m2[0];
+  const double inertia = sys->held_spheres().inertia_kg_m2[0];
   const double omega = std::sqrt(2 * k / inertia);
   const double dt = 2 * std::numbers::pi / omega / 500;
   const Trace t = rotate(*sys, e, 1.0, dt, 4000);
@@ -96,7 +96,7 @@ void check_break(const Vec3& e, bool twist) {
   const double k = twist ? twisting_stiffness(m, p, kR, kR) : rolling_stiffness(m, p, kR, kR);
   const double strength = twist ? twisting_strength(m, kR, kR) : rolling_strength(m, kR, kR);
   EXPECT_DOUBLE_EQ(strength, twist ? 0.5 * m.cohesion_Pa * kR * kR * kR : 0.25 * m.tensile_strength_Pa * kR * kR * kR);
-  const double inertia = sys->spheres().inertia_kg_m2[0];
+  const double inertia = sys->held_spheres().inertia_kg_m2[0];
   const double omega = std::sqrt(2 * k / inertia);
   const double dt = 2 * std::numbers::pi / omega / 2000;
   // Peak relative rotation 2 w0 / omega = 3 x the breaking angle strength / k.

@@ -91,7 +91,7 @@ std::vector<std::string> static_preconditioners() {
 Matrix linear_network_stiffness(const SphereSystem& system) {
   const CohesiveFrictionalMaterial& m = system.material();
   const double two_E_dem = 2.0 * m.E_dem_Pa, ratio = m.stiffness_ratio;
-  const auto& radius = system.spheres().radius_m;
+  const auto& radius = system.held_spheres().radius_m;
   const auto n = Eigen::Index(6 * system.sphere_count());
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(system.bond_count() * 144);

@@ -17,7 +17,7 @@
 namespace mesowave::dem {
 
 void CohesiveFrictionalContact::attach(SphereSystem& system) {
-  const SphereSet& spheres = system.spheres();
+  const SphereSet& spheres = system.setup_spheres();
   const auto stray = unbonded_overlaps(spheres, system.held_bond_network());
   // Distributed, each rank finds the pairs whose first sphere is its own: all ranks report them.
   if (const std::size_t count = system.sum_over_ranks(stray.size()); count > 0) {
@@ -30,8 +30,7 @@ void CohesiveFrictionalContact::attach(SphereSystem& system) {
                      " m): the full law would start them as contacts pushing with K_n u; raise C_f to bond them, or "
                      "run --model linear/chain, which never adds contacts");
   }
-  const double r_min = *std::min_element(spheres.radius_m.begin(), spheres.radius_m.end());
-  margin_ = 0.1 * r_min;
+  margin_ = 0.1 * system.radius_min();
   detect_contacts(system);
 }
 
@@ -191,9 +190,7 @@ void CohesiveFrictionalContact::after_step(SphereSystem& system, double dt) {
 void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   travelled_ = 0;
   ++detection_passes_;
-  const SphereSet& spheres = system.spheres();
-  const auto [r_min, r_max] = std::minmax_element(spheres.radius_m.begin(), spheres.radius_m.end());
-  const double factor = 1.0 + margin_ / (2.0 * *r_min);
+  const double factor = 1.0 + margin_ / (2.0 * system.radius_min());
   // This rank's contacts (every contact in one process): those with an end of its own. The
   // contacts: the bonds, then the detected pairs (each with its old slot, or kNoBond when new,
   // with its normal). Their state is looked up only for the slots laid out here.
@@ -211,14 +208,14 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
   }
   std::sort(old_pairs.begin(), old_pairs.end());
   {
-    const auto near = system.spheres_near_own(factor * 2.0 * *r_max);
+    const auto near = system.spheres_near_own(factor * 2.0 * system.radius_max());
     const auto pairs = find_pairs_within(near.centres, near.radii, factor);
     const auto at = [&](std::uint32_t q) { return Vec3{near.centres[q][0], near.centres[q][1], near.centres[q][2]}; };
     std::size_t b = 0;  // bonds and pairs are both sorted by (first, second)
     for (const auto& p : pairs) {
       const std::uint32_t i = near.ids[p.i], j = near.ids[p.j];
       if (!system.is_own(i) && !system.is_own(j)) continue;
-      const double reach = spheres.radius_m[i] + spheres.radius_m[j] + margin_;
+      const double reach = near.radii[p.i] + near.radii[p.j] + margin_;
       const Vec3 d = at(p.j) - at(p.i);
       if (norm2(d) > reach * reach) continue;
       while (b < nb && (first[b] < i || (first[b] == i && second[b] < j))) ++b;

@@ -72,10 +72,8 @@ std::size_t CohesiveMomentContact::memory_bytes() const {
   return CohesiveFrictionalContact::memory_bytes() + 6 * mb_[0].size() * sizeof(double);
 }
 
-void CohesiveMomentContact::moment_stiffness(const SphereSystem& system, std::size_t bond, double& k_r,
+void CohesiveMomentContact::moment_stiffness(const SphereSystem& system, double ri, double rj, double& k_r,
                                              double& k_tw) const {
-  const double ri = system.spheres().radius_m[system.bond_first(bond)];
-  const double rj = system.spheres().radius_m[system.bond_second(bond)];
   k_r = rolling_stiffness(system.material(), p_, ri, rj);
   k_tw = twisting_stiffness(system.material(), p_, ri, rj);
 }

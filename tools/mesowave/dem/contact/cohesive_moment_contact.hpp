@@ -53,7 +53,7 @@ public:
   explicit CohesiveMomentContact(const MomentParameters& parameters) : p_(parameters) {}
   void contact_forces(SphereSystem& system, double dt, bool evaluate_energy) override;
   std::size_t memory_bytes() const override;
-  void moment_stiffness(const SphereSystem& system, std::size_t bond, double& k_r, double& k_tw) const override;
+  void moment_stiffness(const SphereSystem& system, double ri, double rj, double& k_r, double& k_tw) const override;
   /// The full law's state and the bending and twisting moments per slot.
   void save_state(const SphereSystem& system, StateGroup& group) const override;
   void load_state(SphereSystem& system, const StateGroup& group) override;

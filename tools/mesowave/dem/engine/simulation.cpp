@@ -45,12 +45,9 @@ void add_boundary_stiffness(CriticalTimeStep& c, double stiffness_per_mass, doub
 
 // The loaded area (the bounding box across the load axis, or pi r^2 for a
 // line of spheres), the mean sphere diameter and the particle density.
-UniaxialTestSpecimen describe_specimen(const Model& model, const Box& box, const std::optional<Vec3>& line,
+UniaxialTestSpecimen describe_specimen(double r_mean, const Box& box, const std::optional<Vec3>& line,
                                        const CohesiveFrictionalMaterial& m, const Scene& scene) {
   UniaxialTestSpecimen s;
-  double r_sum = 0;
-  for (std::size_t k = 0; k < model.sphere_count(); ++k) r_sum += model.radius(k);
-  const double r_mean = r_sum / double(model.sphere_count());
   s.grain_diameter_m = 2 * r_mean;
   s.particle_density_kg_m3 = m.density_kg_m3;
   s.area_m2 = scene.test.area_m2;
@@ -110,6 +107,10 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
   Domain* domain = options_.domain && options_.domain->size() > 1 ? options_.domain : nullptr;
   BondNetwork bonds = domain ? make_bond_network(spheres, m.bond_factor, *domain) : make_bond_network(spheres, m.bond_factor);
   const Box box = bounding_box(spheres);
+  // What the setup's end reads of every sphere: a distributed model holds only its own by then.
+  double r_min = spheres.radius_m[0], r_sum = 0;
+  for (const double r : spheres.radius_m) r_min = std::min(r_min, r), r_sum += r;
+  const double r_mean = r_sum / double(spheres.size());
 
   const std::optional<Vec3> line = line_axis(spheres);
   std::vector<ResolvedLoad> loads;
@@ -210,8 +211,6 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
       for (const auto& g : groups) observed.insert(observed.end(), g.begin(), g.end());
     model_->distribute(*options_.domain, observed);
   }
-  double r_min = model_->radius(0);
-  for (std::size_t k = 1; k < model_->sphere_count(); ++k) r_min = std::min(r_min, model_->radius(k));
   dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.E_dem_Pa, m.damping);
   // Walls add a contact spring to the spheres they touch: by Weyl's inequality
   // lambda_max(K + D) <= lambda_max(K) + max D, D the largest k_w / m.
@@ -224,7 +223,7 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
                      "network (the paper's estimate min R sqrt(rho/E) is " + ns_text(dt_cr_.paper_estimate_s) +
                      "); choose dt_ns <= " + format_number(std::floor(dt_cr_.limit_s * 1e9 * 1000) / 1000));
 
-  if (scene_.test.active()) test_specimen_ = describe_specimen(*model_, box, line, m, scene_);
+  if (scene_.test.active()) test_specimen_ = describe_specimen(r_mean, box, line, m, scene_);
   setup_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

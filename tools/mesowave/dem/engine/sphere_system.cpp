@@ -50,26 +50,47 @@ struct LinearBond {
 };
 
 // Held bond h (held_bond_network(): the setup's Lanczos applies every one a hundred times or so,
-// so by place, not by index).
-LinearBond linear_bond(const SphereSystem& system, std::size_t h) {
-  const SphereSet& s = system.spheres();
+// so by place, not by index), its spheres' radii ri and rj.
+LinearBond linear_bond(const SphereSystem& system, std::size_t h, double ri, double rj) {
   const BondNetwork& held = system.held_bond_network();
   const CohesiveFrictionalMaterial& m = system.material();
-  const double ri = s.radius_m[held.first[h]], rj = s.radius_m[held.second[h]];
   const double dist0 = ri + rj - held.overlap0_m[h];
   const double alpha = (ri + rj) / dist0;
   LinearBond lb{held.normal0[h], normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha, rj / alpha};
-  system.kernel().moment_stiffness(system, system.held_bond_id(h), lb.kr, lb.ktw);
+  system.kernel().moment_stiffness(system, ri, rj, lb.kr, lb.ktw);
   return lb;
+}
+
+// Sphere i of `from` becomes sphere j of `to` (its statics; not its packing file id).
+void copy_sphere(const SphereSet& from, std::size_t i, SphereSet& to, std::size_t j) {
+  to.centre_m[j] = from.centre_m[i];
+  to.radius_m[j] = from.radius_m[i];
+  to.mass_kg[j] = from.mass_kg[i];
+  to.inertia_kg_m2[j] = from.inertia_kg_m2[i];
+  to.packing_index[j] = from.packing_index[i];
+}
+
+SphereSet sphere_set_of_size(std::size_t m) {
+  SphereSet s;
+  s.centre_m.resize(m), s.radius_m.resize(m), s.mass_kg.resize(m), s.inertia_kg_m2.resize(m), s.packing_index.resize(m);
+  return s;
 }
 
 }  // namespace
 
 SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
                            std::unique_ptr<ContactKernel> kernel, Domain* domain)
-    : spheres_(std::move(spheres)), bonds_(std::move(bonds)), material_(material), kernel_(std::move(kernel)),
+    : bonds_(std::move(bonds)), material_(material), kernel_(std::move(kernel)),
       displacement_state_(kernel_->displacement_state()), track_rotation_(kernel_->track_rotation()) {
-  const std::size_t n = spheres_.size();
+  const std::size_t n = sphere_total_ = spheres.size();
+  if (n > 0) {
+    const auto [lo, hi] = std::minmax_element(spheres.radius_m.begin(), spheres.radius_m.end());
+    radius_min_ = *lo, radius_max_ = *hi;
+  }
+  std::vector<std::int64_t>().swap(spheres.ids);  // the packing file's ids: read before the system only
+  // Distributed, the whole set serves the setup (the law's attach, the actuators' and sensors'
+  // selections) and the statics of the spheres held by then; distribute() lets it go.
+  (domain ? whole_ : spheres_) = std::move(spheres);
   const std::size_t sphere_blocks = (n + kSphereBlock - 1) / kSphereBlock;
   sphere_block_kinetic_.assign(sphere_blocks, 0);
   sphere_block_damping_.assign(sphere_blocks, 0);
@@ -88,7 +109,7 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
   kernel_->attach(*this);
 }
 
-void SphereSystem::hold(std::vector<std::uint32_t> ids) {
+void SphereSystem::hold(std::vector<std::uint32_t> ids, const SphereSet& arrived, const std::vector<std::uint32_t>& arrived_ids) {
   const std::size_t m = ids.size();
   // Where each sphere held from now on was held before (both lists sorted; none at construction).
   std::vector<std::size_t> from(m, kNotHeld);
@@ -96,25 +117,39 @@ void SphereSystem::hold(std::vector<std::uint32_t> ids) {
     while (o < held_ids_.size() && held_ids_[o] < ids[l]) ++o;
     if (o < held_ids_.size() && held_ids_[o] == ids[l]) from[l] = o;
   }
+  if (domain_) {  // the statics first: a new sphere's step-0 position is its centre
+    SphereSet next = sphere_set_of_size(m);
+    for (std::size_t l = 0; l < m; ++l) {
+      if (from[l] != kNotHeld) {
+        copy_sphere(spheres_, from[l], next, l);
+      } else if (!whole_.radius_m.empty()) {
+        copy_sphere(whole_, ids[l], next, l);
+      } else {
+        const auto at = std::lower_bound(arrived_ids.begin(), arrived_ids.end(), ids[l]);
+        if (at == arrived_ids.end() || *at != ids[l])
+          throw std::logic_error("SphereSystem::hold: sphere " + std::to_string(ids[l]) + " is new here and no statics came with it");
+        copy_sphere(arrived, std::size_t(at - arrived_ids.begin()), next, l);
+      }
+    }
+    spheres_ = std::move(next);
+  }
   const auto relay = [&](auto& array, const auto& start) {
     std::remove_reference_t<decltype(array)> next(m);
-    for (std::size_t l = 0; l < m; ++l) next[l] = from[l] != kNotHeld ? array[from[l]] : start(ids[l]);
+    for (std::size_t l = 0; l < m; ++l) next[l] = from[l] != kNotHeld ? array[from[l]] : start(l);
     array = std::move(next);
   };
   const auto zero = [](std::size_t) { return Vec3{}; };
-  relay(x_, [&](std::size_t k) { return displacement_state_ ? Vec3{} : spheres_.centre_m[k]; });
+  relay(x_, [&](std::size_t l) { return displacement_state_ ? Vec3{} : spheres_.centre_m[l]; });
   for (auto* state : {&v_, &w_, &a_, &a_undamped_, &f_ext_, &f_acc_, &t_acc_}) relay(*state, zero);
   if (track_rotation_) relay(theta_, zero);
   relay(is_forced_, [](std::size_t) { return std::uint8_t(0); });
   inv_mass_.resize(m), inv_inertia_.resize(m), inv_mass3_.resize(3 * m), inv_inertia3_.resize(3 * m);
   for (std::size_t l = 0; l < m; ++l) {
-    inv_mass_[l] = 1.0 / spheres_.mass_kg[ids[l]];
-    inv_inertia_[l] = 1.0 / spheres_.inertia_kg_m2[ids[l]];
+    inv_mass_[l] = 1.0 / spheres_.mass_kg[l];
+    inv_inertia_[l] = 1.0 / spheres_.inertia_kg_m2[l];
     for (std::size_t d = 0; d < 3; ++d) inv_mass3_[3 * l + d] = inv_mass_[l], inv_inertia3_[3 * l + d] = inv_inertia_[l];
   }
   if (!domain_) return;
-  radius_.resize(m);
-  for (std::size_t l = 0; l < m; ++l) radius_[l] = spheres_.radius_m[ids[l]];
   own_local_ = std::size_t(std::lower_bound(ids.begin(), ids.end(), std::uint32_t(own_begin_)) - ids.begin());
   held_ids_ = std::move(ids);
   for (auto* lists : {&ghost_sends_, &ghost_receives_})
@@ -140,6 +175,12 @@ std::size_t SphereSystem::find_local(std::size_t k) const {
   if (k >= own_begin_ && k < own_end_) return k - own_begin_ + own_local_;
   const auto at = std::lower_bound(held_ids_.begin(), held_ids_.end(), std::uint32_t(k));
   return at != held_ids_.end() && *at == k ? std::size_t(at - held_ids_.begin()) : kNotHeld;
+}
+
+const SphereSet& SphereSystem::setup_spheres() const {
+  if (!domain_) return spheres_;
+  if (whole_.radius_m.empty()) throw std::logic_error("SphereSystem::setup_spheres: the setup is over (distribute)");
+  return whole_;
 }
 
 std::uint32_t SphereSystem::local_id(std::size_t k) const {
@@ -253,7 +294,7 @@ std::vector<std::uint32_t> SphereSystem::finish_layout(const std::vector<std::ui
 
 Vec3 SphereSystem::displacement(std::size_t k) const {
   const Vec3 x = held_or_collected(x_, collected_.x, k);
-  return displacement_state_ ? x : x - spheres_.centre_m[k];
+  return displacement_state_ ? x : x - reference_position(k);
 }
 
 void SphereSystem::add_external_force(std::size_t sphere, const Vec3& force) {
@@ -323,7 +364,7 @@ void SphereSystem::step(double dt, bool evaluate_energy) {
 }
 
 void SphereSystem::integrate(double dt, bool evaluate_energy) {
-  const std::size_t n = spheres_.size();
+  const std::size_t n = sphere_total_;
   // Distributed: this rank's blocks only (the others move theirs; share_step brings them).
   const std::size_t first_block = domain_ ? own_block_begin_ : 0;
   const std::size_t blocks = domain_ ? own_block_end_ : (n + kSphereBlock - 1) / kSphereBlock;
@@ -468,21 +509,23 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
   const std::vector<double> ghost = domain_ ? ghost_rows(x, ghost_ids) : std::vector<double>();
   // Per own sphere, then per ghost (in ghost_ids' order): 1/sqrt(m), 1/sqrt(I).
   std::vector<double> scale(2 * (own + ghost_ids.size()));
-  const auto scale_of = [&](std::size_t at, std::size_t k) {
-    scale[2 * at] = 1.0 / std::sqrt(spheres_.mass_kg[k]);
-    scale[2 * at + 1] = 1.0 / std::sqrt(spheres_.inertia_kg_m2[k]);
+  std::vector<std::uint32_t> ghost_local(ghost_ids.size());
+  const auto scale_of = [&](std::size_t at, std::size_t l) {
+    scale[2 * at] = 1.0 / std::sqrt(spheres_.mass_kg[l]);
+    scale[2 * at + 1] = 1.0 / std::sqrt(spheres_.inertia_kg_m2[l]);
   };
-  for (std::size_t k = 0; k < own; ++k) scale_of(k, first + k);
-  for (std::size_t g = 0; g < ghost_ids.size(); ++g) scale_of(own + g, ghost_ids[g]);
+  for (std::size_t k = 0; k < own; ++k) scale_of(k, own_local(first + k));
+  for (std::size_t g = 0; g < ghost_ids.size(); ++g) scale_of(own + g, ghost_local[g] = local_id(ghost_ids[g]));
   struct End {
     const double* rows;  ///< x's six rows of the sphere
     const double* scale;
+    double radius;
     double* y;  ///< its six rows of y, own spheres only
   };
   const auto end_of = [&](std::size_t k) {
-    if (is_own(k)) return End{x + 6 * (k - first), &scale[2 * (k - first)], y + 6 * (k - first)};
+    if (is_own(k)) return End{x + 6 * (k - first), &scale[2 * (k - first)], spheres_.radius_m[own_local(k)], y + 6 * (k - first)};
     const auto g = std::size_t(std::lower_bound(ghost_ids.begin(), ghost_ids.end(), std::uint32_t(k)) - ghost_ids.begin());
-    return End{ghost.data() + 6 * g, &scale[2 * (own + g)], nullptr};
+    return End{ghost.data() + 6 * g, &scale[2 * (own + g)], spheres_.radius_m[ghost_local[g]], nullptr};
   };
   const auto dof = [](const End& e, int part) {
     const double s = e.scale[part];
@@ -496,7 +539,7 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
   };
   for (std::size_t h = 0; h < bonds_.size(); ++h) {  // in bond order
     const End i = end_of(bonds_.first[h]), j = end_of(bonds_.second[h]);
-    const LinearBond lb = linear_bond(*this, h);
+    const LinearBond lb = linear_bond(*this, h, i.radius, j.radius);
     Vec3 fi, mi, fj, mj;
     lb.forces(dof(i, 0), dof(i, 1), dof(j, 0), dof(j, 1), fi, mi, fj, mj);
     add(i, 0, fi);
@@ -516,10 +559,11 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
   std::vector<double> row(6 * (own_end() - first), 0.0);
   for (std::size_t h = 0; h < bonds_.size(); ++h) {
     const std::size_t ends[2] = {bonds_.first[h], bonds_.second[h]};
-    const LinearBond lb = linear_bond(*this, h);
+    const std::size_t local[2] = {local_id(ends[0]), local_id(ends[1])};
+    const LinearBond lb = linear_bond(*this, h, spheres_.radius_m[local[0]], spheres_.radius_m[local[1]]);
     double end_scale[2][2], scale[12];  // M^-1/2: each end's 1/sqrt(m) and 1/sqrt(I), once
     for (int e = 0; e < 2; ++e)
-      end_scale[e][0] = 1.0 / std::sqrt(spheres_.mass_kg[ends[e]]), end_scale[e][1] = 1.0 / std::sqrt(spheres_.inertia_kg_m2[ends[e]]);
+      end_scale[e][0] = 1.0 / std::sqrt(spheres_.mass_kg[local[e]]), end_scale[e][1] = 1.0 / std::sqrt(spheres_.inertia_kg_m2[local[e]]);
     for (int c = 0; c < 12; ++c) scale[c] = end_scale[c / 6][(c % 6) < 3 ? 0 : 1];
     for (int c = 0; c < 12; ++c) {  // column c of the bond's 12 x 12 block
       Vec3 u[4] = {};
@@ -583,7 +627,7 @@ void SphereSystem::load_state(const StateGroup& group) {
   kernel_->load_state(*this, group.open("law"));
   const auto read_held = [&](const char* name, std::vector<Vec3>& held) {
     if (!domain_) return group.read_into(name, held);
-    held = group.read_vec3s_at(name, spheres_.size(), held_ids_);
+    held = group.read_vec3s_at(name, sphere_total_, held_ids_);
   };
   read_held("x", x_);
   read_held("v", v_);
@@ -606,16 +650,19 @@ void SphereSystem::load_state(const StateGroup& group) {
 
 std::size_t SphereSystem::memory_bytes() const {
   const std::size_t n = held_sphere_count();
-  std::size_t bytes = n * (sizeof(Vec3) * (6 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + 2 * sizeof(double) +
-                           sizeof(std::uint32_t) + sizeof(std::int64_t) + 1);
+  // The statics (centre, radius, mass, inertia, packing index), the motion (x, v, w, a, a undamped, f_ext,
+  // theta), 1/m and 1/I (once, then once a component), the forced flag.
+  std::size_t bytes = n * (sizeof(Vec3) * (7 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + sizeof(std::uint32_t) +
+                           8 * sizeof(double) + 1);
+  bytes += whole_.size() * (sizeof(Vec3) + 3 * sizeof(double) + sizeof(std::uint32_t));  // the setup's whole set
   bytes += bonds_.size() * (2 * sizeof(std::uint32_t) + sizeof(Vec3) + sizeof(double)) +
            held_cross_bonds_.size() * sizeof(std::uint32_t);
   bytes += kernel_->memory_bytes() + out_moment_.size() * sizeof(Vec3);
   bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +
            first_.size() * 2 * sizeof(std::uint32_t) + 2 * n * sizeof(Vec3);
-  // Distributed: the held slots' places and values, the held spheres' ids and radii.
+  // Distributed: the held slots' places and values, the held spheres' ids.
   bytes += global_slot_.size() * sizeof(std::uint32_t) + slot_elastic_.size() * 2 * sizeof(double) +
-           owned_values_.size() * sizeof(double) + held_ids_.size() * sizeof(std::uint32_t) + radius_.size() * sizeof(double);
+           owned_values_.size() * sizeof(double) + held_ids_.size() * sizeof(std::uint32_t);
   return bytes;
 }
 

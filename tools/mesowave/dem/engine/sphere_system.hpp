@@ -30,7 +30,9 @@
 // per-sphere arrays hold only the spheres it holds (own, ghosts, observed), numbered locally
 // in global id order (hold()), so that first < second and every sphere's order of terms
 // survive; the Model interface takes global ids (the packing's order), a contact kernel reads
-// local ones.
+// local ones. The spheres' statics (centre, radius, mass, inertia, packing index) are held the
+// same way (held_spheres()): the constructor's whole set serves the setup and distribute() lets
+// it go; a ghost that a later layout brings gets its statics from its owner with that layout.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -79,9 +81,9 @@ public:
   /// restores it into a law attached to a system built from the same packing.
   virtual void save_state(const SphereSystem& system, StateGroup& group) const = 0;
   virtual void load_state(SphereSystem& system, const StateGroup& group) = 0;
-  /// Rolling and twisting stiffness of bond b at step 0 (moment = -k_r theta_bend - k_tw theta_twist),
-  /// for the critical time step; 0 for laws without moments.
-  virtual void moment_stiffness(const SphereSystem& /*system*/, std::size_t /*bond*/, double& k_r, double& k_tw) const {
+  /// Rolling and twisting stiffness of a bond between spheres of radii ri and rj at step 0
+  /// (moment = -k_r theta_bend - k_tw theta_twist), for the critical time step; 0 for laws without moments.
+  virtual void moment_stiffness(const SphereSystem& /*system*/, double /*ri*/, double /*rj*/, double& k_r, double& k_tw) const {
     k_r = k_tw = 0;
   }
 };
@@ -101,13 +103,20 @@ public:
   /// Interactions evaluated each step, on all ranks (the linearised network's are its bonds).
   std::size_t contact_count() const override { return global_slots_; }
   std::size_t broken_bond_count() const override;
-  std::size_t sphere_count() const override { return spheres_.size(); }
+  std::size_t sphere_count() const override { return sphere_total_; }
   std::size_t bond_count() const override { return bond_count_; }
-  std::size_t degrees_of_freedom() const override { return 6 * spheres_.size(); }
-  Vec3 reference_position(std::size_t k) const override { return spheres_.centre_m[k]; }
-  double radius(std::size_t k) const override { return spheres_.radius_m[k]; }
-  double mass(std::size_t k) const override { return spheres_.mass_kg[k]; }
-  std::uint32_t packing_index(std::size_t k) const override { return spheres_.packing_index[k]; }
+  std::size_t degrees_of_freedom() const override { return 6 * sphere_total_; }
+  /// Distributed, these read a held sphere; during setup (until distribute() returns) any sphere,
+  /// and after it, on rank 0 after collect_state(), any sphere (what a snapshot writes).
+  Vec3 reference_position(std::size_t k) const override { return static_of(&SphereSet::centre_m, collected_.centre, k); }
+  double radius(std::size_t k) const override { return static_of(&SphereSet::radius_m, collected_.radius, k); }
+  double mass(std::size_t k) const override { return static_of(&SphereSet::mass_kg, {}, k); }
+  std::uint32_t packing_index(std::size_t k) const override {
+    return static_of(&SphereSet::packing_index, collected_.packing_index, k);
+  }
+  /// The smallest and largest radius of all spheres (every rank's).
+  double radius_min() const { return radius_min_; }
+  double radius_max() const { return radius_max_; }
   /// Distributed, these read a held sphere; displacement() and velocity(), what a snapshot
   /// writes, also any sphere on rank 0 after collect_state().
   Vec3 displacement(std::size_t k) const override;
@@ -148,7 +157,12 @@ public:
   std::size_t sum_over_ranks(std::size_t count) const;
   double max_over_ranks(double value) const;
 
-  const SphereSet& spheres() const { return spheres_; }
+  /// The held spheres (own, ghosts, observed), in local numbering: every sphere in one process.
+  /// The statics of a sphere new to a rank come from the constructor's whole set until
+  /// distribute() returns, then from its owner with the layout that brings it (docs/mpi.md).
+  const SphereSet& held_spheres() const { return spheres_; }
+  /// Every sphere, during setup: the constructor's set until distribute() returns (std::logic_error after).
+  const SphereSet& setup_spheres() const;
   /// Bond b's spheres (first < second), a held bond's (held_bond); its step-0 normal and u_0 are
   /// bond_normal0() and bond_overlap0().
   std::uint32_t bond_first(std::size_t b) const { return bonds_.first[held_bond(b)]; }
@@ -187,7 +201,7 @@ public:
   const Vec3* velocities() const { return v_.data(); }
   const Vec3* angular_velocities() const { return w_.data(); }
   const Vec3* rotations() const { return theta_.data(); }  ///< theta (track_rotation only)
-  const double* radii() const { return domain_ ? radius_.data() : spheres_.radius_m.data(); }
+  const double* radii() const { return spheres_.radius_m.data(); }
   const std::uint32_t* first() const { return first_.data(); }  ///< local ids
   const std::uint32_t* second() const { return second_.data(); }
   /// The spheres this process holds (all in one process; own, ghosts and observed distributed).
@@ -311,7 +325,11 @@ public:
   };
 
 private:
-  SphereSet spheres_;
+  SphereSet spheres_;  ///< the held spheres' statics, local numbering (held_spheres()); no ids
+  /// Distributed: the constructor's whole set, until distribute() returns (setup_spheres()).
+  SphereSet whole_;
+  std::size_t sphere_total_ = 0;
+  double radius_min_ = 0, radius_max_ = 0;
   BondNetwork bonds_;  ///< the held bonds (all in one process), without incidence or ids
   std::size_t bond_count_ = 0;  ///< in the whole network
   CohesiveFrictionalMaterial material_;
@@ -364,6 +382,7 @@ private:
   /// Distributed: rank 0 gets the whole array (global ids) gathered from each rank's own
   /// spheres, the other ranks an empty one (collective).
   std::vector<Vec3> gathered_spheres(const std::vector<Vec3>& held) const;
+  std::vector<double> gathered_spheres(const std::vector<double>& held) const;
   Incidence cross_incidence_;                  ///< entries index out_ (slot - cross_begin_)
   std::vector<ContactOut> out_;
   std::vector<Vec3> out_moment_;  ///< moment of each contact between partitions (laws with moments only)
@@ -374,13 +393,15 @@ private:
   std::vector<std::uint32_t> forced_;  ///< spheres with an external force this step
   std::vector<Vec3> forced_v_before_;
   std::vector<std::uint8_t> is_forced_;
-  std::vector<double> radius_;  ///< distributed: the held spheres' radii (radii())
   static constexpr std::size_t kNotHeld = ~std::size_t(0);
   /// Sphere k's local id, or kNotHeld.
   std::size_t find_local(std::size_t k) const;
-  /// Rank 0 after collect_state() (until the next step): every sphere's x and v, in global ids.
+  /// Rank 0 after collect_state() (until the next step): every sphere's x and v, and its
+  /// statics, in global ids.
   struct Collected {
-    std::vector<Vec3> x, v;
+    std::vector<Vec3> x, v, centre;
+    std::vector<double> radius;
+    std::vector<std::uint32_t> packing_index;
   } collected_;
   template <class T>
   const T& held_or_collected(const std::vector<T>& held, const std::vector<T>& whole, std::size_t k) const {
@@ -388,11 +409,24 @@ private:
     if (whole.empty()) throw std::logic_error("SphereSystem: sphere " + std::to_string(k) + " is not held on this rank");
     return whole[k];
   }
+  /// Sphere k's static `member`: held here, or during setup from the whole set, or collected on rank 0.
+  template <class T>
+  const T& static_of(std::vector<T> SphereSet::*member, const std::vector<T>& collected, std::size_t k) const {
+    if (const std::size_t l = find_local(k); l != kNotHeld) return (spheres_.*member)[l];
+    if (!(whole_.*member).empty()) return (whole_.*member)[k];
+    if (collected.empty()) throw std::logic_error("SphereSystem: sphere " + std::to_string(k) + " is not held on this rank");
+    return collected[k];
+  }
+  /// Distributed, after setup: the statics of the ghosts `ghost_receives_` lists, from their owners
+  /// (a layout's new ghosts take theirs from it), the ghosts in the lists' order (sorted by id).
+  SphereSet ghost_statics();
   /// Lays the per-sphere arrays out for the spheres `ids` (sorted global ids; distributed: own,
   /// ghosts, observed), keeping the state of those held before; a sphere new here starts from
   /// step 0's state (a new ghost's motion comes from its owner before the next step). The
   /// contacts' ends (global ids in first_/second_ on entry) are then numbered locally.
-  void hold(std::vector<std::uint32_t> ids);
+  /// A sphere new here takes its statics from the whole set during setup, else from `arrived`
+  /// (ghost_statics(), its spheres `arrived_ids`).
+  void hold(std::vector<std::uint32_t> ids, const SphereSet& arrived = {}, const std::vector<std::uint32_t>& arrived_ids = {});
   /// first_/second_ from global to local ids, and the cross records' incidence over them.
   void number_contacts_locally();
 

@@ -71,7 +71,7 @@ std::vector<std::size_t> SphereSystem::rank_starts(std::size_t n, int ranks) {
 // Called by the constructor, before the law lays out its contacts, so that no rank ever holds
 // all of them: the owners of the spheres.
 void SphereSystem::split(Domain& domain) {
-  const std::size_t n = spheres_.size(), blocks = (n + kSphereBlock - 1) / kSphereBlock;
+  const std::size_t n = sphere_total_, blocks = (n + kSphereBlock - 1) / kSphereBlock;
   const int ranks = domain.size(), me = domain.rank();
   if (std::size_t(ranks) > blocks)
     throw InputError(std::to_string(ranks) + " MPI ranks for " + std::to_string(n) + " spheres: each rank needs at least one block of " +
@@ -119,6 +119,9 @@ void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& ob
   number_contacts_locally();
   ghosts_stale_ = false;  // at step 0 every rank holds the same (initial) state of every sphere
   broken_ = std::size_t(domain.sum(kernel_->broken_bonds_in(reported_)));
+  // The setup is over: from here a rank keeps the statics of the spheres it holds, and a new
+  // ghost's come from its owner (ghost_statics).
+  whole_ = {};
 }
 
 std::size_t SphereSystem::global_task_of(std::size_t s) const {
@@ -242,10 +245,12 @@ std::vector<std::uint32_t> SphereSystem::lay_out_held(const std::vector<std::uin
 // the reporters, the ghost lists and who adds which task's elastic sum; then the held spheres
 // (hold: own, ghosts, observed) and the contacts' local ids.
 void SphereSystem::lay_out_domain() {
-  const std::size_t count = first_.size(), n = spheres_.size();
+  const std::size_t count = first_.size();
   const int ranks = domain_->size(), me = domain_->rank();
-  const bool thinned = ghost_layer_rank_ < 0 || ghost_layer_rank_ == me;
-  const auto centre = [&](std::uint32_t k) { return spheres_.centre_m[k]; };
+  // (The test's thinned layer acts on the setup's layouts, where every centre is at hand.)
+  const bool setup = !whole_.radius_m.empty();
+  const bool thinned = setup && (ghost_layer_rank_ < 0 || ghost_layer_rank_ == me);
+  const auto centre = [&](std::uint32_t k) { return reference_position(k); };
   reported_.clear();
   std::vector<std::vector<std::uint32_t>> sends(static_cast<std::size_t>(ranks)), receives(static_cast<std::size_t>(ranks));
   for (std::size_t s = 0; s < count; ++s) {
@@ -260,35 +265,38 @@ void SphereSystem::lay_out_domain() {
     if (!thinned || norm(centre(theirs) - centre(mine)) <= ghost_layer_m_) receives[std::size_t(other)].push_back(theirs);
   }
   ghost_sends_.clear(), ghost_receives_.clear();
-  ghosts_ = 0;
-  std::vector<std::uint8_t> held(n, 0);
-  std::fill(held.begin() + std::ptrdiff_t(own_begin_), held.begin() + std::ptrdiff_t(own_end_), std::uint8_t(1));
+  std::vector<std::uint32_t> ghosts;  // every rank's in rank order, so sorted by id
   for (int r = 0; r < ranks; ++r) {
     auto& out = sends[std::size_t(r)];
     auto& in = receives[std::size_t(r)];
     sort_unique(out), sort_unique(in);
     if (!out.empty()) ghost_sends_.push_back({r, std::move(out), {}});
     if (!in.empty()) {
-      for (const std::uint32_t k : in) held[k] = 1;
-      ghosts_ += in.size();
+      ghosts.insert(ghosts.end(), in.begin(), in.end());
       ghost_receives_.push_back({r, std::move(in), {}});
     }
   }
+  ghosts_ = ghosts.size();
   // Never silently lost: every contact of this rank's spheres must find its other end here.
+  const auto here = [&](std::uint32_t k) { return is_own(k) || std::binary_search(ghosts.begin(), ghosts.end(), k); };
   for (std::size_t s = 0; s < count; ++s) {
-    if (held[first_[s]] && held[second_[s]]) continue;
-    const std::uint32_t i = first_[s], j = second_[s], missing = held[i] ? j : i;
+    if (here(first_[s]) && here(second_[s])) continue;
+    const std::uint32_t i = first_[s], j = second_[s], missing = here(i) ? j : i;
     const auto at = std::lower_bound(bonds_.first.begin(), bonds_.first.end(), i);
     std::size_t bond = bonds_.size();
     for (auto b = std::size_t(at - bonds_.first.begin()); b < bonds_.size() && bonds_.first[b] == i; ++b)
       if (bonds_.second[b] == j) bond = b;
+    // After the setup a sphere this rank never held is known by its place in Morton order only.
+    const auto name = [&](std::uint32_t k) {
+      return setup || find_local(k) != kNotHeld ? std::to_string(packing_index(k)) + " (packing id)"
+                                                : std::to_string(k) + " (Morton order)";
+    };
     throw InputError("rank " + std::to_string(me) + " of " + std::to_string(ranks) + ": " +
                      (bond < bonds_.size() ? "bond " + std::to_string(held_bond_id(bond)) : std::string("the contact")) +
-                     " between spheres " + std::to_string(spheres_.packing_index[i]) + " and " +
-                     std::to_string(spheres_.packing_index[j]) + " (packing ids) has lost its partner: sphere " +
-                     std::to_string(spheres_.packing_index[missing]) + " is neither held nor a ghost on this rank (ghost layer " +
-                     format_number(ghost_layer_m_ * 1e3) + " mm, the spheres " + format_number(norm(centre(j) - centre(i)) * 1e3) +
-                     " mm apart at step 0): the layer must reach at least the longest bond plus the motion between exchanges");
+                     " between spheres " + name(i) + " and " + name(j) + " has lost its partner: sphere " + name(missing) +
+                     " is neither held nor a ghost on this rank (ghost layer " + format_number(ghost_layer_m_ * 1e3) + " mm" +
+                     (setup ? ", the spheres " + format_number(norm(centre(j) - centre(i)) * 1e3) + " mm apart at step 0" : "") +
+                     "): the layer must reach at least the longest bond plus the motion between exchanges");
   }
   // The per-slot values are written by every step before they are read; they (and the owned
   // tasks' values) are allocated by the first step that needs them, not here: at setup the
@@ -347,12 +355,54 @@ void SphereSystem::lay_out_domain() {
   }
   std::vector<std::uint32_t> ids(observed_);
   for (std::size_t k = own_begin_; k < own_end_; ++k) ids.push_back(std::uint32_t(k));
-  for (const auto& g : ghost_receives_) ids.insert(ids.end(), g.spheres.begin(), g.spheres.end());
+  ids.insert(ids.end(), ghosts.begin(), ghosts.end());
   sort_unique(ids);
-  hold(std::move(ids));
+  if (setup) {
+    hold(std::move(ids));
+  } else {
+    const SphereSet arrived = ghost_statics();
+    hold(std::move(ids), arrived, ghosts);
+  }
   number_contacts_locally();
   forget_gathered_slots();
   ghosts_stale_ = true;
+}
+
+// Point to point, as the motion goes (exchange_ghosts): 7 doubles a ghost, its centre at step 0,
+// radius, mass, moment of inertia and packing index. Only a new ghost needs them, but only its
+// receiver knows which are new; a layout is rare beside the steps (docs/mpi.md).
+SphereSet SphereSystem::ghost_statics() {
+  constexpr std::size_t kStatics = 7;
+  std::vector<Domain::Message> sends, receives;
+  std::vector<std::vector<double>> out(ghost_sends_.size());
+  for (std::size_t g = 0; g < ghost_sends_.size(); ++g) {
+    for (const std::uint32_t k : ghost_sends_[g].spheres) {
+      const std::size_t l = own_local(k);
+      const Vec3& c = spheres_.centre_m[l];
+      out[g].insert(out[g].end(), {c.x, c.y, c.z, spheres_.radius_m[l], spheres_.mass_kg[l], spheres_.inertia_kg_m2[l],
+                                   double(spheres_.packing_index[l])});  // exact below 2^53
+    }
+    sends.push_back({ghost_sends_[g].rank, out[g].data(), int(out[g].size())});
+  }
+  std::size_t count = 0;
+  for (const auto& g : ghost_receives_) count += g.spheres.size();
+  std::vector<double> in(kStatics * count);
+  count = 0;
+  for (const auto& g : ghost_receives_) {
+    receives.push_back({g.rank, in.data() + kStatics * count, int(kStatics * g.spheres.size())});
+    count += g.spheres.size();
+  }
+  domain_->exchange(sends, receives);
+  SphereSet arrived;
+  for (std::size_t q = 0; q < count; ++q) {
+    const double* v = &in[kStatics * q];
+    arrived.centre_m.push_back({v[0], v[1], v[2]});
+    arrived.radius_m.push_back(v[3]);
+    arrived.mass_kg.push_back(v[4]);
+    arrived.inertia_kg_m2.push_back(v[5]);
+    arrived.packing_index.push_back(std::uint32_t(v[6]));
+  }
+  return arrived;
 }
 
 // Energy steps: the elastic parts to each task's owner, which adds them in slot order; the task
@@ -562,19 +612,19 @@ double SphereSystem::max_over_ranks(double value) const { return domain_ ? domai
 
 SphereSystem::Nearby SphereSystem::spheres_near_own(double reach_m) {
   Nearby near;
-  const auto add = [&](std::size_t k, const Vec3& x) {
+  const auto add = [&](std::size_t k, const Vec3& x, double r) {
     near.ids.push_back(std::uint32_t(k));
     near.centres.push_back({x.x, x.y, x.z});
-    near.radii.push_back(spheres_.radius_m[k]);
+    near.radii.push_back(r);
   };
   if (!domain_) {
-    for (std::size_t k = 0; k < x_.size(); ++k) add(k, x_[k]);
+    for (std::size_t k = 0; k < x_.size(); ++k) add(k, x_[k], spheres_.radius_m[k]);
     return near;
   }
   // Each block's bounding box of centres (low x, y, z, high x, y, z), every rank's, and each
   // rank's box around its blocks'.
   const int ranks = domain_->size(), me = rank_;
-  const std::size_t n = spheres_.size(), blocks = block_owner_.size();
+  const std::size_t n = sphere_total_, blocks = block_owner_.size();
   const auto block_end = [&](std::size_t b) { return std::min(n, (b + 1) * kSphereBlock); };
   std::vector<double> box(6 * blocks);
   for (std::size_t b = own_block_begin_; b < own_block_end_; ++b) {
@@ -630,39 +680,49 @@ SphereSystem::Nearby SphereSystem::spheres_near_own(double reach_m) {
     if (r == me) continue;
     auto& o = out[std::size_t(r)];
     for (const std::size_t b : blocks_near(me, r))
-      for (std::size_t k = b * kSphereBlock; k < block_end(b); ++k) {
+      for (std::size_t k = b * kSphereBlock; k < block_end(b); ++k) {  // a layer sphere's position and radius
         const Vec3& x = x_[own_local(k)];
-        o.insert(o.end(), {x.x, x.y, x.z});
+        o.insert(o.end(), {x.x, x.y, x.z, spheres_.radius_m[own_local(k)]});
       }
     if (!o.empty()) sends.push_back({r, o.data(), int(o.size())});
     incoming[std::size_t(r)] = blocks_near(r, me);
     std::size_t spheres = 0;
     for (const std::size_t b : incoming[std::size_t(r)]) spheres += block_end(b) - b * kSphereBlock;
     if (spheres > 0) {
-      in[std::size_t(r)].resize(3 * spheres);
-      receives.push_back({r, in[std::size_t(r)].data(), int(3 * spheres)});
+      in[std::size_t(r)].resize(4 * spheres);
+      receives.push_back({r, in[std::size_t(r)].data(), int(4 * spheres)});
     }
   }
   domain_->exchange(sends, receives);
   layer_spheres_ = 0;
   for (int r = 0; r < ranks; ++r) {  // by rank, so by id
     if (r == me) {
-      for (std::size_t k = own_begin_; k < own_end_; ++k) add(k, x_[own_local(k)]);
+      for (std::size_t k = own_begin_; k < own_end_; ++k) add(k, x_[own_local(k)], spheres_.radius_m[own_local(k)]);
       continue;
     }
     const double* x = in[std::size_t(r)].data();
     for (const std::size_t b : incoming[std::size_t(r)])
-      for (std::size_t k = b * kSphereBlock; k < block_end(b); ++k, x += 3) add(k, {x[0], x[1], x[2]});
-    layer_spheres_ += in[std::size_t(r)].size() / 3;
+      for (std::size_t k = b * kSphereBlock; k < block_end(b); ++k, x += 4) add(k, {x[0], x[1], x[2]}, x[3]);
+    layer_spheres_ += in[std::size_t(r)].size() / 4;
   }
   return near;
 }
 
 std::vector<Vec3> SphereSystem::gathered_spheres(const std::vector<Vec3>& held) const {
   const bool root = domain_->rank() == 0;
-  std::vector<Vec3> whole(root ? spheres_.size() : 0);
+  std::vector<Vec3> whole(root ? sphere_total_ : 0);
   domain_->gather(&held[own_local_].x, int(3 * (own_end_ - own_begin_)), root ? &whole[0].x : nullptr, sphere_counts_,
                   sphere_displs_);
+  return whole;
+}
+
+std::vector<double> SphereSystem::gathered_spheres(const std::vector<double>& held) const {
+  const int ranks = domain_->size();
+  std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
+  for (int r = 0; r < ranks; ++r)
+    counts[std::size_t(r)] = sphere_counts_[std::size_t(r)] / 3, displs[std::size_t(r)] = sphere_displs_[std::size_t(r)] / 3;
+  std::vector<double> whole(domain_->rank() == 0 ? sphere_total_ : 0);
+  domain_->gather(&held[own_local_], int(own_end_ - own_begin_), whole.data(), counts, displs);
   return whole;
 }
 
@@ -672,6 +732,11 @@ void SphereSystem::collect_state() {
   if (!domain_) return;
   collected_.x = gathered_spheres(x_);
   collected_.v = gathered_spheres(v_);
+  collected_.centre = gathered_spheres(spheres_.centre_m);
+  collected_.radius = gathered_spheres(spheres_.radius_m);
+  const std::vector<double> index(spheres_.packing_index.begin(), spheres_.packing_index.end());  // exact below 2^53
+  const std::vector<double> whole_index = gathered_spheres(index);
+  collected_.packing_index.assign(whole_index.begin(), whole_index.end());
 }
 
 void SphereSystem::collect_energy() {
@@ -732,10 +797,10 @@ std::string SphereSystem::distribution() const {
   const std::size_t steps = std::max<std::uint64_t>(shared_steps_, 1);
   // What the stage-1 exchange (the whole motion of every sphere, each rank's blocks' sums, each
   // reported contact's plastic part, on every step) would have brought into this rank.
-  const std::size_t replicated = ((track_rotation_ ? 18 : 15) * (spheres_.size() - (own_end_ - own_begin_)) +
-                                  3 * ((spheres_.size() + kSphereBlock - 1) / kSphereBlock) + global_slots_ - reported_.size()) * 8;
+  const std::size_t replicated = ((track_rotation_ ? 18 : 15) * (sphere_total_ - (own_end_ - own_begin_)) +
+                                  3 * ((sphere_total_ + kSphereBlock - 1) / kSphereBlock) + global_slots_ - reported_.size()) * 8;
   return "rank " + std::to_string(domain_->rank()) + " of " + std::to_string(domain_->size()) + ": spheres " +
-         std::to_string(own_begin_) + "-" + std::to_string(own_end_) + " of " + std::to_string(spheres_.size()) +
+         std::to_string(own_begin_) + "-" + std::to_string(own_end_) + " of " + std::to_string(sphere_total_) +
          " (Morton order), " + std::to_string(held_sphere_count()) + " held, " + std::to_string(ghosts_) +
          " ghosts from " + std::to_string(ghost_receives_.size()) + " ranks, " + std::to_string(observed_.size()) + " observed spheres, " +
          std::to_string(first_.size()) + " of " + std::to_string(global_slots_) + " contacts and " + std::to_string(bonds_.size()) +
