@@ -8,6 +8,8 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/dem/contact/bond_network.hpp"
+#include "mesowave/dem/contact/linear_bonded_network.hpp"
+#include "mesowave/dem/engine/sphere_system.hpp"
 #include "mesowave/dem/engine/simulation.hpp"
 #include "dem/test_packings.hpp"
 #include "support/input_error.hpp"
@@ -71,6 +73,29 @@ TEST(TimeStep, RunsAtNineTenthsAndRefusesElevenTenthsOfTheLimit) {
   const std::string blew_up = test::input_error_of([&] { Simulation(network_scene(1.1 * limit, 4000 * 1.1 * limit, 0.01), p, unchecked).run(); });
   EXPECT_TRUE(blew_up.find("energy blow-up") != std::string::npos || blew_up.find("non-finite") != std::string::npos)
       << blew_up;
+}
+
+// The system keeps no bond's step-0 normal and u_0 (32 B a bond): it makes them anew from the
+// spheres' statics when a law lays a bond out and in every application of the critical step's
+// Lanczos. They must be the network's to the bit, or the step, the laws' u_0 and every signal move.
+TEST(TimeStep, TheBondsStepZeroGeometryMadeAnewIsTheNetworksToTheBit) {
+  const Packing p = fcc_packing(4, 2.5e-3, 0.8e-3, 1.0e-3, 0.05, 11, 2290.0);  // radii and places jittered
+  const CohesiveFrictionalMaterial m = concrete_material();
+  SphereSet s = make_sphere_set(p, m.density_kg_m3);
+  BondNetwork network = make_bond_network(s, m.bond_factor);
+  const std::vector<Vec3> normal0 = network.normal0;
+  const std::vector<double> overlap0 = network.overlap0_m;
+  ASSERT_GT(normal0.size(), 500u);
+  const SphereSystem system(std::move(s), std::move(network), m, std::make_unique<LinearBondedNetwork>());
+  ASSERT_EQ(system.bond_count(), normal0.size());
+  EXPECT_TRUE(system.held_bond_network().normal0.empty());
+  std::size_t differ = 0;
+  for (std::size_t b = 0; b < normal0.size(); ++b) {
+    const BondGeometry g = system.bond_geometry0(b);
+    differ += g.overlap_m != overlap0[b] || g.normal.x != normal0[b].x || g.normal.y != normal0[b].y ||
+              g.normal.z != normal0[b].z;
+  }
+  EXPECT_EQ(differ, 0u);
 }
 
 TEST(HardCases, CoincidentCentresAreAnError) {

@@ -97,6 +97,7 @@ Matrix linear_network_stiffness(const SphereSystem& system) {
   entries.reserve(system.bond_count() * 144);
   for (std::size_t b = 0; b < system.bond_count(); ++b) {
     const std::uint32_t i = system.bond_first(b), j = system.bond_second(b);
+    const BondGeometry g0 = system.bond_geometry0(b);
     const std::size_t dof[2] = {6 * std::size_t(i), 6 * std::size_t(j)};
     for (int col = 0; col < 12; ++col) {
       // Unit value of DOF `col` of the pair (d_i, theta_i, d_j, theta_j).
@@ -104,7 +105,7 @@ Matrix linear_network_stiffness(const SphereSystem& system) {
       Vec3& unit = col < 3 ? d_i : col < 6 ? t_i : col < 9 ? d_j : t_j;
       unit[col % 3] = 1.0;
       const LinearBondResponse r =
-          linear_bond_response(two_E_dem, ratio, radius[i], radius[j], system.bond_overlap0(b), system.bond_normal0(b),
+          linear_bond_response(two_E_dem, ratio, radius[i], radius[j], g0.overlap_m, g0.normal,
                                d_j - d_i, t_i, t_j);
       // Generalized forces: -f, -arm_i c on i; f, -arm_j c on j (for_each_contact). K = -d(force)/du.
       const Vec3 g[4] = {-1.0 * r.f, -r.arm_i * r.c, r.f, -r.arm_j * r.c};

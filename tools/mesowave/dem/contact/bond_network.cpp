@@ -71,10 +71,11 @@ BondNetwork bonds_of(const SphereSet& s, const std::vector<SpherePair>& pairs) {
       throw InputError("spheres with ids " + std::to_string(s.ids[p.i]) + " and " + std::to_string(s.ids[p.j]) +
                        " have coincident centres (distance " + format_number(dist) +
                        " m): their contact normal is undefined; remove one of them from the packing");
+    const BondGeometry g = bond_geometry(s.centre_m[p.i], s.centre_m[p.j], s.radius_m[p.i], s.radius_m[p.j]);
     net.first.push_back(p.i);
     net.second.push_back(p.j);
-    net.overlap0_m.push_back(sum - dist);
-    net.normal0.push_back((1.0 / dist) * d);
+    net.overlap0_m.push_back(g.overlap_m);
+    net.normal0.push_back(g.normal);
   }
   net.incidence = make_incidence(s.size(), net.first, net.second);
   return net;

@@ -33,6 +33,19 @@ Incidence make_incidence(std::size_t spheres, const std::vector<std::uint32_t>& 
 
 class Domain;
 
+/// A bond's step-0 geometry from its spheres' centres and radii: the unit normal first -> second
+/// and u_0 = r_i + r_j - |x_j - x_i|. One function, so that what is made from it anew (the
+/// engine keeps no copy: SphereSystem::bond_geometry0) has the bits it was made with.
+struct BondGeometry {
+  Vec3 normal;
+  double overlap_m;
+};
+inline BondGeometry bond_geometry(const Vec3& ci, const Vec3& cj, double ri, double rj) {
+  const Vec3 d = cj - ci;
+  const double dist = norm(d);
+  return {(1.0 / dist) * d, (ri + rj) - dist};
+}
+
 struct BondNetwork {
   std::vector<std::uint32_t> first, second;  ///< first < second
   std::vector<double> overlap0_m;           ///< u_0 = r_i + r_j - |x_j - x_i| at step 0

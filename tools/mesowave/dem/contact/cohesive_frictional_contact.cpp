@@ -238,8 +238,9 @@ void CohesiveFrictionalContact::detect_contacts(SphereSystem& system) {
     const std::uint32_t c = order[s];
     if (c < nb) {
       const auto bond = std::uint32_t(system.held_bond_id(c));
-      return slot_of_bond[c] != kNoBond ? slot(slot_of_bond[c])
-                                        : Slot{system.bond_normal0(bond), {}, system.bond_overlap0(bond), bond, kCohesive};
+      if (slot_of_bond[c] != kNoBond) return slot(slot_of_bond[c]);
+      const BondGeometry g = system.bond_geometry0(bond);
+      return Slot{g.normal, {}, g.overlap_m, bond, kCohesive};
     }
     if (const std::uint32_t old = known_slot[c - nb]; old != kNoBond) return slot(old);
     return Slot{normal[c - nb], {}, 0.0, kNoBond, kFrictional};

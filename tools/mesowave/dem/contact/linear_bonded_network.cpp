@@ -13,9 +13,9 @@ void LinearBondedNetwork::attach(SphereSystem& system) {
   const std::size_t m = order.size();
   nx_.resize(m), ny_.resize(m), nz_.resize(m), overlap0_.resize(m);
   for (std::size_t s = 0; s < m; ++s) {
-    const Vec3 n = system.bond_normal0(order[s]);
-    nx_[s] = n.x, ny_[s] = n.y, nz_[s] = n.z;
-    overlap0_[s] = system.bond_overlap0(order[s]);
+    const BondGeometry g = system.bond_geometry0(order[s]);
+    nx_[s] = g.normal.x, ny_[s] = g.normal.y, nz_[s] = g.normal.z;
+    overlap0_[s] = g.overlap_m;
   }
 }
 

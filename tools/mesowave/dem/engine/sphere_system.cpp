@@ -49,14 +49,14 @@ struct LinearBond {
   }
 };
 
-// Held bond h (held_bond_network(): the setup's Lanczos applies every one a hundred times or so,
-// so by place, not by index), its spheres' radii ri and rj.
-LinearBond linear_bond(const SphereSystem& system, std::size_t h, double ri, double rj) {
-  const BondNetwork& held = system.held_bond_network();
+// A held bond between spheres centred at ci and cj of radii ri and rj (the setup's Lanczos applies
+// every one a hundred times or so, so from the held spheres' statics by place, not by index).
+LinearBond linear_bond(const SphereSystem& system, const Vec3& ci, const Vec3& cj, double ri, double rj) {
   const CohesiveFrictionalMaterial& m = system.material();
-  const double dist0 = ri + rj - held.overlap0_m[h];
+  const BondGeometry g = bond_geometry(ci, cj, ri, rj);
+  const double dist0 = ri + rj - g.overlap_m;
   const double alpha = (ri + rj) / dist0;
-  LinearBond lb{held.normal0[h], normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha, rj / alpha};
+  LinearBond lb{g.normal, normal_stiffness(m, ri, rj), alpha * shear_stiffness(m, ri, rj), ri / alpha, rj / alpha};
   system.kernel().moment_stiffness(system, ri, rj, lb.kr, lb.ktw);
   return lb;
 }
@@ -195,6 +195,8 @@ SphereSystem::~SphereSystem() = default;
 // domain): the bonds with an end of its own, whose indices it keeps as two runs.
 void SphereSystem::keep_held_bonds() {
   bonds_.incidence = {};
+  std::vector<Vec3>().swap(bonds_.normal0);  // bond_geometry0 makes them anew
+  std::vector<double>().swap(bonds_.overlap0_m);
   const std::size_t first = own_begin(), end = own_end();
   if (!domain_ && !bonds_.is_part()) {
     bond_count_ = held_bond_end_ = bonds_.size();
@@ -519,13 +521,13 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
   struct End {
     const double* rows;  ///< x's six rows of the sphere
     const double* scale;
-    double radius;
+    std::size_t local;  ///< its statics' place
     double* y;  ///< its six rows of y, own spheres only
   };
   const auto end_of = [&](std::size_t k) {
-    if (is_own(k)) return End{x + 6 * (k - first), &scale[2 * (k - first)], spheres_.radius_m[own_local(k)], y + 6 * (k - first)};
+    if (is_own(k)) return End{x + 6 * (k - first), &scale[2 * (k - first)], own_local(k), y + 6 * (k - first)};
     const auto g = std::size_t(std::lower_bound(ghost_ids.begin(), ghost_ids.end(), std::uint32_t(k)) - ghost_ids.begin());
-    return End{ghost.data() + 6 * g, &scale[2 * (own + g)], spheres_.radius_m[ghost_local[g]], nullptr};
+    return End{ghost.data() + 6 * g, &scale[2 * (own + g)], ghost_local[g], nullptr};
   };
   const auto dof = [](const End& e, int part) {
     const double s = e.scale[part];
@@ -539,7 +541,8 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
   };
   for (std::size_t h = 0; h < bonds_.size(); ++h) {  // in bond order
     const End i = end_of(bonds_.first[h]), j = end_of(bonds_.second[h]);
-    const LinearBond lb = linear_bond(*this, h, i.radius, j.radius);
+    const LinearBond lb = linear_bond(*this, spheres_.centre_m[i.local], spheres_.centre_m[j.local], spheres_.radius_m[i.local],
+                                      spheres_.radius_m[j.local]);
     Vec3 fi, mi, fj, mj;
     lb.forces(dof(i, 0), dof(i, 1), dof(j, 0), dof(j, 1), fi, mi, fj, mj);
     add(i, 0, fi);
@@ -560,7 +563,8 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
   for (std::size_t h = 0; h < bonds_.size(); ++h) {
     const std::size_t ends[2] = {bonds_.first[h], bonds_.second[h]};
     const std::size_t local[2] = {local_id(ends[0]), local_id(ends[1])};
-    const LinearBond lb = linear_bond(*this, h, spheres_.radius_m[local[0]], spheres_.radius_m[local[1]]);
+    const LinearBond lb = linear_bond(*this, spheres_.centre_m[local[0]], spheres_.centre_m[local[1]], spheres_.radius_m[local[0]],
+                                      spheres_.radius_m[local[1]]);
     double end_scale[2][2], scale[12];  // M^-1/2: each end's 1/sqrt(m) and 1/sqrt(I), once
     for (int e = 0; e < 2; ++e)
       end_scale[e][0] = 1.0 / std::sqrt(spheres_.mass_kg[local[e]]), end_scale[e][1] = 1.0 / std::sqrt(spheres_.inertia_kg_m2[local[e]]);
@@ -655,8 +659,7 @@ std::size_t SphereSystem::memory_bytes() const {
   std::size_t bytes = n * (sizeof(Vec3) * (7 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + sizeof(std::uint32_t) +
                            8 * sizeof(double) + 1);
   bytes += whole_.size() * (sizeof(Vec3) + 3 * sizeof(double) + sizeof(std::uint32_t));  // the setup's whole set
-  bytes += bonds_.size() * (2 * sizeof(std::uint32_t) + sizeof(Vec3) + sizeof(double)) +
-           held_cross_bonds_.size() * sizeof(std::uint32_t);
+  bytes += bonds_.size() * 2 * sizeof(std::uint32_t) + held_cross_bonds_.size() * sizeof(std::uint32_t);
   bytes += kernel_->memory_bytes() + out_moment_.size() * sizeof(Vec3);
   bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +
            first_.size() * 2 * sizeof(std::uint32_t) + 2 * n * sizeof(Vec3);

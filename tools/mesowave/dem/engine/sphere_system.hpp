@@ -164,7 +164,7 @@ public:
   /// Every sphere, during setup: the constructor's set until distribute() returns (std::logic_error after).
   const SphereSet& setup_spheres() const;
   /// Bond b's spheres (first < second), a held bond's (held_bond); its step-0 normal and u_0 are
-  /// bond_normal0() and bond_overlap0().
+  /// bond_geometry0().
   std::uint32_t bond_first(std::size_t b) const { return bonds_.first[held_bond(b)]; }
   std::uint32_t bond_second(std::size_t b) const { return bonds_.second[held_bond(b)]; }
   /// The spheres rank r of `ranks` owns, [starts[r], starts[r + 1]): whole blocks of kSphereBlock
@@ -175,7 +175,8 @@ public:
   /// Sphere k (a global id) is this rank's own (every sphere is in one process).
   bool is_own(std::size_t k) const { return k >= own_begin() && k < own_end(); }
   /// The held bonds: those with an end of this rank's own (all in one process), by index, so
-  /// sorted by (first, second) too; own_begin and own_end give the rank's spheres (no incidence, no ids).
+  /// sorted by (first, second) too; own_begin and own_end give the rank's spheres (their pairs
+  /// only: no incidence, no ids, no step-0 geometry, which bond_geometry0 makes anew).
   const BondNetwork& held_bond_network() const { return bonds_; }
   /// The index of held bond h (h in one process).
   std::size_t held_bond_id(std::size_t h) const {
@@ -185,10 +186,13 @@ public:
   std::size_t held_bond(std::size_t b) const;
   /// Bond b (< bond_count()) has an end of this rank's own (every bond in one process).
   bool holds_bond(std::size_t b) const;
-  /// Bond b's unit normal and u_0 at step 0. Distributed, a rank keeps them only for the bonds
-  /// with an end of its own (docs/mpi.md); std::logic_error for another.
-  Vec3 bond_normal0(std::size_t b) const { return bonds_.normal0[held_bond(b)]; }
-  double bond_overlap0(std::size_t b) const { return bonds_.overlap0_m[held_bond(b)]; }
+  /// Bond b's unit normal and u_0 at step 0, from its spheres' statics (bond_geometry: the bits
+  /// make_bond_network had; no copy is kept, 32 B a bond). Distributed, of a held bond only
+  /// (std::logic_error for another), whose spheres this rank holds once its contacts are laid out.
+  BondGeometry bond_geometry0(std::size_t b) const {
+    const std::uint32_t i = bond_first(b), j = bond_second(b);
+    return bond_geometry(reference_position(i), reference_position(j), radius(i), radius(j));
+  }
   const CohesiveFrictionalMaterial& material() const { return material_; }
   const ContactKernel& kernel() const { return *kernel_; }
   /// Angular velocity w_{n+1/2} of sphere k (and its initial value, for tests).
