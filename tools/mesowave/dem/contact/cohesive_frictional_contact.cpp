@@ -12,24 +12,27 @@
 #include "mesowave/dem/contact/axial_chain.hpp"
 #include "mesowave/dem/contact/linear_bonded_network.hpp"
 #include "mesowave/dem/engine/neighbour_search.hpp"
+#include "mesowave/dem/parallel/domain.hpp"
 #include "mesowave/dem/scene/plugins.hpp"
 
 namespace mesowave::dem {
 
-void CohesiveFrictionalContact::attach(SphereSystem& system) {
-  const SphereSet& spheres = system.setup_spheres();
-  const auto stray = unbonded_overlaps(spheres, system.held_bond_network());
+void refuse_unbonded_overlaps(const SphereSet& spheres, const BondNetwork& bonds, double bond_factor, Domain* domain) {
+  const auto stray = unbonded_overlaps(spheres, bonds);
   // Distributed, each rank finds the pairs whose first sphere is its own: all ranks report them.
-  if (const std::size_t count = system.sum_over_ranks(stray.size()); count > 0) {
-    double worst = 0;
-    for (auto [i, j] : stray)
-      worst = std::max(worst, spheres.radius_m[i] + spheres.radius_m[j] - norm(spheres.centre_m[j] - spheres.centre_m[i]));
-    worst = system.max_over_ranks(worst);
-    throw InputError(std::to_string(count) + " pairs of spheres overlap at step 0 without a bond (bond factor C_f " +
-                     format_number(system.material().bond_factor) + " < 1; largest overlap " + format_number(worst) +
-                     " m): the full law would start them as contacts pushing with K_n u; raise C_f to bond them, or "
-                     "run --model linear/chain, which never adds contacts");
-  }
+  const std::size_t count = domain ? std::size_t(domain->sum(stray.size())) : stray.size();
+  if (count == 0) return;
+  double worst = 0;
+  for (auto [i, j] : stray)
+    worst = std::max(worst, spheres.radius_m[i] + spheres.radius_m[j] - norm(spheres.centre_m[j] - spheres.centre_m[i]));
+  if (domain) worst = domain->max(worst);
+  throw InputError(std::to_string(count) + " pairs of spheres overlap at step 0 without a bond (bond factor C_f " +
+                   format_number(bond_factor) + " < 1; largest overlap " + format_number(worst) +
+                   " m): the full law would start them as contacts pushing with K_n u; raise C_f to bond them, or "
+                   "run --model linear/chain, which never adds contacts");
+}
+
+void CohesiveFrictionalContact::attach(SphereSystem& system) {
   margin_ = 0.1 * system.radius_min();
   detect_contacts(system);
 }
@@ -264,6 +267,7 @@ void register_cohesive_frictional_law(Plugins& p) {
         if (model == "linear")
           return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
                                                 std::make_unique<LinearBondedNetwork>(), in.domain);
+        refuse_unbonded_overlaps(spheres, bonds, in.material.bond_factor, in.domain);
         return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
                                               std::make_unique<CohesiveFrictionalContact>(), in.domain);
       },

@@ -31,6 +31,11 @@
 
 namespace mesowave::dem {
 
+/// The full law would start a pair that overlaps at step 0 without a bond (C_f < 1) as a contact
+/// pushing with K_n u: InputError, before the system is made (its factory calls it: every sphere
+/// is at hand then). `bonds`: this rank's part on several ranks (collective; `domain` null in one process).
+void refuse_unbonded_overlaps(const SphereSet& spheres, const BondNetwork& bonds, double bond_factor, Domain* domain);
+
 /// The kernel (sphere_system.hpp composes it).
 class CohesiveFrictionalContact : public ContactKernel {
 public:

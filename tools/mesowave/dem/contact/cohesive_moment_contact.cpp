@@ -143,6 +143,7 @@ void register_cohesive_moment_law(Plugins& p) {
         };
         take("alpha_kr", mp.alpha_kr), take("alpha_ktw", mp.alpha_ktw);
         take("eta_roll", mp.eta_roll), take("eta_twist", mp.eta_twist);
+        refuse_unbonded_overlaps(spheres, bonds, in.material.bond_factor, in.domain);
         return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
                                               std::make_unique<CohesiveMomentContact>(mp), in.domain);
       },

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "mesowave/core/ordered_dot.hpp"
+#include "mesowave/dem/engine/sphere_statics.hpp"
 #include "mesowave/dem/engine/state_group.hpp"
 #include "mesowave/dem/engine/vec3.hpp"
 
@@ -38,22 +39,14 @@ struct EnergyAccount {
   double residual() const { return kinetic_J + elastic_J + damping_J + plastic_J - external_work_J; }
 };
 
-class Model {
+class Model : public SphereStatics {
 public:
-  virtual ~Model() = default;
-
   virtual std::string name() const = 0;  ///< full | linear | chain
-  virtual std::size_t sphere_count() const = 0;
   virtual std::size_t bond_count() const = 0;
   /// Interactions evaluated each step (bonds plus candidate contacts).
   virtual std::size_t contact_count() const { return bond_count(); }
   virtual std::size_t broken_bond_count() const { return 0; }
   virtual std::size_t degrees_of_freedom() const = 0;
-
-  virtual Vec3 reference_position(std::size_t k) const = 0;
-  virtual double radius(std::size_t k) const = 0;
-  virtual double mass(std::size_t k) const = 0;
-  virtual std::uint32_t packing_index(std::size_t k) const = 0;
 
   virtual Vec3 displacement(std::size_t k) const = 0;
   virtual Vec3 velocity(std::size_t k) const = 0;

@@ -153,21 +153,21 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
                        "bond_factor below (2 d)/(2 R) does)");
   }
 
-  model_ = contact_laws()
-               .get(scene_.contact_law, "[material].law")
-               .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line, domain});
-  if (options_.domain && options_.domain->size() > 1 && options_.impulse_actuator >= 0)
+  if (domain && options_.impulse_actuator >= 0)
     throw InputError("--frequencies-kHz (superposition) runs on one process only, not on several MPI ranks");
+  // The actuators and sensors are made from the spheres at step 0, before the model: on several
+  // ranks the model keeps only the spheres it holds once it is set up.
+  const SphereSetStatics statics(spheres);
 
   const double ratio = scene_.duration_s / scene_.dt_s;
   steps_ = std::int64_t(std::ceil(ratio - 1e-9));
 
   for (std::size_t i = 0; i < loads.size(); ++i) {
     const ActuatorSpec& a = *loads[i].spec;
-    actuator_placements_.push_back({a.name, a.kind, packing_indices(*model_, loads[i].spheres), loads[i].direction,
+    actuator_placements_.push_back({a.name, a.kind, packing_indices(statics, loads[i].spheres), loads[i].direction,
                                     a.amplitude, a.frequency_hz, a.cycles, a.delay_s, {}});
     actuators_.push_back(actuator_kinds().get(a.kind, "actuator " + a.name).make(
-        ActuatorSite{a, loads[i].spheres, loads[i].direction, *model_, box, m, scene_.duration_s}));
+        ActuatorSite{a, loads[i].spheres, loads[i].direction, statics, box, m, scene_.duration_s}));
     if (options_.impulse_actuator >= 0) {
       if (a.kind != "force") throw InputError("actuator " + a.name + " is not a force actuator: no impulse response");
       const bool pushes = std::size_t(options_.impulse_actuator) == i;
@@ -185,7 +185,7 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
     sample_interval_steps_.push_back(every);
     Placement where{sensor.name, "", {}, {}, 0, 0, 0, 0, {}};
     sensors_.push_back(sensor_kinds().get(sensor.kind, who).make(
-        SensorSite{sensor, *model_, sensor_groups[i], line, options_.impulse_actuator >= 0 ? 1 : every, actuators_},
+        SensorSite{sensor, statics, sensor_groups[i], line, options_.impulse_actuator >= 0 ? 1 : every, actuators_},
         where));
     sensor_placements_.push_back(std::move(where));
   }
@@ -201,16 +201,17 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
       twin.quantity = MotionQuantity::displacement;
       Placement unused{twin.name, "", {}, {}, 0, 0, 0, 0, {}};
       sensors_.push_back(sensor_kinds().get(twin.kind, "sensor " + twin.name)
-                             .make(SensorSite{twin, *model_, sensor_groups[i], line, 1, actuators_}, unused));
+                             .make(SensorSite{twin, statics, sensor_groups[i], line, 1, actuators_}, unused));
     }
-  if (options_.domain && options_.domain->size() > 1) {
-    // Every rank runs the actuators and sensors, so every rank holds the spheres they read.
-    std::vector<std::size_t> observed;
-    for (const auto& a : actuators_) observed.insert(observed.end(), a->spheres().begin(), a->spheres().end());
-    for (const auto& groups : sensor_groups)
-      for (const auto& g : groups) observed.insert(observed.end(), g.begin(), g.end());
-    model_->distribute(*options_.domain, observed);
-  }
+  // Every rank runs the actuators and sensors, so every rank holds the spheres they read.
+  std::vector<std::size_t> observed;
+  for (const auto& a : actuators_) observed.insert(observed.end(), a->spheres().begin(), a->spheres().end());
+  for (const auto& groups : sensor_groups)
+    for (const auto& g : groups) observed.insert(observed.end(), g.begin(), g.end());
+  model_ = contact_laws()
+               .get(scene_.contact_law, "[material].law")
+               .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line, domain});
+  if (domain) model_->distribute(*domain, observed);
   dt_cr_ = critical_time_step(*model_, r_min, m.density_kg_m3, m.E_dem_Pa, m.damping);
   // Walls add a contact spring to the spheres they touch: by Weyl's inequality
   // lambda_max(K + D) <= lambda_max(K) + max D, D the largest k_w / m.

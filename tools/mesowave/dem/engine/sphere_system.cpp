@@ -88,9 +88,6 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
     radius_min_ = *lo, radius_max_ = *hi;
   }
   std::vector<std::int64_t>().swap(spheres.ids);  // the packing file's ids: read before the system only
-  // Distributed, the whole set serves the setup (the law's attach, the actuators' and sensors'
-  // selections) and the statics of the spheres held by then; distribute() lets it go.
-  (domain ? whole_ : spheres_) = std::move(spheres);
   const std::size_t sphere_blocks = (n + kSphereBlock - 1) / kSphereBlock;
   sphere_block_kinetic_.assign(sphere_blocks, 0);
   sphere_block_damping_.assign(sphere_blocks, 0);
@@ -101,10 +98,20 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
   partitions_ = std::clamp<std::size_t>(n / kSpheresPerPartition, 1, 64);
   sphere_chunk_ = (n + partitions_ - 1) / partitions_;
   if (domain) split(*domain);
-  // Until the law lays its contacts out, a rank holds its own spheres (one process all).
+  // Until the law lays its contacts out, a rank holds its own spheres (one process all). On
+  // several ranks it keeps their statics and lets the rest of the set go before the law lays out
+  // its contacts (the setup's peak): what it holds later comes from the owners.
   std::vector<std::uint32_t> own(own_end() - own_begin());
   for (std::size_t k = 0; k < own.size(); ++k) own[k] = std::uint32_t(own_begin() + k);
-  hold(std::move(own));
+  if (!domain) {
+    spheres_ = std::move(spheres);
+    hold(std::move(own));
+  } else {
+    SphereSet mine = sphere_set_of_size(own.size());
+    for (std::size_t k = 0; k < own.size(); ++k) copy_sphere(spheres, own[k], mine, k);
+    spheres = {};
+    hold(own, mine, own);
+  }
   keep_held_bonds();
   kernel_->attach(*this);
 }
@@ -122,8 +129,6 @@ void SphereSystem::hold(std::vector<std::uint32_t> ids, const SphereSet& arrived
     for (std::size_t l = 0; l < m; ++l) {
       if (from[l] != kNotHeld) {
         copy_sphere(spheres_, from[l], next, l);
-      } else if (!whole_.radius_m.empty()) {
-        copy_sphere(whole_, ids[l], next, l);
       } else {
         const auto at = std::lower_bound(arrived_ids.begin(), arrived_ids.end(), ids[l]);
         if (at == arrived_ids.end() || *at != ids[l])
@@ -175,12 +180,6 @@ std::size_t SphereSystem::find_local(std::size_t k) const {
   if (k >= own_begin_ && k < own_end_) return k - own_begin_ + own_local_;
   const auto at = std::lower_bound(held_ids_.begin(), held_ids_.end(), std::uint32_t(k));
   return at != held_ids_.end() && *at == k ? std::size_t(at - held_ids_.begin()) : kNotHeld;
-}
-
-const SphereSet& SphereSystem::setup_spheres() const {
-  if (!domain_) return spheres_;
-  if (whole_.radius_m.empty()) throw std::logic_error("SphereSystem::setup_spheres: the setup is over (distribute)");
-  return whole_;
 }
 
 std::uint32_t SphereSystem::local_id(std::size_t k) const {
@@ -658,7 +657,6 @@ std::size_t SphereSystem::memory_bytes() const {
   // theta), 1/m and 1/I (once, then once a component), the forced flag.
   std::size_t bytes = n * (sizeof(Vec3) * (7 + (track_rotation_ ? 1 : 0)) + 3 * sizeof(double) + sizeof(std::uint32_t) +
                            8 * sizeof(double) + 1);
-  bytes += whole_.size() * (sizeof(Vec3) + 3 * sizeof(double) + sizeof(std::uint32_t));  // the setup's whole set
   bytes += bonds_.size() * 2 * sizeof(std::uint32_t) + held_cross_bonds_.size() * sizeof(std::uint32_t);
   bytes += kernel_->memory_bytes() + out_moment_.size() * sizeof(Vec3);
   bytes += out_.size() * sizeof(ContactOut) + cross_incidence_.entry.size() * sizeof(std::uint32_t) +

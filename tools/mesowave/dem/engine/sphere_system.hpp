@@ -31,8 +31,9 @@
 // in global id order (hold()), so that first < second and every sphere's order of terms
 // survive; the Model interface takes global ids (the packing's order), a contact kernel reads
 // local ones. The spheres' statics (centre, radius, mass, inertia, packing index) are held the
-// same way (held_spheres()): the constructor's whole set serves the setup and distribute() lets
-// it go; a ghost that a later layout brings gets its statics from its owner with that layout.
+// same way (held_spheres()): the constructor keeps its own spheres' and lets the rest of the set
+// go before the law lays out its contacts; a ghost's come from its owner with the layout that
+// brings it, an observed sphere's with distribute().
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -106,8 +107,8 @@ public:
   std::size_t sphere_count() const override { return sphere_total_; }
   std::size_t bond_count() const override { return bond_count_; }
   std::size_t degrees_of_freedom() const override { return 6 * sphere_total_; }
-  /// Distributed, these read a held sphere; during setup (until distribute() returns) any sphere,
-  /// and after it, on rank 0 after collect_state(), any sphere (what a snapshot writes).
+  /// Distributed, these read a held sphere, or on rank 0 after collect_state() any sphere (what a
+  /// snapshot writes).
   Vec3 reference_position(std::size_t k) const override { return static_of(&SphereSet::centre_m, collected_.centre, k); }
   double radius(std::size_t k) const override { return static_of(&SphereSet::radius_m, collected_.radius, k); }
   double mass(std::size_t k) const override { return static_of(&SphereSet::mass_kg, {}, k); }
@@ -158,11 +159,9 @@ public:
   double max_over_ranks(double value) const;
 
   /// The held spheres (own, ghosts, observed), in local numbering: every sphere in one process.
-  /// The statics of a sphere new to a rank come from the constructor's whole set until
-  /// distribute() returns, then from its owner with the layout that brings it (docs/mpi.md).
+  /// Distributed, the constructor keeps its own spheres' statics; a ghost's come from its owner
+  /// with the layout that brings it, an observed sphere's with distribute() (docs/mpi.md).
   const SphereSet& held_spheres() const { return spheres_; }
-  /// Every sphere, during setup: the constructor's set until distribute() returns (std::logic_error after).
-  const SphereSet& setup_spheres() const;
   /// Bond b's spheres (first < second), a held bond's (held_bond); its step-0 normal and u_0 are
   /// bond_geometry0().
   std::uint32_t bond_first(std::size_t b) const { return bonds_.first[held_bond(b)]; }
@@ -330,8 +329,6 @@ public:
 
 private:
   SphereSet spheres_;  ///< the held spheres' statics, local numbering (held_spheres()); no ids
-  /// Distributed: the constructor's whole set, until distribute() returns (setup_spheres()).
-  SphereSet whole_;
   std::size_t sphere_total_ = 0;
   double radius_min_ = 0, radius_max_ = 0;
   BondNetwork bonds_;  ///< the held bonds (all in one process), without incidence or ids
@@ -413,23 +410,24 @@ private:
     if (whole.empty()) throw std::logic_error("SphereSystem: sphere " + std::to_string(k) + " is not held on this rank");
     return whole[k];
   }
-  /// Sphere k's static `member`: held here, or during setup from the whole set, or collected on rank 0.
+  /// Sphere k's static `member`: held here, or collected on rank 0.
   template <class T>
   const T& static_of(std::vector<T> SphereSet::*member, const std::vector<T>& collected, std::size_t k) const {
-    if (const std::size_t l = find_local(k); l != kNotHeld) return (spheres_.*member)[l];
-    if (!(whole_.*member).empty()) return (whole_.*member)[k];
-    if (collected.empty()) throw std::logic_error("SphereSystem: sphere " + std::to_string(k) + " is not held on this rank");
-    return collected[k];
+    return held_or_collected(spheres_.*member, collected, k);
   }
-  /// Distributed, after setup: the statics of the ghosts `ghost_receives_` lists, from their owners
-  /// (a layout's new ghosts take theirs from it), the ghosts in the lists' order (sorted by id).
+  /// Distributed: the statics of the ghosts `ghost_receives_` lists, from their owners (a layout's
+  /// new ghosts take theirs from it), the ghosts in the lists' order (sorted by id).
   SphereSet ghost_statics();
+  /// 7 doubles a sphere (centre, radius, mass, inertia, packing index), and back.
+  static constexpr std::size_t kStatics = 7;
+  void append_statics(std::size_t local, std::vector<double>& out) const;
+  static SphereSet statics_from(const double* values, std::size_t count);
   /// Lays the per-sphere arrays out for the spheres `ids` (sorted global ids; distributed: own,
   /// ghosts, observed), keeping the state of those held before; a sphere new here starts from
   /// step 0's state (a new ghost's motion comes from its owner before the next step). The
   /// contacts' ends (global ids in first_/second_ on entry) are then numbered locally.
-  /// A sphere new here takes its statics from the whole set during setup, else from `arrived`
-  /// (ghost_statics(), its spheres `arrived_ids`).
+  /// A sphere new here takes its statics from `arrived` (its spheres `arrived_ids`, sorted: the
+  /// constructor's own spheres, ghost_statics(), the observed spheres' from distribute()).
   void hold(std::vector<std::uint32_t> ids, const SphereSet& arrived = {}, const std::vector<std::uint32_t>& arrived_ids = {});
   /// first_/second_ from global to local ids, and the cross records' incidence over them.
   void number_contacts_locally();
@@ -479,7 +477,7 @@ private:
   int owner(std::uint32_t sphere) const { return block_owner_[sphere / kSphereBlock]; }
   /// This rank's spheres [own_begin(), own_end()): all of them in one process.
   std::size_t own_begin() const { return domain_ ? own_begin_ : 0; }
-  std::size_t own_end() const { return domain_ ? own_end_ : spheres_.size(); }
+  std::size_t own_end() const { return domain_ ? own_end_ : sphere_total_; }
   /// Own sphere k's local id.
   std::size_t own_local(std::size_t k) const { return k - own_begin() + own_local_; }
   /// The critical step's vectors at the ghosts (scaled_stiffness_action): x's rows of the spheres

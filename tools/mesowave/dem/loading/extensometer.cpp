@@ -13,15 +13,15 @@
 namespace mesowave::dem {
 namespace {
 
-Vec3 mean_centre(const Model& model, const std::vector<std::size_t>& group) {
+Vec3 mean_centre(const SphereStatics& statics, const std::vector<std::size_t>& group) {
   Vec3 c{};
-  for (std::size_t k : group) c += model.reference_position(k);
+  for (std::size_t k : group) c += statics.reference_position(k);
   return (1.0 / double(group.size())) * c;
 }
 
 }  // namespace
 
-Extensometer::Extensometer(std::string name, const Model& model, std::vector<std::size_t> end_a,
+Extensometer::Extensometer(std::string name, const SphereStatics& statics, std::vector<std::size_t> end_a,
                            std::vector<std::size_t> end_b, const Vec3& axis, std::string axis_name,
                            std::int64_t interval_steps)
     : Sensor(std::move(name), interval_steps), axis_name_(std::move(axis_name)), a_(std::move(end_a)),
@@ -31,10 +31,10 @@ Extensometer::Extensometer(std::string name, const Model& model, std::vector<std
   for (std::size_t k : a_)
     if (std::find(b_.begin(), b_.end(), k) != b_.end())
       throw InputError(who + ": both ends hold the same sphere; make the gauge length longer or the pads smaller");
-  const Vec3 ca = mean_centre(model, a_), cb = mean_centre(model, b_);
+  const Vec3 ca = mean_centre(statics, a_), cb = mean_centre(statics, b_);
   gauge_m_ = dot(cb - ca, axis_);
   midpoint_ = 0.5 * (ca + cb);
-  if (!(std::abs(gauge_m_) >= model.radius(a_[0])))
+  if (!(std::abs(gauge_m_) >= statics.radius(a_[0])))
     throw InputError(who + ": the ends are " + format_number(gauge_m_ * 1e3) +
                      " mm apart along the axis; an extensometer needs them at least a sphere radius apart");
 }
@@ -134,10 +134,10 @@ void register_extensometer(Plugins& p) {
         const SensorSpec& sensor = site.spec;
         const Vec3 axis = direction_vector(sensor.component, sensor.target, "sensor " + sensor.name, site.line);
         where.kind = "strain";
-        where.spheres = packing_indices(site.model, site.groups[0]);
+        where.spheres = packing_indices(site.statics, site.groups[0]);
         where.direction = axis;
-        where.spheres_b = packing_indices(site.model, site.groups[1]);
-        return std::make_unique<Extensometer>(sensor.name, site.model, site.groups[0], site.groups[1], axis,
+        where.spheres_b = packing_indices(site.statics, site.groups[1]);
+        return std::make_unique<Extensometer>(sensor.name, site.statics, site.groups[0], site.groups[1], axis,
                                               sensor.component, site.every);
       },
   });

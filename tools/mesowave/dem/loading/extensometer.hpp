@@ -16,7 +16,7 @@ class Extensometer : public Sensor {
 public:
   /// `axis`: unit vector e; InputError naming the sensor if the groups are
   /// empty, share a sphere, or lie less than a sphere radius apart along e.
-  Extensometer(std::string name, const Model& model, std::vector<std::size_t> end_a, std::vector<std::size_t> end_b,
+  Extensometer(std::string name, const SphereStatics& statics, std::vector<std::size_t> end_a, std::vector<std::size_t> end_b,
                const Vec3& axis, std::string axis_name, std::int64_t interval_steps);
   signal::Signal signal(double dt_s) const override;
   std::string description() const override;

@@ -70,10 +70,10 @@ void register_motion_sensor(Plugins& p) {
         const std::vector<std::size_t>& chosen = site.groups[0];
         const Vec3 component = direction_vector(sensor.component, sensor.target, "sensor " + sensor.name, site.line);
         where.kind = to_string(sensor.quantity);
-        where.spheres = packing_indices(site.model, chosen);
+        where.spheres = packing_indices(site.statics, chosen);
         where.direction = component;
         Vec3 position{};
-        for (std::size_t k : chosen) position += site.model.reference_position(k);
+        for (std::size_t k : chosen) position += site.statics.reference_position(k);
         position = (1.0 / double(chosen.size())) * position;
         return std::make_unique<MotionSensor>(sensor.name, chosen, sensor.quantity, component, sensor.component,
                                               site.every, position);

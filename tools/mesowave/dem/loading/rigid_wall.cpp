@@ -12,26 +12,26 @@
 
 namespace mesowave::dem {
 
-RigidWall::RigidWall(std::string name, const Model& model, const Box& box, Face face, double E_dem_Pa,
+RigidWall::RigidWall(std::string name, const SphereStatics& statics, const Box& box, Face face, double E_dem_Pa,
                      const VelocityRamp& motion, double reach_m)
     : name_(std::move(name)), face_(face), motion_(motion) {
   const int a = face.axis;
   inward_ = face.upper ? -1.0 : 1.0;
   plane0_ = face.upper ? box.upper[a] : box.lower[a];
   double r_max = 0;
-  for (std::size_t k = 0; k < model.sphere_count(); ++k) r_max = std::max(r_max, model.radius(k));
+  for (std::size_t k = 0; k < statics.sphere_count(); ++k) r_max = std::max(r_max, statics.radius(k));
   // A sphere can meet the wall only if the wall travels to it, or it to the
   // wall; two radii of slack cover the specimen's own motion toward the wall.
   const double reach = std::max(reach_m, 0.0) + 2.0 * r_max;
-  for (std::size_t k = 0; k < model.sphere_count(); ++k) {
-    const double c = model.reference_position(k)[a], r = model.radius(k);
+  for (std::size_t k = 0; k < statics.sphere_count(); ++k) {
+    const double c = statics.reference_position(k)[a], r = statics.radius(k);
     const double gap = inward_ * (c - plane0_) - r;  // surface to plane, >= 0 at the start
     if (gap > reach) continue;
     candidates_.push_back(k);
     radius_.push_back(r);
     centre0_.push_back(c);
     stiffness_.push_back(E_dem_Pa * r);
-    max_stiffness_per_mass_ = std::max(max_stiffness_per_mass_, E_dem_Pa * r / model.mass(k));
+    max_stiffness_per_mass_ = std::max(max_stiffness_per_mass_, E_dem_Pa * r / statics.mass(k));
   }
   if (candidates_.empty()) throw InputError("wall " + name_ + ": no sphere near face " + face.name());
 }
@@ -95,7 +95,7 @@ void register_rigid_wall(Plugins& p) {
       .parse = read_wall,
       .make = [](const ActuatorSite& site) -> std::unique_ptr<Actuator> {
         const ActuatorSpec& a = site.spec;
-        return std::make_unique<RigidWall>(a.name, site.model, site.box, a.target.patch.face, site.material.E_dem_Pa,
+        return std::make_unique<RigidWall>(a.name, site.statics, site.box, a.target.patch.face, site.material.E_dem_Pa,
                                            VelocityRamp{a.amplitude, a.delay_s, a.ramp_s}, a.amplitude * site.duration_s);
       },
       .peak_sphere_force = platen_peak_force,

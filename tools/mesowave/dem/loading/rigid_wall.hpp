@@ -26,7 +26,7 @@ public:
   /// inward normal from `delay_s` on; `reach_m`: how far the wall may travel in
   /// the run (spheres farther from the face than their radius plus this, plus a
   /// margin for their own motion, are never tested).
-  RigidWall(std::string name, const Model& model, const Box& box, Face face, double E_dem_Pa,
+  RigidWall(std::string name, const SphereStatics& statics, const Box& box, Face face, double E_dem_Pa,
             const VelocityRamp& motion, double reach_m);
 
   const std::string& name() const override { return name_; }

@@ -109,19 +109,24 @@ void SphereSystem::distribute(Domain& domain, const std::vector<std::size_t>& ob
     while (std::size_t(k) < observed_.size() && observed_[std::size_t(k)] < end) ++k;
     observed_counts_[std::size_t(r)] = k - observed_displs_[std::size_t(r)];
   }
+  // Their statics, from their owners (one gather: every rank holds every observed sphere).
+  std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
+  for (int r = 0; r < ranks; ++r)
+    counts[std::size_t(r)] = int(kStatics) * observed_counts_[std::size_t(r)], displs[std::size_t(r)] = int(kStatics) * observed_displs_[std::size_t(r)];
+  std::vector<double> mine, all(kStatics * observed_.size());
+  for (int q = observed_displs_[std::size_t(rank_)], e = q + observed_counts_[std::size_t(rank_)]; q < e; ++q)
+    append_statics(own_local(observed_[std::size_t(q)]), mine);
+  domain.gather_all(mine.data(), int(mine.size()), all.data(), counts, displs);
   // The observed spheres join the held ones (the contacts' ends are renumbered with them).
   for (auto* ends : {&first_, &second_})
     for (std::uint32_t& k : *ends) k = held_ids_[k];
   std::vector<std::uint32_t> ids(held_ids_);
   ids.insert(ids.end(), observed_.begin(), observed_.end());
   sort_unique(ids);
-  hold(std::move(ids));
+  hold(std::move(ids), statics_from(all.data(), observed_.size()), observed_);
   number_contacts_locally();
   ghosts_stale_ = false;  // at step 0 every rank holds the same (initial) state of every sphere
   broken_ = std::size_t(domain.sum(kernel_->broken_bonds_in(reported_)));
-  // The setup is over: from here a rank keeps the statics of the spheres it holds, and a new
-  // ghost's come from its owner (ghost_statics).
-  whole_ = {};
 }
 
 std::size_t SphereSystem::global_task_of(std::size_t s) const {
@@ -247,10 +252,6 @@ std::vector<std::uint32_t> SphereSystem::lay_out_held(const std::vector<std::uin
 void SphereSystem::lay_out_domain() {
   const std::size_t count = first_.size();
   const int ranks = domain_->size(), me = domain_->rank();
-  // (The test's thinned layer acts on the setup's layouts, where every centre is at hand.)
-  const bool setup = !whole_.radius_m.empty();
-  const bool thinned = setup && (ghost_layer_rank_ < 0 || ghost_layer_rank_ == me);
-  const auto centre = [&](std::uint32_t k) { return reference_position(k); };
   reported_.clear();
   std::vector<std::vector<std::uint32_t>> sends(static_cast<std::size_t>(ranks)), receives(static_cast<std::size_t>(ranks));
   for (std::size_t s = 0; s < count; ++s) {
@@ -262,7 +263,7 @@ void SphereSystem::lay_out_domain() {
     const std::uint32_t mine = oi == me ? i : j, theirs = oi == me ? j : i;
     const int other = oi == me ? oj : oi;
     sends[std::size_t(other)].push_back(mine);
-    if (!thinned || norm(centre(theirs) - centre(mine)) <= ghost_layer_m_) receives[std::size_t(other)].push_back(theirs);
+    receives[std::size_t(other)].push_back(theirs);
   }
   ghost_sends_.clear(), ghost_receives_.clear();
   std::vector<std::uint32_t> ghosts;  // every rank's in rank order, so sorted by id
@@ -277,8 +278,29 @@ void SphereSystem::lay_out_domain() {
     }
   }
   ghosts_ = ghosts.size();
+  const SphereSet arrived = ghost_statics();  // every ghost's, in `ghosts` order
+  const auto ghost_at = [&](std::uint32_t k) {
+    const auto at = std::lower_bound(ghosts.begin(), ghosts.end(), k);
+    return at != ghosts.end() && *at == k ? std::size_t(at - ghosts.begin()) : kNotHeld;
+  };
+  const auto centre = [&](std::uint32_t k) { return is_own(k) ? spheres_.centre_m[own_local(k)] : arrived.centre_m[ghost_at(k)]; };
+  // The test's thinned layer (test_ghost_layer_m) keeps a ghost only if one of its contacts
+  // here spans at most that at step 0.
+  std::vector<std::uint8_t> kept(ghosts.size(), 1);
+  if (std::isfinite(ghost_layer_m_) && (ghost_layer_rank_ < 0 || ghost_layer_rank_ == me)) {
+    std::fill(kept.begin(), kept.end(), std::uint8_t(0));
+    for (std::size_t s = 0; s < count; ++s) {
+      const std::uint32_t i = first_[s], j = second_[s];
+      if (owner(i) == owner(j)) continue;
+      const std::uint32_t theirs = is_own(i) ? j : i;
+      if (norm(centre(j) - centre(i)) <= ghost_layer_m_) kept[ghost_at(theirs)] = 1;
+    }
+  }
   // Never silently lost: every contact of this rank's spheres must find its other end here.
-  const auto here = [&](std::uint32_t k) { return is_own(k) || std::binary_search(ghosts.begin(), ghosts.end(), k); };
+  const auto here = [&](std::uint32_t k) {
+    const std::size_t g = is_own(k) ? 0 : ghost_at(k);
+    return is_own(k) || (g != kNotHeld && kept[g]);
+  };
   for (std::size_t s = 0; s < count; ++s) {
     if (here(first_[s]) && here(second_[s])) continue;
     const std::uint32_t i = first_[s], j = second_[s], missing = here(i) ? j : i;
@@ -286,16 +308,17 @@ void SphereSystem::lay_out_domain() {
     std::size_t bond = bonds_.size();
     for (auto b = std::size_t(at - bonds_.first.begin()); b < bonds_.size() && bonds_.first[b] == i; ++b)
       if (bonds_.second[b] == j) bond = b;
-    // After the setup a sphere this rank never held is known by its place in Morton order only.
+    const bool known = is_own(missing) || ghost_at(missing) != kNotHeld;  // a ghost the thinned layer dropped
     const auto name = [&](std::uint32_t k) {
-      return setup || find_local(k) != kNotHeld ? std::to_string(packing_index(k)) + " (packing id)"
-                                                : std::to_string(k) + " (Morton order)";
+      if (is_own(k)) return std::to_string(spheres_.packing_index[own_local(k)]) + " (packing id)";
+      if (const std::size_t g = ghost_at(k); g != kNotHeld) return std::to_string(arrived.packing_index[g]) + " (packing id)";
+      return std::to_string(k) + " (Morton order)";
     };
     throw InputError("rank " + std::to_string(me) + " of " + std::to_string(ranks) + ": " +
                      (bond < bonds_.size() ? "bond " + std::to_string(held_bond_id(bond)) : std::string("the contact")) +
                      " between spheres " + name(i) + " and " + name(j) + " has lost its partner: sphere " + name(missing) +
                      " is neither held nor a ghost on this rank (ghost layer " + format_number(ghost_layer_m_ * 1e3) + " mm" +
-                     (setup ? ", the spheres " + format_number(norm(centre(j) - centre(i)) * 1e3) + " mm apart at step 0" : "") +
+                     (known ? ", the spheres " + format_number(norm(centre(j) - centre(i)) * 1e3) + " mm apart at step 0" : "") +
                      "): the layer must reach at least the longest bond plus the motion between exchanges");
   }
   // The per-slot values are written by every step before they are read; they (and the owned
@@ -357,31 +380,38 @@ void SphereSystem::lay_out_domain() {
   for (std::size_t k = own_begin_; k < own_end_; ++k) ids.push_back(std::uint32_t(k));
   ids.insert(ids.end(), ghosts.begin(), ghosts.end());
   sort_unique(ids);
-  if (setup) {
-    hold(std::move(ids));
-  } else {
-    const SphereSet arrived = ghost_statics();
-    hold(std::move(ids), arrived, ghosts);
-  }
+  hold(std::move(ids), arrived, ghosts);
   number_contacts_locally();
   forget_gathered_slots();
   ghosts_stale_ = true;
 }
 
-// Point to point, as the motion goes (exchange_ghosts): 7 doubles a ghost, its centre at step 0,
-// radius, mass, moment of inertia and packing index. Only a new ghost needs them, but only its
+void SphereSystem::append_statics(std::size_t l, std::vector<double>& out) const {
+  const Vec3& c = spheres_.centre_m[l];
+  out.insert(out.end(), {c.x, c.y, c.z, spheres_.radius_m[l], spheres_.mass_kg[l], spheres_.inertia_kg_m2[l],
+                         double(spheres_.packing_index[l])});  // exact below 2^53
+}
+
+SphereSet SphereSystem::statics_from(const double* values, std::size_t count) {
+  SphereSet s;
+  for (std::size_t q = 0; q < count; ++q) {
+    const double* v = values + kStatics * q;
+    s.centre_m.push_back({v[0], v[1], v[2]});
+    s.radius_m.push_back(v[3]);
+    s.mass_kg.push_back(v[4]);
+    s.inertia_kg_m2.push_back(v[5]);
+    s.packing_index.push_back(std::uint32_t(v[6]));
+  }
+  return s;
+}
+
+// Point to point, as the motion goes (exchange_ghosts). Only a new ghost needs them, but only its
 // receiver knows which are new; a layout is rare beside the steps (docs/mpi.md).
 SphereSet SphereSystem::ghost_statics() {
-  constexpr std::size_t kStatics = 7;
   std::vector<Domain::Message> sends, receives;
   std::vector<std::vector<double>> out(ghost_sends_.size());
   for (std::size_t g = 0; g < ghost_sends_.size(); ++g) {
-    for (const std::uint32_t k : ghost_sends_[g].spheres) {
-      const std::size_t l = own_local(k);
-      const Vec3& c = spheres_.centre_m[l];
-      out[g].insert(out[g].end(), {c.x, c.y, c.z, spheres_.radius_m[l], spheres_.mass_kg[l], spheres_.inertia_kg_m2[l],
-                                   double(spheres_.packing_index[l])});  // exact below 2^53
-    }
+    for (const std::uint32_t k : ghost_sends_[g].spheres) append_statics(own_local(k), out[g]);
     sends.push_back({ghost_sends_[g].rank, out[g].data(), int(out[g].size())});
   }
   std::size_t count = 0;
@@ -393,16 +423,7 @@ SphereSet SphereSystem::ghost_statics() {
     count += g.spheres.size();
   }
   domain_->exchange(sends, receives);
-  SphereSet arrived;
-  for (std::size_t q = 0; q < count; ++q) {
-    const double* v = &in[kStatics * q];
-    arrived.centre_m.push_back({v[0], v[1], v[2]});
-    arrived.radius_m.push_back(v[3]);
-    arrived.mass_kg.push_back(v[4]);
-    arrived.inertia_kg_m2.push_back(v[5]);
-    arrived.packing_index.push_back(std::uint32_t(v[6]));
-  }
-  return arrived;
+  return statics_from(in.data(), count);
 }
 
 // Energy steps: the elastic parts to each task's owner, which adds them in slot order; the task

@@ -68,9 +68,9 @@ double platen_peak_force(const ActuatorSpec& a, std::size_t, double stiffest_kn,
   return stiffest_kn * (std::abs(a.amplitude) * duration_s);
 }
 
-std::vector<std::uint32_t> packing_indices(const Model& model, const std::vector<std::size_t>& spheres) {
+std::vector<std::uint32_t> packing_indices(const SphereStatics& statics, const std::vector<std::size_t>& spheres) {
   std::vector<std::uint32_t> out;
-  for (std::size_t k : spheres) out.push_back(model.packing_index(k));
+  for (std::size_t k : spheres) out.push_back(statics.packing_index(k));
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -87,7 +87,7 @@ struct ActuatorSite {
   const ActuatorSpec& spec;
   const std::vector<std::size_t>& spheres;  ///< model numbering
   Vec3 direction;
-  Model& model;
+  const SphereStatics& statics;  ///< the spheres at step 0 (the model is made after)
   const Box& box;
   const CohesiveFrictionalMaterial& material;
   double duration_s;
@@ -112,7 +112,7 @@ struct ActuatorKind {
 /// Where a sensor reads, once the model exists.
 struct SensorSite {
   const SensorSpec& spec;
-  const Model& model;
+  const SphereStatics& statics;  ///< the spheres at step 0 (the model is made after)
   /// The spheres of each of targets(spec), model numbering.
   const std::vector<std::vector<std::size_t>>& groups;
   std::optional<Vec3> line;
@@ -191,6 +191,6 @@ std::unique_ptr<Model> make_model(const std::string& law, const std::string& mod
 /// choice: the stiffest K_n there times the travel over the whole run.
 double platen_peak_force(const ActuatorSpec& a, std::size_t spheres, double stiffest_kn, double duration_s);
 /// Packing indices of model spheres, ascending (a Placement's spheres).
-std::vector<std::uint32_t> packing_indices(const Model& model, const std::vector<std::size_t>& spheres);
+std::vector<std::uint32_t> packing_indices(const SphereStatics& statics, const std::vector<std::size_t>& spheres);
 
 }  // namespace mesowave::dem
