@@ -109,11 +109,11 @@ public:
   std::size_t degrees_of_freedom() const override { return 6 * sphere_total_; }
   /// Distributed, these read a held sphere, or on rank 0 after collect_state() any sphere (what a
   /// snapshot writes).
-  Vec3 reference_position(std::size_t k) const override { return static_of(&SphereSet::centre_m, collected_.centre, k); }
-  double radius(std::size_t k) const override { return static_of(&SphereSet::radius_m, collected_.radius, k); }
-  double mass(std::size_t k) const override { return static_of(&SphereSet::mass_kg, {}, k); }
+  Vec3 reference_position(std::size_t k) const override { return held_or_collected(spheres_.centre_m, collected_.centre, k); }
+  double radius(std::size_t k) const override { return held_or_collected(spheres_.radius_m, collected_.radius, k); }
+  double mass(std::size_t k) const override { return spheres_.mass_kg[local_id(k)]; }
   std::uint32_t packing_index(std::size_t k) const override {
-    return static_of(&SphereSet::packing_index, collected_.packing_index, k);
+    return held_or_collected(spheres_.packing_index, collected_.packing_index, k);
   }
   /// The smallest and largest radius of all spheres (every rank's).
   double radius_min() const { return radius_min_; }
@@ -409,11 +409,6 @@ private:
     if (const std::size_t l = find_local(k); l != kNotHeld) return held[l];
     if (whole.empty()) throw std::logic_error("SphereSystem: sphere " + std::to_string(k) + " is not held on this rank");
     return whole[k];
-  }
-  /// Sphere k's static `member`: held here, or collected on rank 0.
-  template <class T>
-  const T& static_of(std::vector<T> SphereSet::*member, const std::vector<T>& collected, std::size_t k) const {
-    return held_or_collected(spheres_.*member, collected, k);
   }
   /// Distributed: the statics of the ghosts `ghost_receives_` lists, from their owners (a layout's
   /// new ghosts take theirs from it), the ghosts in the lists' order (sorted by id).
