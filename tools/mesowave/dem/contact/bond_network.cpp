@@ -64,14 +64,11 @@ BondNetwork bonds_of(const SphereSet& s, const std::vector<SpherePair>& pairs) {
   net.overlap0_m.reserve(pairs.size());
   net.normal0.reserve(pairs.size());
   for (const auto& p : pairs) {
-    const Vec3 d = s.centre_m[p.j] - s.centre_m[p.i];
-    const double dist = norm(d);
-    const double sum = s.radius_m[p.i] + s.radius_m[p.j];
-    if (!(dist > 1e-9 * sum))
-      throw InputError("spheres with ids " + std::to_string(s.ids[p.i]) + " and " + std::to_string(s.ids[p.j]) +
-                       " have coincident centres (distance " + format_number(dist) +
-                       " m): their contact normal is undefined; remove one of them from the packing");
     const BondGeometry g = bond_geometry(s.centre_m[p.i], s.centre_m[p.j], s.radius_m[p.i], s.radius_m[p.j]);
+    if (!(g.distance_m > 1e-9 * (s.radius_m[p.i] + s.radius_m[p.j])))
+      throw InputError("spheres with ids " + std::to_string(s.ids[p.i]) + " and " + std::to_string(s.ids[p.j]) +
+                       " have coincident centres (distance " + format_number(g.distance_m) +
+                       " m): their contact normal is undefined; remove one of them from the packing");
     net.first.push_back(p.i);
     net.second.push_back(p.j);
     net.overlap0_m.push_back(g.overlap_m);

@@ -39,11 +39,12 @@ class Domain;
 struct BondGeometry {
   Vec3 normal;
   double overlap_m;
+  double distance_m;  ///< |x_j - x_i|
 };
 inline BondGeometry bond_geometry(const Vec3& ci, const Vec3& cj, double ri, double rj) {
   const Vec3 d = cj - ci;
   const double dist = norm(d);
-  return {(1.0 / dist) * d, (ri + rj) - dist};
+  return {(1.0 / dist) * d, (ri + rj) - dist, dist};
 }
 
 struct BondNetwork {

@@ -294,8 +294,9 @@ std::vector<std::uint32_t> SphereSystem::finish_layout(const std::vector<std::ui
 }
 
 Vec3 SphereSystem::displacement(std::size_t k) const {
-  const Vec3 x = held_or_collected(x_, collected_.x, k);
-  return displacement_state_ ? x : x - reference_position(k);
+  if (displacement_state_) return held_or_collected(x_, collected_.x, k);
+  if (const std::size_t l = find_local(k); l != kNotHeld) return x_[l] - spheres_.centre_m[l];  // one look-up (sensors)
+  return held_or_collected(x_, collected_.x, k) - reference_position(k);
 }
 
 void SphereSystem::add_external_force(std::size_t sphere, const Vec3& force) {
@@ -510,13 +511,14 @@ void SphereSystem::scaled_stiffness_action(const double* x, double* y) const {
   const std::vector<double> ghost = domain_ ? ghost_rows(x, ghost_ids) : std::vector<double>();
   // Per own sphere, then per ghost (in ghost_ids' order): 1/sqrt(m), 1/sqrt(I).
   std::vector<double> scale(2 * (own + ghost_ids.size()));
-  std::vector<std::uint32_t> ghost_local(ghost_ids.size());
+  std::vector<std::uint32_t> ghost_local;  // the ghosts' local ids, in ghost_ids' order (the lists' order)
+  for (const auto& g : ghost_receives_) ghost_local.insert(ghost_local.end(), g.local.begin(), g.local.end());
   const auto scale_of = [&](std::size_t at, std::size_t l) {
     scale[2 * at] = 1.0 / std::sqrt(spheres_.mass_kg[l]);
     scale[2 * at + 1] = 1.0 / std::sqrt(spheres_.inertia_kg_m2[l]);
   };
   for (std::size_t k = 0; k < own; ++k) scale_of(k, own_local(first + k));
-  for (std::size_t g = 0; g < ghost_ids.size(); ++g) scale_of(own + g, ghost_local[g] = local_id(ghost_ids[g]));
+  for (std::size_t g = 0; g < ghost_ids.size(); ++g) scale_of(own + g, ghost_local[g]);
   struct End {
     const double* rows;  ///< x's six rows of the sphere
     const double* scale;

@@ -382,8 +382,8 @@ private:
   void forget_gathered_slots() { gathered_counts_.clear(), gathered_slot_order_.clear(); }
   /// Distributed: rank 0 gets the whole array (global ids) gathered from each rank's own
   /// spheres, the other ranks an empty one (collective).
-  std::vector<Vec3> gathered_spheres(const std::vector<Vec3>& held) const;
-  std::vector<double> gathered_spheres(const std::vector<double>& held) const;
+  template <class T>  // Vec3 or double
+  std::vector<T> gathered_spheres(const std::vector<T>& held) const;
   Incidence cross_incidence_;                  ///< entries index out_ (slot - cross_begin_)
   std::vector<ContactOut> out_;
   std::vector<Vec3> out_moment_;  ///< moment of each contact between partitions (laws with moments only)

@@ -298,8 +298,9 @@ void SphereSystem::lay_out_domain() {
   }
   // Never silently lost: every contact of this rank's spheres must find its other end here.
   const auto here = [&](std::uint32_t k) {
-    const std::size_t g = is_own(k) ? 0 : ghost_at(k);
-    return is_own(k) || (g != kNotHeld && kept[g]);
+    if (is_own(k)) return true;
+    const std::size_t g = ghost_at(k);
+    return g != kNotHeld && kept[g] != 0;
   };
   for (std::size_t s = 0; s < count; ++s) {
     if (here(first_[s]) && here(second_[s])) continue;
@@ -729,23 +730,21 @@ SphereSystem::Nearby SphereSystem::spheres_near_own(double reach_m) {
   return near;
 }
 
-std::vector<Vec3> SphereSystem::gathered_spheres(const std::vector<Vec3>& held) const {
-  const bool root = domain_->rank() == 0;
-  std::vector<Vec3> whole(root ? sphere_total_ : 0);
-  domain_->gather(&held[own_local_].x, int(3 * (own_end_ - own_begin_)), root ? &whole[0].x : nullptr, sphere_counts_,
-                  sphere_displs_);
-  return whole;
-}
-
-std::vector<double> SphereSystem::gathered_spheres(const std::vector<double>& held) const {
+template <class T>
+std::vector<T> SphereSystem::gathered_spheres(const std::vector<T>& held) const {
+  static_assert(sizeof(T) % sizeof(double) == 0);
+  constexpr int per = int(sizeof(T) / sizeof(double));  // sphere_counts_ and displs count 3 a sphere
   const int ranks = domain_->size();
   std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
   for (int r = 0; r < ranks; ++r)
-    counts[std::size_t(r)] = sphere_counts_[std::size_t(r)] / 3, displs[std::size_t(r)] = sphere_displs_[std::size_t(r)] / 3;
-  std::vector<double> whole(domain_->rank() == 0 ? sphere_total_ : 0);
-  domain_->gather(&held[own_local_], int(own_end_ - own_begin_), whole.data(), counts, displs);
+    counts[std::size_t(r)] = sphere_counts_[std::size_t(r)] / 3 * per, displs[std::size_t(r)] = sphere_displs_[std::size_t(r)] / 3 * per;
+  std::vector<T> whole(domain_->rank() == 0 ? sphere_total_ : 0);
+  domain_->gather(reinterpret_cast<const double*>(&held[own_local_]), per * int(own_end_ - own_begin_),
+                  reinterpret_cast<double*>(whole.data()), counts, displs);
   return whole;
 }
+template std::vector<Vec3> SphereSystem::gathered_spheres(const std::vector<Vec3>&) const;
+template std::vector<double> SphereSystem::gathered_spheres(const std::vector<double>&) const;
 
 // To rank 0 only, into a whole copy kept until the next step: it alone writes snapshots, through
 // the Model interface, which reads the copy for the spheres it does not hold.
