@@ -11,6 +11,7 @@
 #include <chrono>
 #include <filesystem>
 #include <future>
+#include <limits>
 #include <regex>
 #include <string>
 #include <tuple>
@@ -246,6 +247,87 @@ actuator = "platen"
   expect_same_files_on_ranks(dir, "platen.toml", {"--model", "full"}, {2, 3});
   const std::string forces = test::read_file(dir / "one.csv");
   EXPECT_NE(forces.find("F [N]"), std::string::npos) << forces.substr(0, 200);
+}
+
+// The selections that are not a patch on a flat face, each combined over the ranks' parts of the
+// sphere set (docs/mpi.md, stage 3 step 10), on the block's lattice without its jitter, so that
+// spheres tie: a force on the sphere nearest an octahedral site mid-block (six spheres tie: the
+// lowest packing index wins), sensors on the last sphere along the longest extent (a face of
+// spheres across the ranks ties: the lowest Morton index wins, as one process's scan finds it), on
+// the sphere nearest a point past the lower corner and under a patch on the curved face of the
+// cylinder in the block's bounding box.
+TEST(MwDemMpi, PointEndAndCurvedFaceSelectionsOnTwoAndThreeRanksWriteTheOneProcessFiles) {
+  test::TempDir dir;
+  const dem::Packing lattice = dem::testing::fcc_packing(6, 2.0e-3, 0.66e-3, 0.74e-3, 0.0, 7, 2290);
+  dem::write_packing_file(dir / "lattice.h5", lattice);
+  std::string scene = wave_scene(dir / "lattice.h5");
+  const std::string patch = "face = \"z-\"\ncentre_rel = [0.5, 0.5, 0]\npatch_mm = [3.0, 3.0]\ndirection = \"inward\"";
+  ASSERT_NE(scene.find(patch), std::string::npos);
+  scene.replace(scene.find(patch), patch.size(), "point_mm = [5.0, 5.0, 5.0]\ndirection = \"-z\"");
+  test::write_file(dir / "select.toml", scene + R"(
+[[sensor]]
+name = "D"
+quantity = "velocity"
+component = "x"
+sphere = "last"
+[[sensor]]
+name = "E"
+quantity = "displacement"
+component = "z"
+point_mm = [-5.0, -5.0, -5.0]
+[[sensor]]
+name = "G"
+quantity = "velocity"
+component = "y"
+face = "curved"
+centre_rel = [0.5, 1, 0.5]
+patch_mm = [4.0, 4.0]
+)");
+  expect_same_files_on_ranks(dir, "select.toml", {"--model", "full"}, {2, 3});
+  // The nearest spheres are the packing's nearest, found here by a plain scan of its spheres in
+  // file order (ties: the first).
+  const auto nearest = [&](std::array<double, 3> point_m) {
+    std::size_t best = 0;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < lattice.size(); ++i) {
+      double d2 = 0;
+      for (std::size_t d = 0; d < 3; ++d) d2 += (lattice.centres_m[i][d] - point_m[d]) * (lattice.centres_m[i][d] - point_m[d]);
+      if (d2 < best_d2) best = i, best_d2 = d2;
+    }
+    return best;
+  };
+  const auto j = nlohmann::json::parse(test::read_file(dir / "np3.json"));
+  EXPECT_EQ(j["actuator_loads"][0]["spheres"], nlohmann::json::array({nearest({5e-3, 5e-3, 5e-3})})) << j["actuator_loads"];
+  EXPECT_EQ(j["sensor_points"][3]["spheres"], nlohmann::json::array({nearest({-5e-3, -5e-3, -5e-3})})) << j["sensor_points"];
+  EXPECT_GT(j["sensor_points"][4]["spheres"].size(), 1u) << j["sensor_points"];
+}
+
+// A line of spheres (the rod's 0.95 R spacing, so second neighbours bond) on several ranks: the
+// line test, the patches that take the line's end spheres and the note on the bonds that skip a
+// neighbour (a rank along the line from every rank's spheres) are one process's; the chain
+// model, which the line would choose, runs on one process only and is refused in one line.
+TEST(MwDemMpi, ALineOfSpheresOnTwoAndThreeRanksIsOneProcessesAndItsChainIsRefused) {
+  test::TempDir dir;
+  dem::write_packing_file(dir / "line.h5", dem::testing::line_packing(600, 1e-3, 0.95e-3, 7800));
+  std::string scene = wave_scene(dir / "line.h5");
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"face = \"z-\"\ncentre_rel = [0.5, 0.5, 0]", "face = \"x-\"\ncentre_rel = [0, 0.5, 0.5]"},
+                                 {"face = \"z+\"\ncentre_rel = [0.5, 0.5, 1]", "face = \"x+\"\ncentre_rel = [1, 0.5, 0.5]"},
+                                 {"duration_ms = 0.016", "duration_ms = 0.004"}}) {
+    ASSERT_NE(scene.find(from), std::string::npos) << from;
+    scene.replace(scene.find(from), from.size(), to);
+  }
+  test::write_file(dir / "line.toml", scene);
+  expect_same_files_on_ranks(dir, "line.toml", {"--model", "linear"}, {2, 3});
+  const auto j = nlohmann::json::parse(test::read_file(dir / "np3.json"));
+  EXPECT_EQ(j["actuator_loads"][0]["spheres"], nlohmann::json::array({0})) << j["actuator_loads"];
+  EXPECT_EQ(j["sensor_points"][0]["spheres"], nlohmann::json::array({599})) << j["sensor_points"];
+  EXPECT_NE(j["notes"].dump().find("598 of 1197 bonds link spheres that are not neighbours on the line"), std::string::npos)
+      << j["notes"];
+  const auto chain = mpirun(2, {"run", (dir / "line.toml").string(), "--quiet", "--signals", (dir / "chain.h5").string()});
+  EXPECT_EQ(chain.exit_status, 1);
+  EXPECT_NE(chain.err.find("the chain model runs on one process only"), std::string::npos) << chain.err;
+  EXPECT_EQ(occurrences(chain.err, "error: "), 1u) << chain.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "chain.h5"));
 }
 
 // Bonds break, contacts are detected and relaid out, friction dissipates: the same bits.

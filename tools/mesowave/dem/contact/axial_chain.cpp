@@ -13,9 +13,9 @@ inline double damped(double a, double v, double dt, double alpha) {
 
 }  // namespace
 
-AxialChain::AxialChain(SphereSet spheres, const BondNetwork& bonds, const CohesiveFrictionalMaterial& material,
+AxialChain::AxialChain(SpherePart spheres, const BondNetwork& bonds, const CohesiveFrictionalMaterial& material,
                        const Vec3& axis)
-    : spheres_(std::move(spheres)), material_(material), axis_((1.0 / norm(axis)) * axis),
+    : spheres_(spheres.domain() ? (refuse_ranks("chain"), SphereSet{}) : std::move(spheres).take_own()), material_(material), axis_((1.0 / norm(axis)) * axis),
       first_(bonds.first), second_(bonds.second) {
   const std::size_t n = spheres_.size();
   kn_.resize(first_.size());

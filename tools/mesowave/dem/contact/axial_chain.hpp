@@ -10,7 +10,7 @@
 #include "mesowave/dem/contact/bond_network.hpp"
 #include "mesowave/dem/contact/material.hpp"
 #include "mesowave/dem/engine/model.hpp"
-#include "mesowave/dem/engine/sphere_set.hpp"
+#include "mesowave/dem/engine/sphere_part.hpp"
 
 namespace mesowave::dem {
 
@@ -18,8 +18,8 @@ class AxialChain : public Model {
 public:
   /// `axis`: unit vector along the line. Damping acts on the axial component,
   /// which equals Yade's per-component damping only for an axis along x, y or z
-  /// (the model choice checks that).
-  AxialChain(SphereSet spheres, const BondNetwork& bonds, const CohesiveFrictionalMaterial& material, const Vec3& axis);
+  /// (the model choice checks that). InputError for a rank's part: the chain runs on one process.
+  AxialChain(SpherePart spheres, const BondNetwork& bonds, const CohesiveFrictionalMaterial& material, const Vec3& axis);
 
   std::string name() const override { return "chain"; }
   std::size_t sphere_count() const override { return spheres_.size(); }

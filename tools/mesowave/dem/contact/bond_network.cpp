@@ -8,65 +8,44 @@
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
 #include "mesowave/dem/engine/neighbour_search.hpp"
+#include "mesowave/dem/engine/sphere_part.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
 #include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
 namespace {
 
-std::vector<std::array<double, 3>> centres_of(const SphereSet& s) {
-  std::vector<std::array<double, 3>> c(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i) c[i] = {s.centre_m[i].x, s.centre_m[i].y, s.centre_m[i].z};
-  return c;
-}
-
-// Every pair within `factor` (r_i + r_j) with an end among the spheres [begin, end), sorted by
-// (i, j). Only those spheres and the ones within the longest such pair of their bounding box are
-// searched; a pair's test reads its two spheres alone, so it is found as the whole search finds it.
-std::vector<SpherePair> pairs_with_an_end_in(const SphereSet& s, double factor, std::size_t begin, std::size_t end) {
-  if (begin == 0 && end >= s.size()) return find_pairs_within(centres_of(s), s.radius_m, factor);
-  if (begin >= end) return {};
-  const double reach = factor * 2.0 * *std::max_element(s.radius_m.begin(), s.radius_m.end());
-  Vec3 lo = s.centre_m[begin], hi = lo;
-  for (std::size_t k = begin; k < end; ++k)
-    for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], s.centre_m[k][d]), hi[d] = std::max(hi[d], s.centre_m[k][d]);
-  std::vector<std::uint32_t> ids;
-  std::vector<std::array<double, 3>> centres;
-  std::vector<double> radii;
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    const Vec3& x = s.centre_m[k];
-    bool near = k >= begin && k < end;
-    if (!near) {
-      double gap2 = 0;
-      for (int d = 0; d < 3; ++d) {
-        const double gap = std::max({0.0, lo[d] - x[d], x[d] - hi[d]});
-        gap2 += gap * gap;
-      }
-      near = gap2 <= reach * reach;
-    }
-    if (!near) continue;
-    ids.push_back(std::uint32_t(k));
-    centres.push_back({x.x, x.y, x.z});
-    radii.push_back(s.radius_m[k]);
+// Every pair within `factor` (r_i + r_j) with an end among the part's own spheres, in whole
+// indices sorted by (i, j). The search runs over the part's spheres, own and layer: a pair's test
+// reads its two spheres alone, so it is found as the whole set's search finds it, provided the
+// layer reaches `factor` (2 r_max) beyond the own spheres.
+std::vector<SpherePair> pairs_with_an_end_in(const SpherePart& part, double factor) {
+  const SphereSet& s = part.spheres();
+  std::vector<std::array<double, 3>> centres(s.size());
+  for (std::size_t l = 0; l < s.size(); ++l) centres[l] = {s.centre_m[l].x, s.centre_m[l].y, s.centre_m[l].z};
+  std::vector<SpherePair> pairs = find_pairs_within(centres, s.radius_m, factor);
+  if (part.own_count() == part.total()) return pairs;  // the whole set: local indices are whole ones
+  std::erase_if(pairs, [&](const SpherePair& p) { return p.i >= part.own_count() && p.j >= part.own_count(); });
+  for (SpherePair& p : pairs) {
+    const auto i = std::uint32_t(part.whole_index(p.i)), j = std::uint32_t(part.whole_index(p.j));
+    p = {std::min(i, j), std::max(i, j)};
   }
-  std::vector<SpherePair> pairs;
-  for (const SpherePair& p : find_pairs_within(centres, radii, factor)) {
-    const std::uint32_t i = ids[p.i], j = ids[p.j];  // ids ascend, so the order is kept
-    if ((i >= begin && i < end) || (j >= begin && j < end)) pairs.push_back({i, j});
-  }
+  std::sort(pairs.begin(), pairs.end(), [](const SpherePair& a, const SpherePair& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
   return pairs;
 }
 
-BondNetwork bonds_of(const SphereSet& s, const std::vector<SpherePair>& pairs) {
+BondNetwork bonds_of(const SpherePart& part, const std::vector<SpherePair>& pairs) {
+  const SphereSet& s = part.spheres();
   BondNetwork net;
   net.first.reserve(pairs.size());
   net.second.reserve(pairs.size());
   net.overlap0_m.reserve(pairs.size());
   net.normal0.reserve(pairs.size());
   for (const auto& p : pairs) {
-    const BondGeometry g = bond_geometry(s.centre_m[p.i], s.centre_m[p.j], s.radius_m[p.i], s.radius_m[p.j]);
-    if (!(g.distance_m > 1e-9 * (s.radius_m[p.i] + s.radius_m[p.j])))
-      throw InputError("spheres with ids " + std::to_string(s.ids[p.i]) + " and " + std::to_string(s.ids[p.j]) +
+    const std::size_t i = part.local(p.i), j = part.local(p.j);
+    const BondGeometry g = bond_geometry(s.centre_m[i], s.centre_m[j], s.radius_m[i], s.radius_m[j]);
+    if (!(g.distance_m > 1e-9 * (s.radius_m[i] + s.radius_m[j])))
+      throw InputError("spheres with ids " + std::to_string(s.ids[i]) + " and " + std::to_string(s.ids[j]) +
                        " have coincident centres (distance " + format_number(g.distance_m) +
                        " m): their contact normal is undefined; remove one of them from the packing");
     net.first.push_back(p.i);
@@ -74,7 +53,7 @@ BondNetwork bonds_of(const SphereSet& s, const std::vector<SpherePair>& pairs) {
     net.overlap0_m.push_back(g.overlap_m);
     net.normal0.push_back(g.normal);
   }
-  net.incidence = make_incidence(s.size(), net.first, net.second);
+  net.incidence = make_incidence(part.total(), net.first, net.second);
   return net;
 }
 
@@ -99,18 +78,15 @@ Incidence make_incidence(std::size_t n, const std::vector<std::uint32_t>& first,
   return inc;
 }
 
-BondNetwork make_bond_network(const SphereSet& s, double bond_factor) {
+BondNetwork make_bond_network(const SpherePart& part, double bond_factor) {
   require_positive("bond factor C_f", bond_factor);
-  return bonds_of(s, pairs_with_an_end_in(s, bond_factor, 0, s.size()));
-}
-
-BondNetwork make_bond_network(const SphereSet& s, double bond_factor, Domain& domain) {
-  require_positive("bond factor C_f", bond_factor);
+  BondNetwork net = bonds_of(part, pairs_with_an_end_in(part, bond_factor));
+  if (!part.domain()) return net;
+  Domain& domain = *part.domain();
   const int ranks = domain.size(), me = domain.rank();
-  const std::vector<std::size_t> starts = SphereSystem::rank_starts(s.size(), ranks);
-  const std::size_t begin = starts[std::size_t(me)], end = starts[std::size_t(me) + 1];
-  BondNetwork net = bonds_of(s, pairs_with_an_end_in(s, bond_factor, begin, end));
-  net.own_begin = begin, net.own_end = end;
+  const std::vector<std::size_t> starts = SphereSystem::rank_starts(part.total(), ranks);
+  const std::size_t begin = part.begin();
+  net.own_begin = begin, net.own_end = begin + part.own_count();
   // The bonds whose first sphere is a lower rank's come first (sorted by first sphere).
   const std::size_t cross = std::size_t(std::lower_bound(net.first.begin(), net.first.end(), begin) - net.first.begin());
   // The whole network numbers the bonds by first sphere: rank r's own-first bonds after every lower rank's.
@@ -167,15 +143,16 @@ BondNetwork make_bond_network(const SphereSet& s, double bond_factor, Domain& do
   return net;
 }
 
-std::vector<std::pair<std::uint32_t, std::uint32_t>> unbonded_overlaps(const SphereSet& s, const BondNetwork& net) {
+std::vector<std::pair<std::uint32_t, std::uint32_t>> unbonded_overlaps(const SpherePart& part, const BondNetwork& net) {
+  const SphereSet& s = part.spheres();
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-  const std::size_t begin = net.own_begin, end = std::min(net.own_end, s.size());
   std::size_t b = 0;  // both lists are sorted by (i, j)
-  for (const auto& p : pairs_with_an_end_in(s, 1.0, begin, end)) {
-    if (p.i < begin) continue;  // its first sphere's rank reports it
+  for (const auto& p : pairs_with_an_end_in(part, 1.0)) {
+    if (!part.owns(p.i)) continue;  // its first sphere's rank reports it
     while (b < net.size() && (net.first[b] < p.i || (net.first[b] == p.i && net.second[b] < p.j))) ++b;
     const bool bonded = b < net.size() && net.first[b] == p.i && net.second[b] == p.j;
-    const double u = s.radius_m[p.i] + s.radius_m[p.j] - norm(s.centre_m[p.j] - s.centre_m[p.i]);
+    const std::size_t i = part.local(p.i), j = part.local(p.j);
+    const double u = s.radius_m[i] + s.radius_m[j] - norm(s.centre_m[j] - s.centre_m[i]);
     if (!bonded && u > 0) out.emplace_back(p.i, p.j);
   }
   return out;

@@ -9,13 +9,14 @@
 // in that order gives the same bits for any thread count.
 //
 // On several MPI ranks (docs/mpi.md) each rank makes only its part: the bonds with an end among
-// its own spheres, found by a search over those and the spheres within a bond's reach of them,
+// its own spheres, found by a search over its part of the sphere set (SpherePart: those and the
+// spheres within a bond's reach of them),
 // each with its index in the whole network (from the ranks' counts, as if one process had made it).
 #include <cstdint>
 #include <limits>
 #include <vector>
 
-#include "mesowave/dem/engine/sphere_set.hpp"
+#include "mesowave/dem/engine/sphere_part.hpp"
 #include "mesowave/dem/engine/vec3.hpp"
 
 namespace mesowave::dem {
@@ -69,19 +70,20 @@ struct BondNetwork {
 /// InputError if two bonded spheres have coincident centres (no contact
 /// normal exists) or if a sphere is inside another one's centre region
 /// (distance below 1e-9 of the radii sum).
-BondNetwork make_bond_network(const SphereSet& spheres, double bond_factor);
-
-/// This rank's part of that network (collective): the bonds with an end among its own spheres
-/// (SphereSystem::rank_starts), their indices from each rank's count of the bonds whose first
-/// sphere is its own and, for a bond whose first sphere is another rank's, from that rank.
-/// std::logic_error if two ranks find different bonds between their spheres (never, by construction).
-BondNetwork make_bond_network(const SphereSet& spheres, double bond_factor, Domain& domain);
+///
+/// Of a rank's part (collective, SpherePart with a domain): the bonds with an end among its own
+/// spheres, their indices from each rank's count of the bonds whose first sphere is its own and,
+/// for a bond whose first sphere is another rank's, from that rank. std::logic_error if two ranks
+/// find different bonds between their spheres (never, by construction). The part's layer must
+/// reach C_f (2 r_max).
+BondNetwork make_bond_network(const SpherePart& spheres, double bond_factor);
 
 /// Pairs that overlap (u > 0) at step 0 but are not bonded: possible only
 /// with C_f < 1 (the rod paper's L_int). The full law would start them as
 /// fresh frictional contacts carrying K_n u, i.e. not force-free. Of a part, the
 /// pairs whose first sphere is among its own (each pair on one rank).
-std::vector<std::pair<std::uint32_t, std::uint32_t>> unbonded_overlaps(const SphereSet& spheres,
+/// The part's layer must reach 2 r_max.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> unbonded_overlaps(const SpherePart& spheres,
                                                                        const BondNetwork& bonds);
 
 }  // namespace mesowave::dem

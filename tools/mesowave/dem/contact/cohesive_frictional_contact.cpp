@@ -17,14 +17,15 @@
 
 namespace mesowave::dem {
 
-void refuse_unbonded_overlaps(const SphereSet& spheres, const BondNetwork& bonds, double bond_factor, Domain* domain) {
+void refuse_unbonded_overlaps(const SpherePart& spheres, const BondNetwork& bonds, double bond_factor) {
+  Domain* domain = spheres.domain();
   const auto stray = unbonded_overlaps(spheres, bonds);
   // Distributed, each rank finds the pairs whose first sphere is its own: all ranks report them.
   const std::size_t count = domain ? std::size_t(domain->sum(stray.size())) : stray.size();
   if (count == 0) return;
   double worst = 0;
   for (auto [i, j] : stray)
-    worst = std::max(worst, spheres.radius_m[i] + spheres.radius_m[j] - norm(spheres.centre_m[j] - spheres.centre_m[i]));
+    worst = std::max(worst, spheres.radius(i) + spheres.radius(j) - norm(spheres.reference_position(j) - spheres.reference_position(i)));
   if (domain) worst = domain->max(worst);
   throw InputError(std::to_string(count) + " pairs of spheres overlap at step 0 without a bond (bond factor C_f " +
                    format_number(bond_factor) + " < 1; largest overlap " + format_number(worst) +
@@ -261,13 +262,13 @@ void register_cohesive_frictional_law(Plugins& p) {
                  "K_s = nu_dem K_n (Eq. 3), Mohr-Coulomb with strengths T R^2, C R^2 (Eqs. 4-6)",
       .parameters = {},
       .models = {"full", "linear", "chain"},
-      .make = [](const std::string& model, SphereSet spheres, BondNetwork bonds,
+      .make = [](const std::string& model, SpherePart spheres, BondNetwork bonds,
                  const LawInput& in) -> std::unique_ptr<Model> {
         if (model == "chain") return std::make_unique<AxialChain>(std::move(spheres), bonds, in.material, *in.line);
         if (model == "linear")
           return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
                                                 std::make_unique<LinearBondedNetwork>(), in.domain);
-        refuse_unbonded_overlaps(spheres, bonds, in.material.bond_factor, in.domain);
+        refuse_unbonded_overlaps(spheres, bonds, in.material.bond_factor);
         return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
                                               std::make_unique<CohesiveFrictionalContact>(), in.domain);
       },

@@ -33,8 +33,8 @@ namespace mesowave::dem {
 
 /// The full law would start a pair that overlaps at step 0 without a bond (C_f < 1) as a contact
 /// pushing with K_n u: InputError, before the system is made (its factory calls it: every sphere
-/// is at hand then). `bonds`: this rank's part on several ranks (collective; `domain` null in one process).
-void refuse_unbonded_overlaps(const SphereSet& spheres, const BondNetwork& bonds, double bond_factor, Domain* domain);
+/// and its layer are at hand then). Of a rank's part and its bonds on several ranks (collective).
+void refuse_unbonded_overlaps(const SpherePart& spheres, const BondNetwork& bonds, double bond_factor);
 
 /// The kernel (sphere_system.hpp composes it).
 class CohesiveFrictionalContact : public ContactKernel {

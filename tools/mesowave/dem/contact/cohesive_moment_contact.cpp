@@ -134,7 +134,7 @@ void register_cohesive_moment_law(Plugins& p) {
                      {"eta_twist", "", 0, 1e6, "frictional twisting strength / (R F_n) (Yade's etaTwist)", 0.0}},
       // The chain stays valid: on a line loaded along it the rotations, hence the moments, stay zero.
       .models = {"full", "chain"},
-      .make = [](const std::string& model, SphereSet spheres, BondNetwork bonds,
+      .make = [](const std::string& model, SpherePart spheres, BondNetwork bonds,
                  const LawInput& in) -> std::unique_ptr<Model> {
         if (model == "chain") return std::make_unique<AxialChain>(std::move(spheres), bonds, in.material, *in.line);
         MomentParameters mp;
@@ -143,7 +143,7 @@ void register_cohesive_moment_law(Plugins& p) {
         };
         take("alpha_kr", mp.alpha_kr), take("alpha_ktw", mp.alpha_ktw);
         take("eta_roll", mp.eta_roll), take("eta_twist", mp.eta_twist);
-        refuse_unbonded_overlaps(spheres, bonds, in.material.bond_factor, in.domain);
+        refuse_unbonded_overlaps(spheres, bonds, in.material.bond_factor);
         return std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), in.material,
                                               std::make_unique<CohesiveMomentContact>(mp), in.domain);
       },

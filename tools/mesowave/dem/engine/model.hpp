@@ -39,6 +39,9 @@ struct EnergyAccount {
   double residual() const { return kinetic_J + elastic_J + damping_J + plastic_J - external_work_J; }
 };
 
+/// InputError: `model` runs on one process only (Model::distribute's default).
+[[noreturn]] void refuse_ranks(const std::string& model);
+
 class Model : public SphereStatics {
 public:
   virtual std::string name() const = 0;  ///< full | linear | chain

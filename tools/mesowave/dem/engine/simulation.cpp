@@ -14,7 +14,7 @@ namespace mesowave::dem {
 namespace {
 
 // `line`: the packing's axis if its centres lie on one line (a patch on a face it crosses takes the end sphere).
-std::vector<std::size_t> resolve(const SphereTarget& target, const SphereSet& s, const Box& box,
+std::vector<std::size_t> resolve(const SphereTarget& target, const SpherePart& s, const Box& box,
                                  const std::optional<Vec3>& line, const std::string& who) {
   switch (target.kind) {
     case SphereTarget::Kind::patch: return spheres_under_patch(s, box, target.patch, who, line);
@@ -101,16 +101,19 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
                      " kHz): the same amplitude loss per cycle, 2 alpha_d, at the bursts' centre frequency, and linear");
     m.damping = 0;
   }
-  SphereSet spheres = make_sphere_set(packing, m.density_kg_m3);
-  packing = {};
-  // On several ranks each makes its part of the network (the bonds of its own spheres).
   Domain* domain = options_.domain && options_.domain->size() > 1 ? options_.domain : nullptr;
-  BondNetwork bonds = domain ? make_bond_network(spheres, m.bond_factor, *domain) : make_bond_network(spheres, m.bond_factor);
+  // On several ranks the setup reads the rank's part of the set (docs/mpi.md, stage 3 step 10):
+  // its own spheres and a layer that holds every bond's and step-0 overlap's other end.
+  SpherePart spheres = [&] {
+    SphereSet whole = make_sphere_set(packing, m.density_kg_m3);
+    packing = {};
+    if (!domain) return SpherePart(std::move(whole));
+    const double r_max = *std::max_element(whole.radius_m.begin(), whole.radius_m.end());
+    return SpherePart(whole, *domain, std::max(m.bond_factor, 1.0) * 2.0 * r_max);
+  }();
+  BondNetwork bonds = make_bond_network(spheres, m.bond_factor);
   const Box box = bounding_box(spheres);
-  // What the setup's end reads of every sphere: a distributed model holds only its own by then.
-  double r_min = spheres.radius_m[0], r_sum = 0;
-  for (const double r : spheres.radius_m) r_min = std::min(r_min, r), r_sum += r;
-  const double r_mean = r_sum / double(spheres.size());
+  const double r_min = spheres.radius_min(), r_mean = spheres.radius_mean();
 
   const std::optional<Vec3> line = line_axis(spheres);
   std::vector<ResolvedLoad> loads;
@@ -127,19 +130,19 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
       sensor_groups.back().push_back(resolve(*target, spheres, box, line, who + label));
   }
   const std::string requested = options_.model != "auto" ? options_.model : scene_.model;
-  choice_ = choose_model(requested, scene_, spheres, bonds, loads, domain);
+  choice_ = choose_model(requested, scene_, spheres, bonds, loads);
   if (choice_.model == "chain" && m.viscous_damping_1_s != 0)
     throw InputError("[model] damping_law = \"viscous\" is not implemented for the chain model; use --model linear");
 
   // Notes a user should see: second-neighbour bonds on a line (the rod at d < C_f R).
-  if (auto axis = line_axis(spheres)) {
+  if (line) {
     std::size_t far = 0;
-    const auto order_along = [&](std::size_t k) { return dot(spheres.centre_m[k], *axis); };
-    std::vector<std::size_t> rank(spheres.size());
+    const std::vector<double> along = spheres.gathered([&](std::size_t l) { return dot(spheres.spheres().centre_m[l], *line); });
+    std::vector<std::size_t> rank(along.size());
     {
-      std::vector<std::size_t> idx(spheres.size());
+      std::vector<std::size_t> idx(along.size());
       for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
-      std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return order_along(a) < order_along(b); });
+      std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return along[a] < along[b]; });
       for (std::size_t r = 0; r < idx.size(); ++r) rank[idx[r]] = r;
     }
     for (std::size_t b = 0; b < bonds.size(); ++b)  // a rank counts the bonds whose first sphere is its own
@@ -156,18 +159,25 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
   if (domain && options_.impulse_actuator >= 0)
     throw InputError("--frequencies-kHz (superposition) runs on one process only, not on several MPI ranks");
   // The actuators and sensors are made from the spheres at step 0, before the model: on several
-  // ranks the model keeps only the spheres it holds once it is set up.
-  const SphereSetStatics statics(spheres);
+  // ranks the model keeps only the spheres it holds once it is set up. Every rank takes the
+  // statics of the spheres they read from their owners.
+  {
+    std::vector<std::size_t> resolved;
+    for (const auto& load : loads) resolved.insert(resolved.end(), load.spheres.begin(), load.spheres.end());
+    for (const auto& groups : sensor_groups)
+      for (const auto& g : groups) resolved.insert(resolved.end(), g.begin(), g.end());
+    spheres.fetch(std::move(resolved));
+  }
 
   const double ratio = scene_.duration_s / scene_.dt_s;
   steps_ = std::int64_t(std::ceil(ratio - 1e-9));
 
   for (std::size_t i = 0; i < loads.size(); ++i) {
     const ActuatorSpec& a = *loads[i].spec;
-    actuator_placements_.push_back({a.name, a.kind, packing_indices(statics, loads[i].spheres), loads[i].direction,
+    actuator_placements_.push_back({a.name, a.kind, packing_indices(spheres, loads[i].spheres), loads[i].direction,
                                     a.amplitude, a.frequency_hz, a.cycles, a.delay_s, {}});
     actuators_.push_back(actuator_kinds().get(a.kind, "actuator " + a.name).make(
-        ActuatorSite{a, loads[i].spheres, loads[i].direction, statics, box, m, scene_.duration_s}));
+        ActuatorSite{a, loads[i].spheres, loads[i].direction, spheres, box, m, scene_.duration_s}));
     if (options_.impulse_actuator >= 0) {
       if (a.kind != "force") throw InputError("actuator " + a.name + " is not a force actuator: no impulse response");
       const bool pushes = std::size_t(options_.impulse_actuator) == i;
@@ -185,7 +195,7 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
     sample_interval_steps_.push_back(every);
     Placement where{sensor.name, "", {}, {}, 0, 0, 0, 0, {}};
     sensors_.push_back(sensor_kinds().get(sensor.kind, who).make(
-        SensorSite{sensor, statics, sensor_groups[i], line, options_.impulse_actuator >= 0 ? 1 : every, actuators_},
+        SensorSite{sensor, spheres, sensor_groups[i], line, options_.impulse_actuator >= 0 ? 1 : every, actuators_},
         where));
     sensor_placements_.push_back(std::move(where));
   }
@@ -201,7 +211,7 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
       twin.quantity = MotionQuantity::displacement;
       Placement unused{twin.name, "", {}, {}, 0, 0, 0, 0, {}};
       sensors_.push_back(sensor_kinds().get(twin.kind, "sensor " + twin.name)
-                             .make(SensorSite{twin, statics, sensor_groups[i], line, 1, actuators_}, unused));
+                             .make(SensorSite{twin, spheres, sensor_groups[i], line, 1, actuators_}, unused));
     }
   // Every rank runs the actuators and sensors, so every rank holds the spheres they read.
   std::vector<std::size_t> observed;

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "mesowave/dem/packing/packing.hpp"
-#include "mesowave/dem/engine/sphere_statics.hpp"
 #include "mesowave/dem/engine/vec3.hpp"
 
 namespace mesowave::dem {
@@ -20,20 +19,6 @@ struct SphereSet {
   std::vector<std::uint32_t> packing_index;  ///< where sphere k sits in the packing it came from
   std::vector<std::int64_t> ids;
   std::size_t size() const { return radius_m.size(); }
-};
-
-/// A sphere set as the actuators and sensors read it when they are made (before the model).
-class SphereSetStatics final : public SphereStatics {
-public:
-  explicit SphereSetStatics(const SphereSet& s) : s_(s) {}
-  std::size_t sphere_count() const override { return s_.size(); }
-  Vec3 reference_position(std::size_t k) const override { return s_.centre_m[k]; }
-  double radius(std::size_t k) const override { return s_.radius_m[k]; }
-  double mass(std::size_t k) const override { return s_.mass_kg[k]; }
-  std::uint32_t packing_index(std::size_t k) const override { return s_.packing_index[k]; }
-
-private:
-  const SphereSet& s_;
 };
 
 /// Order of the centres along a Morton curve (21 bits per axis over their

@@ -1,7 +1,7 @@
 #pragma once
 // What a sphere is at step 0, by the model's index (Morton order): all that the actuators and
 // sensors read when they are made (their spheres' places, sizes and masses), so that they can be
-// made from the packing's sphere set before any model exists (SphereSetStatics), and read a
+// made from the packing's sphere set before any model exists (SpherePart), and read a
 // running Model the same way (Model derives from it).
 #include <cstddef>
 #include <cstdint>

@@ -78,16 +78,14 @@ SphereSet sphere_set_of_size(std::size_t m) {
 
 }  // namespace
 
-SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
+SphereSystem::SphereSystem(SpherePart spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
                            std::unique_ptr<ContactKernel> kernel, Domain* domain)
     : bonds_(std::move(bonds)), material_(material), kernel_(std::move(kernel)),
       displacement_state_(kernel_->displacement_state()), track_rotation_(kernel_->track_rotation()) {
-  const std::size_t n = sphere_total_ = spheres.size();
-  if (n > 0) {
-    const auto [lo, hi] = std::minmax_element(spheres.radius_m.begin(), spheres.radius_m.end());
-    radius_min_ = *lo, radius_max_ = *hi;
-  }
-  std::vector<std::int64_t>().swap(spheres.ids);  // the packing file's ids: read before the system only
+  if (spheres.domain() != domain)
+    throw std::logic_error("SphereSystem: the spheres are not this domain's part (SpherePart with its domain)");
+  const std::size_t n = sphere_total_ = spheres.total();
+  if (n > 0) radius_min_ = spheres.radius_min(), radius_max_ = spheres.radius_max();
   const std::size_t sphere_blocks = (n + kSphereBlock - 1) / kSphereBlock;
   sphere_block_kinetic_.assign(sphere_blocks, 0);
   sphere_block_damping_.assign(sphere_blocks, 0);
@@ -98,18 +96,18 @@ SphereSystem::SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveF
   partitions_ = std::clamp<std::size_t>(n / kSpheresPerPartition, 1, 64);
   sphere_chunk_ = (n + partitions_ - 1) / partitions_;
   if (domain) split(*domain);
-  // Until the law lays its contacts out, a rank holds its own spheres (one process all). On
-  // several ranks it keeps their statics and lets the rest of the set go before the law lays out
-  // its contacts (the setup's peak): what it holds later comes from the owners.
+  // Until the law lays its contacts out, a rank holds its own spheres (one process all): what
+  // it holds later comes from the owners.
   std::vector<std::uint32_t> own(own_end() - own_begin());
   for (std::size_t k = 0; k < own.size(); ++k) own[k] = std::uint32_t(own_begin() + k);
+  if (own_begin() != spheres.begin() || own.size() != spheres.own_count())
+    throw std::logic_error("SphereSystem: the part's own spheres are not the rank's range (SphereSystem::rank_starts)");
+  SphereSet mine = std::move(spheres).take_own();
+  std::vector<std::int64_t>().swap(mine.ids);  // the packing file's ids: read before the system only
   if (!domain) {
-    spheres_ = std::move(spheres);
+    spheres_ = std::move(mine);
     hold(std::move(own));
   } else {
-    SphereSet mine = sphere_set_of_size(own.size());
-    for (std::size_t k = 0; k < own.size(); ++k) copy_sphere(spheres, own[k], mine, k);
-    spheres = {};
     hold(own, mine, own);
   }
   keep_held_bonds();

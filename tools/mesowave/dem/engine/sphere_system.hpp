@@ -31,9 +31,9 @@
 // in global id order (hold()), so that first < second and every sphere's order of terms
 // survive; the Model interface takes global ids (the packing's order), a contact kernel reads
 // local ones. The spheres' statics (centre, radius, mass, inertia, packing index) are held the
-// same way (held_spheres()): the constructor keeps its own spheres' and lets the rest of the set
-// go before the law lays out its contacts; a ghost's come from its owner with the layout that
-// brings it, an observed sphere's with distribute().
+// same way (held_spheres()): the constructor takes its own spheres' from its part of the set
+// (SpherePart); a ghost's come from its owner with the layout that brings it, an observed
+// sphere's with distribute().
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -94,9 +94,10 @@ class SphereSystem final : public Model {
 public:
   /// With a `domain` of several ranks (docs/mpi.md) the system is split from the start: the
   /// law lays out and holds only the contacts of this rank's spheres; distribute() must then
-  /// be given the same domain. `bonds`: the whole network in one process, this rank's part of it
-  /// on several (make_bond_network with the domain: the bonds with an end of its own).
-  SphereSystem(SphereSet spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
+  /// be given the same domain. `spheres` and `bonds`: the whole set and network in one process,
+  /// this rank's parts of them on several (SpherePart with the domain, make_bond_network of it:
+  /// the bonds with an end of its own).
+  SphereSystem(SpherePart spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
                std::unique_ptr<ContactKernel> kernel, Domain* domain = nullptr);
   ~SphereSystem() override;
 

@@ -12,26 +12,26 @@
 
 namespace mesowave::dem {
 
-RigidWall::RigidWall(std::string name, const SphereStatics& statics, const Box& box, Face face, double E_dem_Pa,
+RigidWall::RigidWall(std::string name, SpherePart& spheres, const Box& box, Face face, double E_dem_Pa,
                      const VelocityRamp& motion, double reach_m)
     : name_(std::move(name)), face_(face), motion_(motion) {
   const int a = face.axis;
   inward_ = face.upper ? -1.0 : 1.0;
   plane0_ = face.upper ? box.upper[a] : box.lower[a];
-  double r_max = 0;
-  for (std::size_t k = 0; k < statics.sphere_count(); ++k) r_max = std::max(r_max, statics.radius(k));
   // A sphere can meet the wall only if the wall travels to it, or it to the
   // wall; two radii of slack cover the specimen's own motion toward the wall.
-  const double reach = std::max(reach_m, 0.0) + 2.0 * r_max;
-  for (std::size_t k = 0; k < statics.sphere_count(); ++k) {
-    const double c = statics.reference_position(k)[a], r = statics.radius(k);
-    const double gap = inward_ * (c - plane0_) - r;  // surface to plane, >= 0 at the start
-    if (gap > reach) continue;
-    candidates_.push_back(k);
+  const double reach = std::max(reach_m, 0.0) + 2.0 * spheres.radius_max();
+  const SphereSet& s = spheres.spheres();
+  candidates_ = spheres.select([&](std::size_t l) {
+    return inward_ * (s.centre_m[l][a] - plane0_) - s.radius_m[l] <= reach;  // surface to plane, >= 0 at the start
+  });
+  spheres.fetch(candidates_);
+  for (const std::size_t k : candidates_) {
+    const double c = spheres.reference_position(k)[a], r = spheres.radius(k), m = spheres.mass(k);
     radius_.push_back(r);
     centre0_.push_back(c);
     stiffness_.push_back(E_dem_Pa * r);
-    max_stiffness_per_mass_ = std::max(max_stiffness_per_mass_, E_dem_Pa * r / statics.mass(k));
+    max_stiffness_per_mass_ = std::max(max_stiffness_per_mass_, E_dem_Pa * r / m);
   }
   if (candidates_.empty()) throw InputError("wall " + name_ + ": no sphere near face " + face.name());
 }

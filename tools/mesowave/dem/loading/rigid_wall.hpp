@@ -25,8 +25,9 @@ public:
   /// `face`: the face of `box` the wall starts on; `velocity_m_s` along the
   /// inward normal from `delay_s` on; `reach_m`: how far the wall may travel in
   /// the run (spheres farther from the face than their radius plus this, plus a
-  /// margin for their own motion, are never tested).
-  RigidWall(std::string name, const SphereStatics& statics, const Box& box, Face face, double E_dem_Pa,
+  /// margin for their own motion, are never tested). Of a rank's part of the spheres, collective:
+  /// the candidates come from every rank, with their statics.
+  RigidWall(std::string name, SpherePart& spheres, const Box& box, Face face, double E_dem_Pa,
             const VelocityRamp& motion, double reach_m);
 
   const std::string& name() const override { return name_; }

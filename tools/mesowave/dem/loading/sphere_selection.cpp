@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
 
@@ -26,12 +28,13 @@ Vec3 Face::outward_normal() const {
   return n;
 }
 
-Box bounding_box(const SphereSet& s) {
+Box bounding_box(const SpherePart& part) {
+  const SphereSet& s = part.spheres();
   Box b;
   const double inf = std::numeric_limits<double>::infinity();
   b.lower = {inf, inf, inf};
   b.upper = {-inf, -inf, -inf};
-  for (std::size_t k = 0; k < s.size(); ++k) {
+  for (std::size_t k = 0; k < part.own_count(); ++k) {
     const Vec3 c = s.centre_m[k];
     const double r = s.radius_m[k];
     for (int d = 0; d < 3; ++d) {
@@ -39,6 +42,8 @@ Box bounding_box(const SphereSet& s) {
       b.upper[d] = std::max(b.upper[d], c[d] + r);
     }
   }
+  if (Domain* domain = part.domain())
+    for (int d = 0; d < 3; ++d) b.lower[d] = -domain->max(-b.lower[d]), b.upper[d] = domain->max(b.upper[d]);  // exact
   return b;
 }
 
@@ -49,85 +54,63 @@ Vec3 patch_centre(const Patch& patch, const Box& box) {
   return c;
 }
 
-std::vector<std::size_t> spheres_under_patch(const SphereSet& s, const Box& box, const Patch& patch,
+std::vector<std::size_t> spheres_under_patch(const SpherePart& part, const Box& box, const Patch& patch,
                                              const std::string& who, const std::optional<Vec3>& line) {
+  const SphereSet& s = part.spheres();
   const Vec3 centre = patch_centre(patch, box);
-  double depth = patch.depth_m;
-  if (depth < 0) {
-    depth = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < s.size(); ++k) depth = std::min(depth, s.radius_m[k]);
-  }
+  const double depth = patch.depth_m < 0 ? part.radius_min() : patch.depth_m;
   const int a = patch.face.axis, p = patch.face.in_plane(0), q = patch.face.in_plane(1);
   const double plane = patch.face.upper ? box.upper[a] : box.lower[a];
-  std::vector<std::size_t> chosen;
+  std::function<bool(std::size_t)> under;
   if (patch.face.curved) {
     const double cx = 0.5 * (box.lower.x + box.upper.x), cy = 0.5 * (box.lower.y + box.upper.y);
     const double R = 0.5 * (box.upper.x - box.lower.x);
     const double phi0 = std::atan2(centre.y - cy, centre.x - cx);
-    for (std::size_t k = 0; k < s.size(); ++k) {
+    under = [&, cx, cy, R, phi0](std::size_t k) {
       const Vec3 c = s.centre_m[k];
       const double rho = std::hypot(c.x - cx, c.y - cy);
-      if (R - (rho + s.radius_m[k]) > depth) continue;
+      if (R - (rho + s.radius_m[k]) > depth) return false;
       const double around = std::remainder(std::atan2(c.y - cy, c.x - cx) - phi0, 2 * std::numbers::pi);
-      if (std::abs(R * around) > 0.5 * patch.size_m[0]) continue;
-      if (std::abs(c.z - centre.z) > 0.5 * patch.size_m[1]) continue;
-      chosen.push_back(k);
-    }
+      return std::abs(R * around) <= 0.5 * patch.size_m[0] && std::abs(c.z - centre.z) <= 0.5 * patch.size_m[1];
+    };
+  } else {
+    // A line across the face: only its end sphere there is at the surface (header). The line's
+    // axis along the face normal to the round-off of its unit vector (model_choice.cpp's test of a
+    // line along x, y or z).
+    std::optional<std::size_t> end;
+    if (patch.depth_m < 0 && line && std::abs((*line)[a]) > 1 - 1e-12)
+      end = part.arg_min([&](std::size_t k) { return std::pair{patch.face.upper ? -s.centre_m[k][a] : s.centre_m[k][a], 0.0}; });
+    under = [&, end](std::size_t k) {
+      if (end && part.whole_index(k) != *end) return false;
+      const Vec3 c = s.centre_m[k];
+      const double r = s.radius_m[k];
+      const double gap = patch.face.upper ? plane - (c[a] + r) : (c[a] - r) - plane;
+      return gap <= depth && std::abs(c[p] - centre[p]) <= 0.5 * patch.size_m[0] &&
+             std::abs(c[q] - centre[q]) <= 0.5 * patch.size_m[1];
+    };
   }
-  // A line across the face: only its end sphere there is at the surface (header). The line's
-  // axis along the face normal to the round-off of its unit vector (model_choice.cpp's test of a
-  // line along x, y or z).
-  std::optional<std::size_t> end;
-  if (!patch.face.curved && patch.depth_m < 0 && line && std::abs((*line)[a]) > 1 - 1e-12 && s.size() > 0) {
-    end = 0;
-    for (std::size_t k = 1; k < s.size(); ++k)
-      if (patch.face.upper ? s.centre_m[k][a] > s.centre_m[*end][a] : s.centre_m[k][a] < s.centre_m[*end][a]) end = k;
-  }
-  for (std::size_t k = 0; k < s.size() && !patch.face.curved; ++k) {
-    if (end && k != *end) continue;
-    const Vec3 c = s.centre_m[k];
-    const double r = s.radius_m[k];
-    const double gap = patch.face.upper ? plane - (c[a] + r) : (c[a] - r) - plane;
-    if (gap > depth) continue;
-    if (std::abs(c[p] - centre[p]) > 0.5 * patch.size_m[0]) continue;
-    if (std::abs(c[q] - centre[q]) > 0.5 * patch.size_m[1]) continue;
-    chosen.push_back(k);
-  }
+  // Ordered by packing index, so the average is summed the same way whatever the numbering.
+  std::vector<std::size_t> chosen = part.select(under, true);
   if (chosen.empty())
     throw InputError(who + ": no sphere under its " + format_number(patch.size_m[0] * 1e3) + " x " +
                      format_number(patch.size_m[1] * 1e3) + " mm patch on face " + patch.face.name() + " at (" +
                      format_number(centre.x * 1e3) + ", " + format_number(centre.y * 1e3) + ", " +
                      format_number(centre.z * 1e3) + ") mm; enlarge the patch or its depth");
-  // Order by packing index so the average is summed the same way whatever the numbering.
-  std::sort(chosen.begin(), chosen.end(),
-            [&](std::size_t i, std::size_t j) { return s.packing_index[i] < s.packing_index[j]; });
   return chosen;
 }
 
-std::size_t sphere_nearest(const SphereSet& s, const Vec3& point) {
-  std::size_t best = 0;
-  double best_d2 = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    const double d2 = norm2(s.centre_m[k] - point);
-    if (d2 < best_d2 || (d2 == best_d2 && s.packing_index[k] < s.packing_index[best])) {
-      best = k;
-      best_d2 = d2;
-    }
-  }
-  return best;
+std::size_t sphere_nearest(const SpherePart& part, const Vec3& point) {
+  const SphereSet& s = part.spheres();
+  return part.arg_min([&](std::size_t k) { return std::pair{norm2(s.centre_m[k] - point), double(s.packing_index[k])}; });
 }
 
-std::size_t sphere_at_end(const SphereSet& s, bool last) {
-  const Box b = bounding_box(s);
+std::size_t sphere_at_end(const SpherePart& part, bool last) {
+  const Box b = bounding_box(part);
   int axis = 0;
   for (int d = 1; d < 3; ++d)
     if (b.upper[d] - b.lower[d] > b.upper[axis] - b.lower[axis]) axis = d;
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < s.size(); ++k) {
-    const double c = s.centre_m[k][axis], c_best = s.centre_m[best][axis];
-    if (last ? c > c_best : c < c_best) best = k;
-  }
-  return best;
+  const SphereSet& s = part.spheres();
+  return part.arg_min([&](std::size_t k) { return std::pair{last ? -s.centre_m[k][axis] : s.centre_m[k][axis], 0.0}; });
 }
 
 }  // namespace mesowave::dem

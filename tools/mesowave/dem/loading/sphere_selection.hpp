@@ -4,11 +4,13 @@
 // the one nearest to a point, or the first/last sphere of a line. A face is
 // one of a box's six (a cylinder's flat ends are z- and z+ of its bounding
 // box) or a cylinder's curved face (experiment/experiment.hpp's shapes).
+// On several ranks the spheres are a rank's part of the set (SpherePart): each call is then
+// collective, and every rank gets the same whole indices.
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "mesowave/dem/engine/sphere_set.hpp"
+#include "mesowave/dem/engine/sphere_part.hpp"
 #include "mesowave/dem/engine/vec3.hpp"
 
 namespace mesowave::dem {
@@ -34,7 +36,7 @@ struct Box {
 };
 
 /// The box the sphere surfaces fill: min(x - r) to max(x + r) per axis.
-Box bounding_box(const SphereSet& spheres);
+Box bounding_box(const SpherePart& spheres);
 
 struct Patch {
   Face face;
@@ -62,11 +64,11 @@ Vec3 patch_centre(const Patch& patch, const Box& box);
 /// the next sphere, whose surface lies d < R from the face. An experiment's end transducers (a
 /// rod's A and S) so drive and read the first and last sphere, as `sphere = "first"/"last"` does.
 /// An explicit depth_m keeps the depth rule.
-std::vector<std::size_t> spheres_under_patch(const SphereSet& spheres, const Box& box, const Patch& patch,
+std::vector<std::size_t> spheres_under_patch(const SpherePart& spheres, const Box& box, const Patch& patch,
                                              const std::string& who, const std::optional<Vec3>& line = std::nullopt);
 /// The sphere whose centre is nearest to `point` (ties: lowest packing index).
-std::size_t sphere_nearest(const SphereSet& spheres, const Vec3& point);
+std::size_t sphere_nearest(const SpherePart& spheres, const Vec3& point);
 /// The first or last sphere along the longest extent of the packing (a rod's ends).
-std::size_t sphere_at_end(const SphereSet& spheres, bool last);
+std::size_t sphere_at_end(const SpherePart& spheres, bool last);
 
 }  // namespace mesowave::dem

@@ -57,9 +57,11 @@ void sort_unique(std::vector<std::uint32_t>& v) {
 
 }  // namespace
 
-void Model::distribute(Domain& /*domain*/, const std::vector<std::size_t>& /*observed*/) {
-  throw InputError("the " + name() + " model runs on one process only; on several MPI ranks run --model linear or full");
+void refuse_ranks(const std::string& model) {
+  throw InputError("the " + model + " model runs on one process only; on several MPI ranks run --model linear or full");
 }
+
+void Model::distribute(Domain& /*domain*/, const std::vector<std::size_t>& /*observed*/) { refuse_ranks(name()); }
 
 std::vector<std::size_t> SphereSystem::rank_starts(std::size_t n, int ranks) {
   const std::size_t blocks = (n + kSphereBlock - 1) / kSphereBlock;

@@ -12,29 +12,33 @@
 
 namespace mesowave::dem {
 
-std::optional<Vec3> line_axis(const SphereSet& s) {
-  if (s.size() < 2) return std::nullopt;
-  const std::size_t a = sphere_at_end(s, false), b = sphere_at_end(s, true);
-  const Vec3 d = s.centre_m[b] - s.centre_m[a];
+std::optional<Vec3> line_axis(const SpherePart& part) {
+  if (part.total() < 2) return std::nullopt;
+  const Vec3 ca = part.centre_of(sphere_at_end(part, false)), cb = part.centre_of(sphere_at_end(part, true));
+  const Vec3 d = cb - ca;
   const double length = norm(d);
   if (!(length > 0)) return std::nullopt;
   const Vec3 e = (1.0 / length) * d;
-  const double tolerance = 1e-6 * *std::min_element(s.radius_m.begin(), s.radius_m.end());
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    const Vec3 r = s.centre_m[k] - s.centre_m[a];
-    if (norm(r - dot(r, e) * e) > tolerance) return std::nullopt;
+  const double tolerance = 1e-6 * part.radius_min();
+  const SphereSet& s = part.spheres();
+  double off = 0;  // 1 if an own sphere is off the line
+  for (std::size_t k = 0; k < part.own_count() && off == 0; ++k) {
+    const Vec3 r = s.centre_m[k] - ca;
+    if (norm(r - dot(r, e) * e) > tolerance) off = 1;
   }
+  if (part.domain()) off = part.domain()->max(off);
+  if (off != 0) return std::nullopt;
   return e;
 }
 
-double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& s, const BondNetwork& bonds,
-                             const CohesiveFrictionalMaterial& m, double duration_s, Domain* domain) {
+double estimated_force_ratio(const ResolvedLoad& load, const SpherePart& s, const BondNetwork& bonds,
+                             const CohesiveFrictionalMaterial& m, double duration_s) {
   double weakest = std::numeric_limits<double>::infinity(), stiffest = 0;
   for (std::size_t k : load.spheres) {
     if (!bonds.lists_all_of(k)) continue;  // another rank's sphere: that rank takes it
     for (std::uint32_t e = bonds.incidence.offset[k]; e < bonds.incidence.offset[k + 1]; ++e) {
       const std::uint32_t b = Incidence::bond(bonds.incidence.entry[e]);
-      const double ri = s.radius_m[bonds.first[b]], rj = s.radius_m[bonds.second[b]];
+      const double ri = s.radius(bonds.first[b]), rj = s.radius(bonds.second[b]);
       const double kn = normal_stiffness(m, ri, rj);
       const double strength = m.breakable()
                                   ? std::min(tensile_bond_strength(m, ri, rj), shear_bond_strength(m, ri, rj))
@@ -43,17 +47,17 @@ double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& s, const
       stiffest = std::max(stiffest, kn);
     }
   }
-  if (domain) weakest = -domain->max(-weakest), stiffest = domain->max(stiffest);  // exact in any order
+  if (Domain* domain = s.domain()) weakest = -domain->max(-weakest), stiffest = domain->max(stiffest);  // exact in any order
   if (!std::isfinite(weakest)) return std::numeric_limits<double>::infinity();  // a loaded sphere without bonds
   const ActuatorKind& kind = actuator_kinds().get(load.spec->kind, "actuator " + load.spec->name);
   return kind.peak_sphere_force(*load.spec, load.spheres.size(), stiffest, duration_s) / weakest;
 }
 
-ModelChoice choose_model(const std::string& requested, const Scene& scene, const SphereSet& s,
-                         const BondNetwork& bonds, const std::vector<ResolvedLoad>& loads, Domain* domain) {
+ModelChoice choose_model(const std::string& requested, const Scene& scene, const SpherePart& s,
+                         const BondNetwork& bonds, const std::vector<ResolvedLoad>& loads) {
   ModelChoice c;
   for (const auto& load : loads)
-    c.estimated_force_ratio = std::max(c.estimated_force_ratio, estimated_force_ratio(load, s, bonds, scene.material, scene.duration_s, domain));
+    c.estimated_force_ratio = std::max(c.estimated_force_ratio, estimated_force_ratio(load, s, bonds, scene.material, scene.duration_s));
   const auto axis = line_axis(s);
 
   const ContactLaw& law = contact_laws().get(scene.contact_law, "[material].law");
@@ -87,7 +91,7 @@ ModelChoice choose_model(const std::string& requested, const Scene& scene, const
   }
   if (chain_obstacle.empty()) {
     c.model = "chain";
-    c.reason = "all " + std::to_string(s.size()) +
+    c.reason = "all " + std::to_string(s.total()) +
                " spheres lie on one line and every load acts along it: the full law keeps transverse motion, shear "
                "forces and rotations exactly zero and its normal force is linear, so only the axial degree of freedom "
                "is integrated (breakage is checked after the run)";

@@ -17,7 +17,7 @@
 
 #include "mesowave/dem/contact/bond_network.hpp"
 #include "mesowave/dem/scene/scene.hpp"
-#include "mesowave/dem/engine/sphere_set.hpp"
+#include "mesowave/dem/engine/sphere_part.hpp"
 
 namespace mesowave::dem {
 
@@ -30,7 +30,7 @@ struct ModelChoice {
 /// Unit vector along a line of spheres (first to last sphere along the
 /// longest extent) if every centre lies within 1e-6 of the smallest radius
 /// from that line; nothing otherwise (or for fewer than two spheres).
-std::optional<Vec3> line_axis(const SphereSet& spheres);
+std::optional<Vec3> line_axis(const SpherePart& spheres);
 
 /// What an actuator loads, resolved to spheres.
 struct ResolvedLoad {
@@ -44,14 +44,14 @@ struct ResolvedLoad {
 /// K_n there times |amplitude|, or times |velocity| x duration for a moving
 /// platen or wall) over the weakest bond at those spheres
 /// (min(T, C) R^2; K_n R, a strain of one, when the bonds never break).
-/// With a rank's part of the network and its `domain` (collective), each rank takes the loaded
+/// Of a rank's part of the spheres and the network (collective), each rank takes the loaded
 /// spheres whose bonds it lists, and the weakest and stiffest come from every rank (exact).
-double estimated_force_ratio(const ResolvedLoad& load, const SphereSet& spheres, const BondNetwork& bonds,
-                             const CohesiveFrictionalMaterial& material, double duration_s, Domain* domain = nullptr);
+double estimated_force_ratio(const ResolvedLoad& load, const SpherePart& spheres, const BondNetwork& bonds,
+                             const CohesiveFrictionalMaterial& material, double duration_s);
 
 /// `requested`: auto | full | linear | chain. InputError for chain on a
-/// packing that is not a line. `domain`: as for estimated_force_ratio.
-ModelChoice choose_model(const std::string& requested, const Scene& scene, const SphereSet& spheres,
-                         const BondNetwork& bonds, const std::vector<ResolvedLoad>& loads, Domain* domain = nullptr);
+/// packing that is not a line. Of a part: as estimated_force_ratio.
+ModelChoice choose_model(const std::string& requested, const Scene& scene, const SpherePart& spheres,
+                         const BondNetwork& bonds, const std::vector<ResolvedLoad>& loads);
 
 }  // namespace mesowave::dem

@@ -57,7 +57,7 @@ const Registry<ContactLaw>& contact_laws() { return plugins().laws; }
 const Registry<ActuatorKind>& actuator_kinds() { return plugins().actuators; }
 const Registry<SensorKind>& sensor_kinds() { return plugins().sensors; }
 
-std::unique_ptr<Model> make_model(const std::string& law, const std::string& model, SphereSet spheres, BondNetwork bonds,
+std::unique_ptr<Model> make_model(const std::string& law, const std::string& model, SpherePart spheres, BondNetwork bonds,
                                   const CohesiveFrictionalMaterial& material, const LawParameters& parameters,
                                   std::optional<Vec3> line) {
   return contact_laws().get(law, "contact law").make(model, std::move(spheres), std::move(bonds),

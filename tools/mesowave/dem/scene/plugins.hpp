@@ -30,7 +30,7 @@
 #include "mesowave/dem/scene/scene_keys.hpp"
 #include "mesowave/dem/loading/sensor.hpp"
 #include "mesowave/dem/loading/sphere_selection.hpp"
-#include "mesowave/dem/engine/sphere_set.hpp"
+#include "mesowave/dem/engine/sphere_part.hpp"
 
 namespace mesowave::dem {
 
@@ -72,7 +72,7 @@ struct ContactLaw {
   /// stand in for it where valid ("linear", "chain"; model_choice.hpp).
   std::vector<std::string> models;
   /// Builds `model` (one of `models`).
-  std::function<std::unique_ptr<Model>(const std::string& model, SphereSet, BondNetwork, const LawInput&)> make;
+  std::function<std::unique_ptr<Model>(const std::string& model, SpherePart, BondNetwork, const LawInput&)> make;
   /// The validity rule for the model choice: why `model` (a shortcut) cannot
   /// stand in for this law with these values, "" if it can.
   std::function<std::string(const std::string& model, const Scene&)> shortcut_obstacle;
@@ -87,7 +87,7 @@ struct ActuatorSite {
   const ActuatorSpec& spec;
   const std::vector<std::size_t>& spheres;  ///< model numbering
   Vec3 direction;
-  const SphereStatics& statics;  ///< the spheres at step 0 (the model is made after)
+  SpherePart& statics;  ///< the spheres at step 0, a rank's part (the model is made after; a wall selects)
   const Box& box;
   const CohesiveFrictionalMaterial& material;
   double duration_s;
@@ -184,7 +184,7 @@ double read_ramp(SceneKeys& k);
 /// cycles) or a ramp (ramp_us), and delay_us.
 void read_actuator_load(SceneKeys& k, ActuatorSpec& spec, double scale, bool burst);
 /// Model `model` (full | linear | chain) of contact law `law` (tests, benchmarks).
-std::unique_ptr<Model> make_model(const std::string& law, const std::string& model, SphereSet spheres, BondNetwork bonds,
+std::unique_ptr<Model> make_model(const std::string& law, const std::string& model, SpherePart spheres, BondNetwork bonds,
                                   const CohesiveFrictionalMaterial& material, const LawParameters& parameters = {},
                                   std::optional<Vec3> line = std::nullopt);
 /// A moving platen's (velocity, wall) largest force on one sphere for the model
