@@ -8,13 +8,16 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <future>
 #include <limits>
 #include <regex>
+#include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -69,20 +72,27 @@ std::vector<std::string> with(std::vector<std::string> args, const std::vector<s
   return args;
 }
 
+// `text` with each edit's first text replaced by its second; std::logic_error (the test fails with
+// it) if one is missing, so that an edit never silently does nothing.
+std::string edited(std::string text, const std::vector<std::pair<std::string, std::string>>& edits) {
+  for (const auto& [from, to] : edits) {
+    const auto at = text.find(from);
+    if (at == std::string::npos) throw std::logic_error("the scene has no \"" + from + "\" to edit");
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
 // The 6-cell FCC block (864 spheres: four 256-sphere blocks, so four ranks each hold some).
 void write_block(const test::TempDir& dir) { dem::write_packing_file(dir / "block.h5", dem::testing::crushing_block(6)); }
 
 // crush.toml: the shared crushing scene on the block, made shorter for the larger block (the wall
-// 2.4 x faster, the stop 20 % past the peak): about 2,700 steps to failure. Call it under
-// ASSERT_NO_FATAL_FAILURE: its ASSERT ends only the helper.
+// 2.4 x faster, the stop 20 % past the peak): about 2,700 steps to failure.
 void write_crush_scene(const test::TempDir& dir) {
-  std::string scene = dem::testing::crushing_scene_toml((dir / "block.h5").string());
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"velocity_mm_s = 500.0", "velocity_mm_s = 1200.0"},
-                                 {"ramp_us = 20", "ramp_us = 10"}, {"stop_drop_pct = 50.0", "stop_drop_pct = 20.0"}}) {
-    ASSERT_NE(scene.find(from), std::string::npos) << from;
-    scene.replace(scene.find(from), from.size(), to);
-  }
-  test::write_file(dir / "crush.toml", scene);
+  test::write_file(dir / "crush.toml", edited(dem::testing::crushing_scene_toml((dir / "block.h5").string()),
+                                              {{"velocity_mm_s = 500.0", "velocity_mm_s = 1200.0"},
+                                               {"ramp_us = 20", "ramp_us = 10"},
+                                               {"stop_drop_pct = 50.0", "stop_drop_pct = 20.0"}}));
 }
 
 // A burst on face z- of the block, accelerations on the opposite face and a side face.
@@ -187,6 +197,14 @@ void expect_same_files_on_ranks(const test::TempDir& dir, const std::string& sce
       EXPECT_GE(number(4), number(2) - number(1) + number(5)) << split;
       EXPECT_LE(number(4), number(2) - number(1) + number(5) + number(6)) << split;
       EXPECT_LT(number(4), number(3)) << split;
+      // ... and read a part of the packing's rows, its setup a part of the spheres (stage 3, steps 10-11).
+      const std::size_t spheres = number(3), own = number(2) - number(1);
+      ASSERT_TRUE(std::regex_search(split, m, std::regex(R"(setup: (\d+) packing rows read, (\d+) spheres of its part)"))) << split;
+      EXPECT_LE(std::stoul(m[1].str()), (spheres + std::size_t(np) - 1) / std::size_t(np)) << split;
+      // (At np 2 rank 0's part of these small blocks, 512 own spheres and a layer two radii deep,
+      // reaches every sphere: 864 of 864 on the block, 259 of 600 on the line.)
+      if (np >= 3) EXPECT_LT(std::stoul(m[2].str()), spheres) << split;
+      EXPECT_GE(std::stoul(m[2].str()), own) << split;
     }
   }
 }
@@ -260,10 +278,9 @@ TEST(MwDemMpi, PointEndAndCurvedFaceSelectionsOnTwoAndThreeRanksWriteTheOneProce
   test::TempDir dir;
   const dem::Packing lattice = dem::testing::fcc_packing(6, 2.0e-3, 0.66e-3, 0.74e-3, 0.0, 7, 2290);
   dem::write_packing_file(dir / "lattice.h5", lattice);
-  std::string scene = wave_scene(dir / "lattice.h5");
-  const std::string patch = "face = \"z-\"\ncentre_rel = [0.5, 0.5, 0]\npatch_mm = [3.0, 3.0]\ndirection = \"inward\"";
-  ASSERT_NE(scene.find(patch), std::string::npos);
-  scene.replace(scene.find(patch), patch.size(), "point_mm = [5.0, 5.0, 5.0]\ndirection = \"-z\"");
+  const std::string scene = edited(wave_scene(dir / "lattice.h5"),
+                                   {{"face = \"z-\"\ncentre_rel = [0.5, 0.5, 0]\npatch_mm = [3.0, 3.0]\ndirection = \"inward\"",
+                                     "point_mm = [5.0, 5.0, 5.0]\ndirection = \"-z\""}});
   test::write_file(dir / "select.toml", scene + R"(
 [[sensor]]
 name = "D"
@@ -309,14 +326,10 @@ patch_mm = [4.0, 4.0]
 TEST(MwDemMpi, ALineOfSpheresOnTwoAndThreeRanksIsOneProcessesAndItsChainIsRefused) {
   test::TempDir dir;
   dem::write_packing_file(dir / "line.h5", dem::testing::line_packing(600, 1e-3, 0.95e-3, 7800));
-  std::string scene = wave_scene(dir / "line.h5");
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"face = \"z-\"\ncentre_rel = [0.5, 0.5, 0]", "face = \"x-\"\ncentre_rel = [0, 0.5, 0.5]"},
-                                 {"face = \"z+\"\ncentre_rel = [0.5, 0.5, 1]", "face = \"x+\"\ncentre_rel = [1, 0.5, 0.5]"},
-                                 {"duration_ms = 0.016", "duration_ms = 0.004"}}) {
-    ASSERT_NE(scene.find(from), std::string::npos) << from;
-    scene.replace(scene.find(from), from.size(), to);
-  }
-  test::write_file(dir / "line.toml", scene);
+  test::write_file(dir / "line.toml", edited(wave_scene(dir / "line.h5"),
+                                             {{"face = \"z-\"\ncentre_rel = [0.5, 0.5, 0]", "face = \"x-\"\ncentre_rel = [0, 0.5, 0.5]"},
+                                              {"face = \"z+\"\ncentre_rel = [0.5, 0.5, 1]", "face = \"x+\"\ncentre_rel = [1, 0.5, 0.5]"},
+                                              {"duration_ms = 0.016", "duration_ms = 0.004"}}));
   expect_same_files_on_ranks(dir, "line.toml", {"--model", "linear"}, {2, 3});
   const auto j = nlohmann::json::parse(test::read_file(dir / "np3.json"));
   EXPECT_EQ(j["actuator_loads"][0]["spheres"], nlohmann::json::array({0})) << j["actuator_loads"];
@@ -330,11 +343,30 @@ TEST(MwDemMpi, ALineOfSpheresOnTwoAndThreeRanksIsOneProcessesAndItsChainIsRefuse
   EXPECT_FALSE(std::filesystem::exists(dir / "chain.h5"));
 }
 
+// Each rank reads a part of the packing's rows and the ranks sort them along the Morton curve
+// between them (docs/mpi.md, stage 3 step 11): the numbering must be one process's. The block's
+// rows are written in reverse, and a twin of the first sphere 2 nm from it (the same Morton cell:
+// the codes tie, the packing index decides) is appended last.
+TEST(MwDemMpi, APackingReadInPartsIsNumberedAsOneProcessNumbersIt) {
+  test::TempDir dir;
+  dem::Packing block = dem::testing::crushing_block(6);
+  std::reverse(block.centres_m.begin(), block.centres_m.end());
+  std::reverse(block.radii_m.begin(), block.radii_m.end());
+  block.centres_m.push_back({block.centres_m[0][0] + 2e-9, block.centres_m[0][1], block.centres_m[0][2]});
+  block.radii_m.push_back(block.radii_m[0]);
+  block.ids.push_back(std::int64_t(block.ids.size()));
+  dem::write_packing_file(dir / "shuffled.h5", block);
+  // The twins' bond is stiff in shear (a K_s (r_i + r_j) / |x_j - x_i|): a 1 ns step, 300 steps.
+  test::write_file(dir / "wave.toml",
+                   edited(wave_scene(dir / "shuffled.h5"), {{"dt_ns = 40", "dt_ns = 1"}, {"duration_ms = 0.016", "duration_ms = 0.0003"}}));
+  expect_same_files_on_ranks(dir, "wave.toml", {"--model", "linear"}, {2, 3, 4});
+}
+
 // Bonds break, contacts are detected and relaid out, friction dissipates: the same bits.
 TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesTheSameCurve) {
   test::TempDir dir;
   write_block(dir);
-  ASSERT_NO_FATAL_FAILURE(write_crush_scene(dir));
+  write_crush_scene(dir);
   expect_same_files_on_ranks(dir, "crush.toml", {}, {2, 3, 4}, true);
   const auto j = nlohmann::json::parse(test::read_file(dir / "one.json"));
   EXPECT_GT(j["broken_bonds"].get<int>(), 100);
@@ -353,13 +385,11 @@ TEST(MwDemMpi, ACompressionToFailureOnTwoToFourRanksBreaksTheSameBondsAndWritesT
 TEST(MwDemMpi, DetectedContactsOfTwoPartitionsLaidOutFromTheRanksCountsWriteTheSameFiles) {
   test::TempDir dir;
   dem::write_packing_file(dir / "block.h5", dem::testing::crushing_block(13));
-  const auto unbonded = [](std::string scene) {
-    return scene.replace(scene.find("bond_factor = 1.1"), 17, "bond_factor = 1.0");
-  };
+  const auto unbonded = [](const std::string& scene) { return edited(scene, {{"bond_factor = 1.1", "bond_factor = 1.0"}}); };
   test::write_file(dir / "wave.toml", unbonded(wave_scene(dir / "block.h5")));
   expect_same_files_on_ranks(dir, "wave.toml", {"--model", "full", "--duration-ms", "0.004"}, {3});
   const auto wave = nlohmann::json::parse(test::read_file(dir / "one.json"));
-  ASSERT_NO_FATAL_FAILURE(write_crush_scene(dir));
+  write_crush_scene(dir);
   const std::string crush = unbonded(test::read_file(dir / "crush.toml"));
   test::write_file(dir / "crush.toml", crush.substr(0, crush.find("[test]")));  // before the peak: no test's analysis
   expect_same_files_on_ranks(dir, "crush.toml", {"--duration-ms", "0.08"}, {3});
@@ -376,7 +406,7 @@ TEST(MwDemMpi, DetectedContactsOfTwoPartitionsLaidOutFromTheRanksCountsWriteTheS
 TEST(MwDemMpi, ACheckpointOfTwoRanksIsTheOneProcessFileAndRestartsOnThreeToTheSameFiles) {
   test::TempDir dir;
   write_block(dir);
-  ASSERT_NO_FATAL_FAILURE(write_crush_scene(dir));
+  write_crush_scene(dir);
   std::string moment = wave_scene(dir / "block.h5");
   moment.replace(moment.find("bond_factor = 1.1"), 17, "bond_factor = 1.1\nlaw = \"cohesive_moment\"");
   test::write_file(dir / "moment.toml", moment);

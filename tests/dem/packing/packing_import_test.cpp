@@ -122,6 +122,38 @@ TEST(PackingImport, PackingFileRoundTripWithOrigin) {
   EXPECT_TRUE(read_packing_origin(dir / "plain.h5").empty());
 }
 
+// An MPI rank's share (docs/mpi.md): part r of N is rows [n r / N, n (r + 1) / N), read as a
+// hyperslab, the attributes whole; the parts in order are the file.
+TEST(PackingImport, APackingFileReadInPartsIsTheFileInOrder) {
+  test::TempDir dir;
+  Packing p;
+  for (int i = 0; i < 7; ++i) {
+    p.centres_m.push_back({1e-3 * i, 2e-3 * i + 1e-17, 3e-3});
+    p.radii_m.push_back(0.5e-3 + 1e-5 * i);
+    p.ids.push_back(100 + i);
+  }
+  p.container = box_container({0, 0, 0}, {10e-3, 20e-3, 5e-3});
+  p.particle_density_kg_m3 = 2400;
+  write_packing_file(dir / "p.h5", p);
+  const std::size_t expected_first[] = {0, 2, 4}, expected_size[] = {2, 2, 3};  // 7 rows in 3 parts
+  Packing joined;
+  for (int part = 0; part < 3; ++part) {
+    const Packing piece = read_packing_file(dir / "p.h5", part, 3);
+    EXPECT_TRUE(piece.is_piece());
+    EXPECT_EQ(piece.first_row, expected_first[part]);
+    EXPECT_EQ(piece.file_rows, 7u);
+    EXPECT_EQ(piece.size(), expected_size[part]);
+    EXPECT_EQ(piece.container.upper_m, p.container.upper_m);
+    EXPECT_EQ(piece.particle_density_kg_m3, 2400);
+    joined.centres_m.insert(joined.centres_m.end(), piece.centres_m.begin(), piece.centres_m.end());
+    joined.radii_m.insert(joined.radii_m.end(), piece.radii_m.begin(), piece.radii_m.end());
+    joined.ids.insert(joined.ids.end(), piece.ids.begin(), piece.ids.end());
+  }
+  expect_same_spheres(joined, p);
+  EXPECT_EQ(joined.ids, p.ids);
+  EXPECT_FALSE(read_packing_file(dir / "p.h5").is_piece());
+}
+
 TEST(PackingImport, BoundingBox) {
   const auto b = bounding_box(sample());
   EXPECT_DOUBLE_EQ(b.lower_m[0], 1e-3 - 0.9e-3);

@@ -91,13 +91,15 @@ struct Inputs {
   Packing packing;
 };
 
-Inputs read_inputs(RunCommandLine& v, app::Run& run) {
+// On several ranks each reads its part of the packing's rows (the setup sorts them: docs/mpi.md).
+Inputs read_inputs(RunCommandLine& v, app::Run& run, const Domain* domain = nullptr) {
   Scene scene = read_scene_file(v.scene_path);
   run.input(v.scene_path);
   if (!scene.experiment_file.empty()) run.input(scene.experiment_file);
   v.overrides.curves = !v.curves_path.empty();
   apply_overrides(scene, v.overrides);
-  Packing packing = read_packing_file(scene.packing_file);
+  Packing packing = domain && domain->size() > 1 ? read_packing_file(scene.packing_file, domain->rank(), domain->size())
+                                                 : read_packing_file(scene.packing_file);
   run.input(scene.packing_file);
   return {std::move(scene), std::move(packing)};
 }
@@ -202,7 +204,7 @@ void run_info_command(RunCommandLine v, app::Run& run, const std::string& thread
 }
 
 void run_run_command(RunCommandLine v, app::Run& run, const std::string& threads_reason, Domain* domain) {
-  Inputs in = read_inputs(v, run);
+  Inputs in = read_inputs(v, run, domain);
   const bool root = !domain || domain->rank() == 0;
   const bool intact_files = !v.intact_checkpoint_path.empty() || !v.restart_stronger_path.empty();
   if (v.static_solve && intact_files) throw InputError("--static steps nothing: --intact-checkpoint and --restart-stronger are for a stepped run");

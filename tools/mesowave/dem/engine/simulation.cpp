@@ -102,15 +102,13 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
     m.damping = 0;
   }
   Domain* domain = options_.domain && options_.domain->size() > 1 ? options_.domain : nullptr;
-  // On several ranks the setup reads the rank's part of the set (docs/mpi.md, stage 3 step 10):
-  // its own spheres and a layer that holds every bond's and step-0 overlap's other end.
-  SpherePart spheres = [&] {
-    SphereSet whole = make_sphere_set(packing, m.density_kg_m3);
-    packing = {};
-    if (!domain) return SpherePart(std::move(whole));
-    const double r_max = *std::max_element(whole.radius_m.begin(), whole.radius_m.end());
-    return SpherePart(whole, *domain, std::max(m.bond_factor, 1.0) * 2.0 * r_max);
-  }();
+  // On several ranks `packing` is the rows this rank read, and the setup reads the rank's part of
+  // the set (docs/mpi.md, stage 3 steps 10 and 11): its own spheres and a layer that holds every
+  // bond's and step-0 overlap's other end.
+  SpherePart spheres = domain ? SpherePart(packing, m.density_kg_m3, *domain, std::max(m.bond_factor, 1.0) * 2.0)
+                              : SpherePart(make_sphere_set(packing, m.density_kg_m3));
+  setup_rows_ = packing.size();
+  packing = {};
   BondNetwork bonds = make_bond_network(spheres, m.bond_factor);
   const Box box = bounding_box(spheres);
   const double r_min = spheres.radius_min(), r_mean = spheres.radius_mean();
@@ -218,6 +216,7 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
   for (const auto& a : actuators_) observed.insert(observed.end(), a->spheres().begin(), a->spheres().end());
   for (const auto& groups : sensor_groups)
     for (const auto& g : groups) observed.insert(observed.end(), g.begin(), g.end());
+  setup_spheres_ = spheres.spheres().size();
   model_ = contact_laws()
                .get(scene_.contact_law, "[material].law")
                .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line, domain});
@@ -254,6 +253,9 @@ RunReport Simulation::describe() const {
   r.degrees_of_freedom = model_->degrees_of_freedom();
   r.threads = model_->threads();
   r.distribution = model_->distribution();
+  if (!r.distribution.empty())
+    r.distribution += "; setup: " + std::to_string(setup_rows_) + " packing rows read, " + std::to_string(setup_spheres_) +
+                      " spheres of its part (own, layer, observed)";
   r.dt_s = scene_.dt_s;
   r.duration_s = double(steps_) * scene_.dt_s;
   r.steps = steps_;

@@ -99,6 +99,7 @@ class Simulation {
 public:
   /// InputError for anything the user can fix (scene, packing, dt above the limit...). The
   /// packing is dropped once the spheres are made from it (move it in: 24 B a sphere less at setup).
+  /// With options.domain of several ranks it is this rank's rows (read_packing_file's part).
   Simulation(const Scene& scene, Packing packing, SimulationOptions options = {});
   ~Simulation();
 
@@ -142,6 +143,7 @@ private:
   std::vector<std::unique_ptr<Sensor>> sensors_;
   std::int64_t steps_ = 0;
   double setup_s_ = 0;
+  std::size_t setup_rows_ = 0, setup_spheres_ = 0;  ///< several ranks: the packing rows this rank read, its part's spheres
   std::vector<std::string> notes_;
   std::vector<Placement> actuator_placements_, sensor_placements_;
   std::vector<std::int64_t> sample_interval_steps_;

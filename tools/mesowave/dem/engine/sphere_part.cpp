@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "mesowave/core/check.hpp"
+#include "mesowave/core/error.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
 #include "mesowave/dem/parallel/domain.hpp"
 
@@ -28,13 +30,6 @@ void set_record(SphereSet& s, std::size_t k, const double* r) {
   s.ids[k] = std::int64_t(r[7]);
 }
 
-SphereSet sized(std::size_t n) {
-  SphereSet s;
-  s.centre_m.resize(n), s.radius_m.resize(n), s.mass_kg.resize(n), s.inertia_kg_m2.resize(n);
-  s.packing_index.resize(n), s.ids.resize(n);
-  return s;
-}
-
 // Every rank's `mine` (lists of any length), in rank order, on every rank.
 std::vector<double> gather_lists(Domain& domain, const std::vector<double>& mine) {
   const int ranks = domain.size();
@@ -54,6 +49,78 @@ std::vector<double> gather_lists(Domain& domain, const std::vector<double>& mine
   return all;
 }
 
+// A packing row as it travels to its owner: centre (3), radius, packing index, id.
+constexpr std::size_t kRow = 6;
+
+void append_row(const Packing& rows, std::size_t i, std::vector<double>& out) {
+  const auto& c = rows.centres_m[i];
+  out.insert(out.end(), {c[0], c[1], c[2], rows.radii_m[i], double(rows.first_row + i), double(rows.ids[i])});
+}
+
+// A sphere's place in the Morton order: its code, then its packing index (morton_order's stable
+// sort keeps the packing's order among equal codes).
+__extension__ typedef unsigned __int128 Key;
+Key key_of(std::uint64_t code, std::size_t packing_index) { return (Key(code) << 32) | Key(packing_index); }
+
+// What each rank sends each: out[t] goes to rank t, the result's [r] came from rank r (the
+// lengths travel first, one double each way).
+std::vector<std::vector<double>> all_to_all(Domain& domain, std::vector<std::vector<double>> out) {
+  const int ranks = domain.size(), me = domain.rank();
+  std::vector<double> lengths_out(static_cast<std::size_t>(ranks)), lengths_in(static_cast<std::size_t>(ranks));
+  std::vector<Domain::Message> sends, receives;
+  for (int r = 0; r < ranks; ++r) {
+    if (r == me) continue;
+    lengths_out[std::size_t(r)] = double(out[std::size_t(r)].size());
+    sends.push_back({r, &lengths_out[std::size_t(r)], 1});
+    receives.push_back({r, &lengths_in[std::size_t(r)], 1});
+  }
+  domain.exchange(sends, receives);
+  std::vector<std::vector<double>> in(static_cast<std::size_t>(ranks));
+  in[std::size_t(me)] = std::move(out[std::size_t(me)]);
+  sends.clear(), receives.clear();
+  for (int r = 0; r < ranks; ++r) {
+    if (r == me) continue;
+    in[std::size_t(r)].resize(std::size_t(lengths_in[std::size_t(r)]));
+    if (!out[std::size_t(r)].empty()) sends.push_back({r, out[std::size_t(r)].data(), int(out[std::size_t(r)].size())});
+    if (!in[std::size_t(r)].empty()) receives.push_back({r, in[std::size_t(r)].data(), int(in[std::size_t(r)].size())});
+  }
+  domain.exchange(sends, receives);
+  return in;
+}
+
+// The key at whole position starts[r] of every rank r (first[0] = 0; past the last key, and
+// first[ranks], the largest key): for each, the least bound with more than starts[r] keys of all
+// ranks at most it, bisected with one gather of the ranks' counts a step (integers: exact).
+std::vector<Key> first_keys(Domain& domain, const std::vector<std::pair<Key, std::uint32_t>>& keys,
+                            const std::vector<std::size_t>& starts) {
+  const std::size_t ranks = starts.size() - 1, total = starts.back();
+  const Key none = ~Key(0);
+  std::vector<Key> lo(ranks + 1, 0), hi(ranks + 1, Key(1) << 95);  // codes have 63 bits, indices 32
+  for (std::size_t r = 1; r < ranks; ++r)
+    if (starts[r] >= total) lo[r] = hi[r] = none;
+  lo[ranks] = hi[ranks] = none;
+  const auto at_most = [&](Key bound) {
+    return double(std::upper_bound(keys.begin(), keys.end(), std::pair{bound, ~std::uint32_t(0)}) - keys.begin());
+  };
+  while (true) {
+    std::vector<double> counts(ranks, 0);
+    bool open = false;
+    for (std::size_t r = 1; r < ranks; ++r)
+      if (lo[r] < hi[r]) counts[r] = at_most(lo[r] + (hi[r] - lo[r]) / 2), open = true;
+    if (!open) break;  // every rank reads the same bounds: they stop together
+    const std::vector<double> all = gather_lists(domain, counts);
+    for (std::size_t r = 1; r < ranks; ++r) {
+      if (!(lo[r] < hi[r])) continue;
+      double count = 0;
+      for (std::size_t q = 0; q < ranks; ++q) count += all[q * ranks + r];
+      const Key mid = lo[r] + (hi[r] - lo[r]) / 2;
+      if (count > double(starts[r])) hi[r] = mid;
+      else lo[r] = mid + 1;
+    }
+  }
+  return lo;
+}
+
 }  // namespace
 
 SpherePart::SpherePart(SphereSet whole) : set_(std::move(whole)) {
@@ -61,29 +128,98 @@ SpherePart::SpherePart(SphereSet whole) : set_(std::move(whole)) {
   if (set_.ids.size() != own_) set_.ids.assign(own_, 0);  // sets made in tests carry none
 }
 
-SpherePart::SpherePart(const SphereSet& whole, Domain& domain, double reach_m) : total_(whole.size()), domain_(&domain) {
-  const std::vector<std::size_t> starts = SphereSystem::rank_starts(total_, domain.size());
-  begin_ = starts[std::size_t(domain.rank())];
-  own_ = starts[std::size_t(domain.rank()) + 1] - begin_;
+SpherePart::SpherePart(const Packing& rows, double density, Domain& domain, double reach_radii)
+    : total_(rows.file_rows), domain_(&domain) {
+  if (!rows.is_piece()) throw std::logic_error("SpherePart: the rows are not a part of a packing file (read_packing_file)");
+  if (total_ == 0) throw InputError("the packing has no spheres");
+  require_positive("particle density", density, "kg/m3");
+  for (std::size_t i = 0; i < rows.size(); ++i) check_sphere(rows.centres_m[i], rows.radii_m[i], rows.first_row + i);
+  const int ranks = domain.size(), me = domain.rank();
   const double inf = std::numeric_limits<double>::infinity();
-  Vec3 lo{inf, inf, inf}, hi{-inf, -inf, -inf};
-  for (std::size_t k = begin_; k < begin_ + own_; ++k)
-    for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], whole.centre_m[k][d]), hi[d] = std::max(hi[d], whole.centre_m[k][d]);
-  for (std::size_t k = 0; k < total_; ++k) {
-    if (owns(k)) continue;
+
+  // The Morton frame of every centre's box (a min and a max: exact in any order), each row's key.
+  std::array<double, 3> lo{inf, inf, inf}, hi{-inf, -inf, -inf};
+  for (const auto& c : rows.centres_m)
+    for (std::size_t d = 0; d < 3; ++d) lo[d] = std::min(lo[d], c[d]), hi[d] = std::max(hi[d], c[d]);
+  for (std::size_t d = 0; d < 3; ++d) lo[d] = -domain.max(-lo[d]), hi[d] = domain.max(hi[d]);
+  const MortonFrame frame = MortonFrame::of(lo, hi);
+  std::vector<std::pair<Key, std::uint32_t>> keys(rows.size());  // key, row
+  for (std::size_t i = 0; i < rows.size(); ++i) keys[i] = {key_of(frame.code(rows.centres_m[i]), rows.first_row + i), std::uint32_t(i)};
+  std::sort(keys.begin(), keys.end());
+
+  // Each rank's first key: the key at whole position starts[r], bisected on the count of keys up to a bound.
+  const std::vector<std::size_t> starts = SphereSystem::rank_starts(total_, ranks);
+  begin_ = starts[std::size_t(me)], own_ = starts[std::size_t(me) + 1] - begin_;
+  const std::vector<Key> first = first_keys(domain, keys, starts);
+  std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks));
+  for (const auto& [key, i] : keys) {
+    const auto r = std::size_t(std::upper_bound(first.begin() + 1, first.end(), key) - first.begin()) - 1;
+    append_row(rows, i, out[r]);
+  }
+  std::vector<double> arrived;
+  for (auto& piece : all_to_all(domain, std::move(out))) arrived.insert(arrived.end(), piece.begin(), piece.end());
+  if (arrived.size() != kRow * own_) throw std::logic_error("SpherePart: the Morton sort gave this rank another count than its range");
+  keys.resize(own_);
+  for (std::size_t k = 0; k < own_; ++k) {
+    const double* row = &arrived[kRow * k];
+    keys[k] = {key_of(frame.code({row[0], row[1], row[2]}), std::uint32_t(row[4])), std::uint32_t(k)};
+  }
+  std::sort(keys.begin(), keys.end());
+
+  // The layer: each rank's own spheres within reach of one of another rank's blocks (its own
+  // spheres in runs of kSphereBlock, compact pieces of space: their boxes of centres), from their
+  // owner. A sphere is tested against a rank's blocks only if it comes within reach of their box.
+  constexpr std::size_t block = SphereSystem::kSphereBlock;
+  std::vector<double> boxes(6 * ((own_ + block - 1) / block));
+  double r_max = 0;
+  for (std::size_t k = 0; k < own_; ++k) {
+    double* box = &boxes[6 * (k / block)];
+    const double* row = &arrived[kRow * keys[k].second];
+    if (k % block == 0)
+      for (std::size_t d = 0; d < 3; ++d) box[d] = inf, box[3 + d] = -inf;
+    for (std::size_t d = 0; d < 3; ++d) box[d] = std::min(box[d], row[d]), box[3 + d] = std::max(box[3 + d], row[d]);
+    r_max = std::max(r_max, row[3]);
+  }
+  const double reach = reach_radii * domain.max(r_max);
+  boxes = gather_lists(domain, boxes);  // every rank's, in rank order (its blocks from starts[r] / block)
+  const auto near = [&](const double* x, const double* box) {
     double gap2 = 0;
-    for (int d = 0; d < 3; ++d) {
-      const double gap = std::max({0.0, lo[d] - whole.centre_m[k][d], whole.centre_m[k][d] - hi[d]});
+    for (std::size_t d = 0; d < 3; ++d) {
+      const double gap = std::max({0.0, box[d] - x[d], x[d] - box[3 + d]});
       gap2 += gap * gap;
     }
-    if (gap2 <= reach_m * reach_m) layer_index_.push_back(std::uint32_t(k));
+    return gap2 <= reach * reach;
+  };
+  out.assign(static_cast<std::size_t>(ranks), {});
+  for (int t = 0; t < ranks; ++t) {
+    const std::size_t b0 = starts[std::size_t(t)] / block, b1 = (starts[std::size_t(t) + 1] + block - 1) / block;
+    if (t == me || b0 == b1) continue;
+    double all[6];  // the box of rank t's blocks
+    for (std::size_t d = 0; d < 3; ++d) all[d] = inf, all[3 + d] = -inf;
+    for (std::size_t b = b0; b < b1; ++b)
+      for (std::size_t d = 0; d < 3; ++d) all[d] = std::min(all[d], boxes[6 * b + d]), all[3 + d] = std::max(all[3 + d], boxes[6 * b + 3 + d]);
+    for (std::size_t k = 0; k < own_; ++k) {
+      const double* row = &arrived[kRow * keys[k].second];
+      if (!near(row, all)) continue;
+      bool any = false;
+      for (std::size_t b = b0; b < b1 && !any; ++b) any = near(row, &boxes[6 * b]);
+      if (!any) continue;
+      out[std::size_t(t)].insert(out[std::size_t(t)].end(), row, row + kRow);
+      out[std::size_t(t)].push_back(double(begin_ + k));
+    }
   }
-  set_ = sized(own_ + layer_index_.size());
-  std::vector<double> record;
-  for (std::size_t l = 0; l < set_.size(); ++l) {
-    record.clear();
-    append_record(whole, whole_index(l), record);
-    set_record(set_, l, record.data());
+  std::vector<double> layer;  // ranks in order, each ascending: ascending whole index
+  for (auto& piece : all_to_all(domain, std::move(out))) layer.insert(layer.end(), piece.begin(), piece.end());
+  const std::size_t layers = layer.size() / (kRow + 1);
+  set_ = sphere_set_of_size(own_ + layers, true);
+  const auto set_row = [&](std::size_t l, const double* row) {
+    set_sphere(set_, l, {row[0], row[1], row[2]}, row[3], density, std::uint32_t(row[4]), std::int64_t(row[5]));
+  };
+  for (std::size_t k = 0; k < own_; ++k) set_row(k, &arrived[kRow * keys[k].second]);
+  layer_index_.resize(layers);
+  for (std::size_t i = 0; i < layers; ++i) {
+    set_row(own_ + i, &layer[(kRow + 1) * i]);
+    layer_index_[i] = std::uint32_t(layer[(kRow + 1) * i + kRow]);
   }
 }
 
@@ -179,7 +315,7 @@ void SpherePart::fetch(std::vector<std::size_t> ids) {
   if (arrived.empty()) return;
   std::vector<std::uint32_t> layer(layer_index_.size() + arrived.size());
   std::merge(layer_index_.begin(), layer_index_.end(), arrived.begin(), arrived.end(), layer.begin());
-  SphereSet next = sized(own_ + layer.size());
+  SphereSet next = sphere_set_of_size(own_ + layer.size(), true);
   std::vector<double> record;
   for (std::size_t l = 0; l < next.size(); ++l) {
     const std::size_t k = l < own_ ? begin_ + l : layer[l - own_];

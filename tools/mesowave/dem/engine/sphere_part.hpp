@@ -1,11 +1,14 @@
 #pragma once
 // A rank's part of the sphere set: what the setup reads before the model exists (docs/mpi.md,
-// stage 3 step 10). The part holds the rank's own spheres - whole indices begin() ..
+// stage 3 steps 10 and 11). The part holds the rank's own spheres - whole indices begin() ..
 // begin() + own_count() - 1, its range of the Morton order (SphereSystem::rank_starts) - and a
-// layer: every other sphere whose centre lies within a reach of its own spheres' bounding box,
-// enough for every bond and step-0 overlap with an end of its own (the reach is C_f (2 r_max) or
-// 2 r_max, the larger). Spheres fetched later, the actuators' and sensors', join the layer. In
-// one process the part is the whole set (an implicit conversion) and no call communicates.
+// layer: every other sphere whose centre lies within a reach of the box of one of its own blocks
+// (runs of SphereSystem::kSphereBlock spheres in Morton order, compact pieces of space), enough
+// for every bond and step-0 overlap with an end of its own (the reach is C_f (2 r_max) or
+// 2 r_max, the larger). Spheres fetched later, the actuators' and sensors', join the layer. A
+// rank makes its part from the rows of the packing file it read, and no rank ever holds every
+// sphere. In one process the part is the whole set (an implicit conversion) and no call
+// communicates.
 //
 // What reads every sphere - the bounding box, a radius statistic, a selection - reads the own
 // spheres and combines the ranks' results through the domain so that every rank gets one
@@ -18,6 +21,7 @@
 #include <vector>
 
 #include "mesowave/dem/engine/sphere_set.hpp"
+#include "mesowave/dem/packing/packing.hpp"
 #include "mesowave/dem/engine/sphere_statics.hpp"
 
 namespace mesowave::dem {
@@ -28,9 +32,14 @@ class SpherePart final : public SphereStatics {
 public:
   /// One process's part: the whole set.
   SpherePart(SphereSet whole);  // NOLINT(google-explicit-constructor): a whole set is one process's part
-  /// Rank domain.rank()'s part of `whole` (domain.size() > 1): its own spheres and every other
-  /// sphere whose centre lies within `reach_m` of their centres' bounding box.
-  SpherePart(const SphereSet& whole, Domain& domain, double reach_m);
+  /// Rank domain.rank()'s part (domain.size() > 1) of a packing file, from the rows it read
+  /// (`rows`, read_packing_file's part of several), with density `density_kg_m3`. The spheres
+  /// are sorted across the ranks along the Morton curve of every centre (MortonFrame over the box
+  /// of all, ties by packing index: make_sphere_set's numbering), each rank takes its range
+  /// (SphereSystem::rank_starts), and the layer comes from the owners: every other sphere whose
+  /// centre lies within reach_radii x r_max (the largest radius) of the box of an own block.
+  /// InputError as make_sphere_set for the rows this rank read.
+  SpherePart(const Packing& rows, double density_kg_m3, Domain& domain, double reach_radii);
 
   Domain* domain() const { return domain_; }
   std::size_t total() const { return total_; }

@@ -21,7 +21,26 @@ struct SphereSet {
   std::size_t size() const { return radius_m.size(); }
 };
 
-/// Order of the centres along a Morton curve (21 bits per axis over their
+/// n spheres, every value zero; with_ids: ids too (the system's held sets keep none).
+SphereSet sphere_set_of_size(std::size_t n, bool with_ids);
+/// Sphere k of `s` from a packing's row: its centre, radius, packing index and id, and the mass
+/// and inertia of a solid sphere of density `density_kg_m3`.
+void set_sphere(SphereSet& s, std::size_t k, const std::array<double, 3>& centre_m, double radius_m,
+                double density_kg_m3, std::uint32_t packing_index, std::int64_t id);
+/// InputError naming the sphere (`packing_index`) for a non-positive radius or a non-finite centre.
+void check_sphere(const std::array<double, 3>& centre_m, double radius_m, std::size_t packing_index);
+
+/// The Morton (Z-order) code of a centre: 21 bits per axis over a bounding box of centres,
+/// one scale for all axes (the cells stay cubic, so a rod along x still orders by x first).
+struct MortonFrame {
+  std::array<double, 3> lower;
+  double scale;
+  /// The frame of the box [lower, upper] of every centre.
+  static MortonFrame of(const std::array<double, 3>& lower, const std::array<double, 3>& upper);
+  std::uint64_t code(const std::array<double, 3>& x) const;
+};
+
+/// Order of the centres along a Morton curve (MortonFrame over their
 /// bounding box); ties keep the input order, so the result is deterministic.
 std::vector<std::uint32_t> morton_order(std::span<const std::array<double, 3>> centres);
 

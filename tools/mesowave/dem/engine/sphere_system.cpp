@@ -70,12 +70,6 @@ void copy_sphere(const SphereSet& from, std::size_t i, SphereSet& to, std::size_
   to.packing_index[j] = from.packing_index[i];
 }
 
-SphereSet sphere_set_of_size(std::size_t m) {
-  SphereSet s;
-  s.centre_m.resize(m), s.radius_m.resize(m), s.mass_kg.resize(m), s.inertia_kg_m2.resize(m), s.packing_index.resize(m);
-  return s;
-}
-
 }  // namespace
 
 SphereSystem::SphereSystem(SpherePart spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
@@ -123,7 +117,7 @@ void SphereSystem::hold(std::vector<std::uint32_t> ids, const SphereSet& arrived
     if (o < held_ids_.size() && held_ids_[o] == ids[l]) from[l] = o;
   }
   if (domain_) {  // the statics first: a new sphere's step-0 position is its centre
-    SphereSet next = sphere_set_of_size(m);
+    SphereSet next = sphere_set_of_size(m, false);
     for (std::size_t l = 0; l < m; ++l) {
       if (from[l] != kNotHeld) {
         copy_sphere(spheres_, from[l], next, l);

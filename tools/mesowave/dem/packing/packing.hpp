@@ -24,8 +24,12 @@ struct Packing {
   std::vector<std::int64_t> ids;
   Container container;
   double particle_density_kg_m3 = 0;  ///< 0 if not chosen yet
+  /// A piece of a packing file (read_packing_file's part of several): its rows
+  /// [first_row, first_row + size()) of file_rows. A whole packing: 0 and 0.
+  std::size_t first_row = 0, file_rows = 0;
 
   std::size_t size() const { return radii_m.size(); }
+  bool is_piece() const { return file_rows != 0; }
 };
 
 }  // namespace mesowave::dem

@@ -40,22 +40,31 @@ void write_packing_file(const std::filesystem::path& path, const Packing& p) {
   h5::set_attribute(file.id(), "particle_density_kg_m3", p.particle_density_kg_m3);
 }
 
-Packing read_packing_file(const std::filesystem::path& path) {
+namespace {
+
+// Part `part` of `parts` of the file's spheres (0 of 1: all), with its attributes.
+Packing read_rows(const std::filesystem::path& path, int part, int parts) {
   auto file = h5::open_file(path);
   return naming_file(path, [&] {
     if (!h5::has_attribute(file.id(), "format") || h5::string_attribute(file.id(), "format") != "mesowave-packing")
       throw InputError(path.string() + " is not a mesowave packing file (no format = mesowave-packing)");
     Packing p;
-    std::vector<hsize_t> shape;
-    const auto centres = h5::read_doubles(file.id(), "centres_m", &shape);
+    std::vector<hsize_t> shape, radii_shape, ids_shape;  // the shapes first (no rows read)
+    (void)h5::read_double_rows(file.id(), "centres_m", 0, 0, &shape);
+    (void)h5::read_double_rows(file.id(), "radii_m", 0, 0, &radii_shape);
+    (void)h5::read_int64_rows(file.id(), "ids", 0, 0, &ids_shape);
     if (shape.size() != 2 || shape[1] != 3) throw InputError(path.string() + ": centres_m must be an [n, 3] array");
-    p.radii_m = h5::read_doubles(file.id(), "radii_m");
-    p.ids = h5::read_int64s(file.id(), "ids");
-    if (p.radii_m.size() != shape[0] || p.ids.size() != shape[0])
+    if (radii_shape[0] != shape[0] || ids_shape[0] != shape[0])
       throw InputError(path.string() + ": centres_m, radii_m and ids differ in length");
+    const auto n = std::size_t(shape[0]);
+    const std::size_t first = n * std::size_t(part) / std::size_t(parts), end = n * std::size_t(part + 1) / std::size_t(parts);
+    const auto centres = h5::read_double_rows(file.id(), "centres_m", first, end - first);
+    p.radii_m = h5::read_double_rows(file.id(), "radii_m", first, end - first);
+    p.ids = h5::read_int64_rows(file.id(), "ids", first, end - first);
     p.centres_m.resize(p.radii_m.size());
     for (std::size_t i = 0; i < p.radii_m.size(); ++i)
       p.centres_m[i] = {centres[3 * i], centres[3 * i + 1], centres[3 * i + 2]};
+    if (parts > 1) p.first_row = first, p.file_rows = n;
     p.container.shape = h5::string_attribute(file.id(), "container_shape");
     const auto lower = h5::doubles_attribute(file.id(), "container_lower_m");
     const auto upper = h5::doubles_attribute(file.id(), "container_upper_m");
@@ -67,6 +76,15 @@ Packing read_packing_file(const std::filesystem::path& path) {
     p.particle_density_kg_m3 = h5::double_attribute(file.id(), "particle_density_kg_m3");
     return p;
   });
+}
+
+}  // namespace
+
+Packing read_packing_file(const std::filesystem::path& path) { return read_rows(path, 0, 1); }
+
+Packing read_packing_file(const std::filesystem::path& path, int part, int parts) {
+  if (parts < 1 || part < 0 || part >= parts) throw std::logic_error("read_packing_file: no part " + std::to_string(part) + " of " + std::to_string(parts));
+  return read_rows(path, part, parts);
 }
 
 // ---- /origin: how the packing was made (additive, format_version 1) --------

@@ -39,5 +39,8 @@ void write_packing_file(const std::filesystem::path& path, const Packing& packin
 PackingOrigin read_packing_origin(const std::filesystem::path& path);
 /// InputError for a missing file, another kind of file, or inconsistent sizes.
 Packing read_packing_file(const std::filesystem::path& path);
+/// Part `part` of `parts` of the file's spheres: rows [n part / parts, n (part + 1) / parts),
+/// read as hyperslabs (an MPI rank's share: docs/mpi.md), with the container and density.
+Packing read_packing_file(const std::filesystem::path& path, int part, int parts);
 
 }  // namespace mesowave::dem
