@@ -90,7 +90,7 @@ std::vector<std::vector<double>> all_to_all(Domain& domain, std::vector<std::vec
 
 // The key at whole position starts[r] of every rank r (first[0] = 0; past the last key, and
 // first[ranks], the largest key): for each, the least bound with more than starts[r] keys of all
-// ranks at most it, bisected with one gather of the ranks' counts a step (integers: exact).
+// ranks at most it, bisected with one sum of the ranks' counts a step (integers: exact).
 std::vector<Key> first_keys(Domain& domain, const std::vector<std::pair<Key, std::uint32_t>>& keys,
                             const std::vector<std::size_t>& starts) {
   const std::size_t ranks = starts.size() - 1, total = starts.back();
@@ -100,21 +100,19 @@ std::vector<Key> first_keys(Domain& domain, const std::vector<std::pair<Key, std
     if (starts[r] >= total) lo[r] = hi[r] = none;
   lo[ranks] = hi[ranks] = none;
   const auto at_most = [&](Key bound) {
-    return double(std::upper_bound(keys.begin(), keys.end(), std::pair{bound, ~std::uint32_t(0)}) - keys.begin());
+    return std::uint64_t(std::upper_bound(keys.begin(), keys.end(), std::pair{bound, ~std::uint32_t(0)}) - keys.begin());
   };
   while (true) {
-    std::vector<double> counts(ranks, 0);
+    std::vector<std::uint64_t> counts(ranks, 0);
     bool open = false;
     for (std::size_t r = 1; r < ranks; ++r)
       if (lo[r] < hi[r]) counts[r] = at_most(lo[r] + (hi[r] - lo[r]) / 2), open = true;
     if (!open) break;  // every rank reads the same bounds: they stop together
-    const std::vector<double> all = gather_lists(domain, counts);
+    domain.sum_each(counts);
     for (std::size_t r = 1; r < ranks; ++r) {
       if (!(lo[r] < hi[r])) continue;
-      double count = 0;
-      for (std::size_t q = 0; q < ranks; ++q) count += all[q * ranks + r];
       const Key mid = lo[r] + (hi[r] - lo[r]) / 2;
-      if (count > double(starts[r])) hi[r] = mid;
+      if (counts[r] > starts[r]) hi[r] = mid;
       else lo[r] = mid + 1;
     }
   }

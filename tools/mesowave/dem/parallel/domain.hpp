@@ -46,6 +46,8 @@ public:
   virtual double max(double value) = 0;
   /// The sum of every rank's count (integers: exact in any order).
   virtual std::uint64_t sum(std::uint64_t count) = 0;
+  /// In place, each count the sum of every rank's at its place (integers: exact in any order).
+  virtual void sum_each(std::vector<std::uint64_t>& counts) = 0;
 };
 
 /// A hash of a pair of spheres (first, second), for the ranks' check that they agree on the pairs

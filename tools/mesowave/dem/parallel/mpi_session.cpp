@@ -60,6 +60,10 @@ public:
     MPI_Allreduce(&in, &out, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
     return out;
   }
+  void sum_each(std::vector<std::uint64_t>& counts) override {
+    static_assert(sizeof(std::uint64_t) == sizeof(unsigned long long));
+    MPI_Allreduce(MPI_IN_PLACE, counts.data(), int(counts.size()), MPI_UNSIGNED_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  }
 
 private:
   static constexpr int kGhostTag = 18;
