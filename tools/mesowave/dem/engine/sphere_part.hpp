@@ -6,9 +6,9 @@
 // (runs of SphereSystem::kSphereBlock spheres in Morton order, compact pieces of space), enough
 // for every bond and step-0 overlap with an end of its own (the reach is C_f (2 r_max) or
 // 2 r_max, the larger). Spheres fetched later, the actuators' and sensors', join the layer. A
-// rank makes its part from the rows of the packing file it read, and no rank ever holds every
-// sphere. In one process the part is the whole set (an implicit conversion) and no call
-// communicates.
+// rank makes its part from the rows of the packing file it read: no rank reads the packing or
+// makes the set whole (a small model's part may still reach every sphere). In one process the
+// part is the whole set (an implicit conversion) and no call communicates.
 //
 // What reads every sphere - the bounding box, a radius statistic, a selection - reads the own
 // spheres and combines the ranks' results through the domain so that every rank gets one
