@@ -53,22 +53,26 @@ std::vector<hsize_t> dims_for(std::size_t size, std::size_t cols) {
   return {hsize_t(size / cols), hsize_t(cols)};
 }
 
-template <typename T>
-void write_dataset(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, hid_t mem_type,
-                   hid_t file_type, bool compress) {
-  const auto dims = dims_for(data.size(), cols);
+Handle create_dataset(hid_t parent, const std::string& name, const std::vector<hsize_t>& dims, std::size_t cols,
+                      hid_t file_type, bool compress) {
   Handle space(check(H5Screate_simple(int(dims.size()), dims.data(), nullptr), "create dataspace for " + name));
   Handle props(check(H5Pcreate(H5P_DATASET_CREATE), "create dataset properties"));
   H5Pset_obj_track_times(props.id(), false);  // same inputs, same bytes: no modification times
-  if (compress && data.size() >= 4096) {
+  if (compress && dims[0] * (cols ? cols : 1) >= 4096) {
     std::vector<hsize_t> chunk = dims;
     chunk[0] = std::min<hsize_t>(dims[0], std::max<hsize_t>(1, 65536 / (cols ? cols : 1)));
     check_status(H5Pset_chunk(props.id(), int(chunk.size()), chunk.data()), "chunk " + name);
     check_status(H5Pset_shuffle(props.id()), "shuffle " + name);
     check_status(H5Pset_deflate(props.id(), 4), "compress " + name);
   }
-  Handle set(check(H5Dcreate2(parent, name.c_str(), file_type, space.id(), H5P_DEFAULT, props.id(), H5P_DEFAULT),
-                   "create dataset " + name));
+  return Handle(check(H5Dcreate2(parent, name.c_str(), file_type, space.id(), H5P_DEFAULT, props.id(), H5P_DEFAULT),
+                      "create dataset " + name));
+}
+
+template <typename T>
+void write_dataset(hid_t parent, const std::string& name, const std::vector<T>& data, std::size_t cols, hid_t mem_type,
+                   hid_t file_type, bool compress) {
+  const Handle set = create_dataset(parent, name, dims_for(data.size(), cols), cols, file_type, compress);
   if (!data.empty())
     check_status(H5Dwrite(set.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write dataset " + name);
 }
@@ -205,6 +209,31 @@ void write_doubles(hid_t parent, const std::string& name, const std::vector<doub
 
 void write_int64s(hid_t parent, const std::string& name, const std::vector<std::int64_t>& data, std::size_t cols) {
   write_dataset(parent, name, data, cols, H5T_NATIVE_INT64, H5T_STD_I64LE, false);
+}
+
+RowWriter::RowWriter(hid_t parent, const std::string& name, std::size_t rows, std::size_t cols, bool int64)
+    : set_(create_dataset(parent, name, dims_for(rows * (cols ? cols : 1), cols), cols, int64 ? H5T_STD_I64LE : H5T_IEEE_F64LE,
+                          false)),
+      name_(name), rows_(rows), cols_(cols) {}
+
+template <typename T>
+void RowWriter::write(std::size_t first, const std::vector<T>& values, hid_t mem_type) {
+  const std::size_t width = cols_ ? cols_ : 1, count = values.size() / width;
+  if (values.size() % width != 0 || first > rows_ || count > rows_ - first)
+    throw std::logic_error("RowWriter: rows " + std::to_string(first) + " + " + std::to_string(count) + " of " + name_ +
+                           " (" + std::to_string(rows_) + " rows)");
+  if (count == 0) return;
+  const int rank = cols_ ? 2 : 1;
+  const hsize_t start[2] = {hsize_t(first), 0}, size[2] = {hsize_t(count), hsize_t(width)};
+  Handle space(check(H5Dget_space(set_.id()), "get dataspace of " + name_));
+  check_status(H5Sselect_hyperslab(space.id(), H5S_SELECT_SET, start, nullptr, size, nullptr), "select rows of " + name_);
+  Handle memory(check(H5Screate_simple(rank, size, nullptr), "create a memory space for " + name_));
+  check_status(H5Dwrite(set_.id(), mem_type, memory.id(), space.id(), H5P_DEFAULT, values.data()), "write rows of " + name_);
+}
+
+void RowWriter::write_rows(std::size_t first, const std::vector<double>& values) { write(first, values, H5T_NATIVE_DOUBLE); }
+void RowWriter::write_rows(std::size_t first, const std::vector<std::int64_t>& values) {
+  write(first, values, H5T_NATIVE_INT64);
 }
 
 template <typename T>

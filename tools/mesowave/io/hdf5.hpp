@@ -46,6 +46,24 @@ std::vector<std::string> list_links(hid_t group);
 void write_doubles(hid_t parent, const std::string& name, const std::vector<double>& data, std::size_t cols = 0,
                    bool compress = false);
 void write_int64s(hid_t parent, const std::string& name, const std::vector<std::int64_t>& data, std::size_t cols = 0);
+/// A dataset of `rows` rows (`cols` = 0: 1-D) of float64 or int64, uncompressed, written a piece at
+/// a time (write_rows), ascending or not: once every row is written it holds what write_doubles or
+/// write_int64s would have written whole (what is too large to hold whole: a distributed
+/// checkpoint's rank 0 writes each piece as it arrives from the ranks).
+class RowWriter {
+public:
+  RowWriter(hid_t parent, const std::string& name, std::size_t rows, std::size_t cols, bool int64);
+  /// Rows [first, first + values.size() / max(cols, 1)).
+  void write_rows(std::size_t first, const std::vector<double>& values);
+  void write_rows(std::size_t first, const std::vector<std::int64_t>& values);
+
+private:
+  template <typename T>
+  void write(std::size_t first, const std::vector<T>& values, hid_t mem_type);
+  Handle set_;
+  std::string name_;
+  std::size_t rows_, cols_;
+};
 std::vector<double> read_doubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape = nullptr);
 std::vector<std::int64_t> read_int64s(hid_t parent, const std::string& name, std::vector<hsize_t>* shape = nullptr);
 /// Rows [first, first + count) of a 1-D or 2-D dataset (row-major, one hyperslab), and `shape`

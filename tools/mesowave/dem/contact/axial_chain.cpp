@@ -11,11 +11,17 @@ inline double damped(double a, double v, double dt, double alpha) {
   return a * (1.0 - alpha * double((p > 0) - (p < 0)));
 }
 
+// The chain is one process's model: a rank's part is refused before anything is built.
+SphereSet one_process_set(SpherePart&& spheres) {
+  if (spheres.domain()) refuse_ranks("chain");
+  return std::move(spheres).take_own();
+}
+
 }  // namespace
 
 AxialChain::AxialChain(SpherePart spheres, const BondNetwork& bonds, const CohesiveFrictionalMaterial& material,
                        const Vec3& axis)
-    : spheres_(spheres.domain() ? (refuse_ranks("chain"), SphereSet{}) : std::move(spheres).take_own()), material_(material), axis_((1.0 / norm(axis)) * axis),
+    : spheres_(one_process_set(std::move(spheres))), material_(material), axis_((1.0 / norm(axis)) * axis),
       first_(bonds.first), second_(bonds.second) {
   const std::size_t n = spheres_.size();
   kn_.resize(first_.size());

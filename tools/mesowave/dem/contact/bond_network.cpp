@@ -9,7 +9,6 @@
 #include "mesowave/core/error.hpp"
 #include "mesowave/dem/engine/neighbour_search.hpp"
 #include "mesowave/dem/engine/sphere_part.hpp"
-#include "mesowave/dem/engine/sphere_system.hpp"
 #include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
@@ -53,7 +52,6 @@ BondNetwork bonds_of(const SpherePart& part, const std::vector<SpherePair>& pair
     net.overlap0_m.push_back(g.overlap_m);
     net.normal0.push_back(g.normal);
   }
-  net.incidence = make_incidence(part.total(), net.first, net.second);
   return net;
 }
 
@@ -84,17 +82,12 @@ BondNetwork make_bond_network(const SpherePart& part, double bond_factor) {
   if (!part.domain()) return net;
   Domain& domain = *part.domain();
   const int ranks = domain.size(), me = domain.rank();
-  const std::vector<std::size_t> starts = SphereSystem::rank_starts(part.total(), ranks);
   const std::size_t begin = part.begin();
   net.own_begin = begin, net.own_end = begin + part.own_count();
   // The bonds whose first sphere is a lower rank's come first (sorted by first sphere).
   const std::size_t cross = std::size_t(std::lower_bound(net.first.begin(), net.first.end(), begin) - net.first.begin());
   // The whole network numbers the bonds by first sphere: rank r's own-first bonds after every lower rank's.
-  std::vector<double> counts(std::size_t(ranks), 0);
-  std::vector<int> ones(static_cast<std::size_t>(ranks), 1), displs(static_cast<std::size_t>(ranks));
-  for (int r = 0; r < ranks; ++r) displs[std::size_t(r)] = r;
-  const double own_first = double(net.size() - cross);
-  domain.gather_all(&own_first, 1, counts.data(), ones, displs);
+  const std::vector<double> counts = gathered_each(domain, double(net.size() - cross));
   std::size_t offset = 0;
   for (int r = 0; r < ranks; ++r) {
     if (r < me) offset += std::size_t(counts[std::size_t(r)]);
@@ -107,7 +100,7 @@ BondNetwork make_bond_network(const SpherePart& part, double bond_factor) {
   // A bond across two ranks is numbered by its first sphere's rank, which sends the number (with
   // the pair, checked) to the second sphere's. Both found the bond from the same doubles; the
   // ranks check that they agree (pair_hash) before the exchange.
-  const auto owner = [&](std::size_t k) { return int(std::upper_bound(starts.begin(), starts.end(), k) - starts.begin()) - 1; };
+  const auto owner = [&](std::size_t k) { return part.owner(k); };
   const auto hash = [&](std::size_t h) { return pair_hash(net.first[h], net.second[h]); };
   std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks)), in(static_cast<std::size_t>(ranks));
   std::uint64_t unmatched = 0;

@@ -4,9 +4,9 @@
 // with |x_j - x_i| <= C_f (r_i + r_j). Each keeps the overlap u_0 it had then
 // (negative for a gap), so that F_n = K_n (u - u_0) starts at zero (Eq. 1).
 //
-// Bonds are a flat array sorted by (first, second); `incidence` lists each
-// sphere's bonds in ascending bond order, so summing a sphere's bond forces
-// in that order gives the same bits for any thread count.
+// Bonds are a flat array sorted by (first, second). An Incidence lists each
+// sphere's contacts in ascending order, so summing a sphere's forces in that
+// order gives the same bits for any thread count (the engine's cross records).
 //
 // On several MPI ranks (docs/mpi.md) each rank makes only its part: the bonds with an end among
 // its own spheres, found by a search over its part of the sphere set (SpherePart: those and the
@@ -21,7 +21,7 @@
 
 namespace mesowave::dem {
 
-/// Bond b touches sphere k as its first (side 0) or second (side 1) sphere.
+/// Contact b touches sphere k as its first (side 0) or second (side 1) sphere.
 struct Incidence {
   std::vector<std::uint32_t> offset;  ///< size n + 1
   std::vector<std::uint32_t> entry;   ///< (bond << 1) | side
@@ -52,7 +52,6 @@ struct BondNetwork {
   std::vector<std::uint32_t> first, second;  ///< first < second
   std::vector<double> overlap0_m;           ///< u_0 = r_i + r_j - |x_j - x_i| at step 0
   std::vector<Vec3> normal0;                 ///< unit vector first -> second at step 0
-  Incidence incidence;
   /// A rank's part (make_bond_network with a Domain): every bond with an end among the spheres
   /// [own_begin, own_end), each with its index in the whole network (`ids`, ascending), and the
   /// whole network's size. Whole (one process): `ids` empty, every sphere in the range.

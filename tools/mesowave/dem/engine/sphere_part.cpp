@@ -8,53 +8,29 @@
 
 #include "mesowave/core/check.hpp"
 #include "mesowave/core/error.hpp"
+#include "mesowave/dem/engine/centre_box.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
 #include "mesowave/dem/parallel/domain.hpp"
 
 namespace mesowave::dem {
 namespace {
 
-// What travels of a sphere: centre (3), radius, mass, inertia, packing index, packing file id.
-constexpr std::size_t kRecord = 8;
-
-void append_record(const SphereSet& s, std::size_t k, std::vector<double>& out) {
-  const Vec3& c = s.centre_m[k];
-  out.insert(out.end(), {c.x, c.y, c.z, s.radius_m[k], s.mass_kg[k], s.inertia_kg_m2[k], double(s.packing_index[k]),
-                         double(s.ids[k])});  // indices and ids exact below 2^53
-}
-
-void set_record(SphereSet& s, std::size_t k, const double* r) {
-  s.centre_m[k] = {r[0], r[1], r[2]};
-  s.radius_m[k] = r[3], s.mass_kg[k] = r[4], s.inertia_kg_m2[k] = r[5];
-  s.packing_index[k] = std::uint32_t(r[6]);
-  s.ids[k] = std::int64_t(r[7]);
-}
-
-// Every rank's `mine` (lists of any length), in rank order, on every rank.
-std::vector<double> gather_lists(Domain& domain, const std::vector<double>& mine) {
-  const int ranks = domain.size();
-  std::vector<int> ones(static_cast<std::size_t>(ranks), 1), at(static_cast<std::size_t>(ranks));
-  for (int r = 0; r < ranks; ++r) at[std::size_t(r)] = r;
-  const double length = double(mine.size());
-  std::vector<double> lengths(static_cast<std::size_t>(ranks));
-  domain.gather_all(&length, 1, lengths.data(), ones, at);
-  std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
-  std::size_t total = 0;
-  for (int r = 0; r < ranks; ++r) {
-    counts[std::size_t(r)] = int(lengths[std::size_t(r)]), displs[std::size_t(r)] = int(total);
-    total += std::size_t(lengths[std::size_t(r)]);
-  }
-  std::vector<double> all(total);
-  domain.gather_all(mine.data(), int(mine.size()), all.data(), counts, displs);
-  return all;
-}
-
-// A packing row as it travels to its owner: centre (3), radius, packing index, id.
+// A sphere as it travels between ranks: centre (3), radius, packing index, id (exact below
+// 2^53); the receiver makes its mass and inertia (set_row), as make_sphere_set does.
 constexpr std::size_t kRow = 6;
 
 void append_row(const Packing& rows, std::size_t i, std::vector<double>& out) {
   const auto& c = rows.centres_m[i];
   out.insert(out.end(), {c[0], c[1], c[2], rows.radii_m[i], double(rows.first_row + i), double(rows.ids[i])});
+}
+
+void append_row(const SphereSet& s, std::size_t k, std::vector<double>& out) {
+  const Vec3& c = s.centre_m[k];
+  out.insert(out.end(), {c.x, c.y, c.z, s.radius_m[k], double(s.packing_index[k]), double(s.ids[k])});
+}
+
+void set_row(SphereSet& s, std::size_t k, const double* row, double density) {
+  set_sphere(s, k, {row[0], row[1], row[2]}, row[3], density, std::uint32_t(row[4]), std::int64_t(row[5]));
 }
 
 // A sphere's place in the Morton order: its code, then its packing index (morton_order's stable
@@ -127,11 +103,20 @@ SpherePart::SpherePart(SphereSet whole) : set_(std::move(whole)) {
 }
 
 SpherePart::SpherePart(const Packing& rows, double density, Domain& domain, double reach_radii)
-    : total_(rows.file_rows), domain_(&domain) {
+    : total_(rows.file_rows), density_(density), domain_(&domain) {
   if (!rows.is_piece()) throw std::logic_error("SpherePart: the rows are not a part of a packing file (read_packing_file)");
   if (total_ == 0) throw InputError("the packing has no spheres");
   require_positive("particle density", density, "kg/m3");
-  for (std::size_t i = 0; i < rows.size(); ++i) check_sphere(rows.centres_m[i], rows.radii_m[i], rows.first_row + i);
+  // The file's first bad row names the error on every rank, as one process's check does: each
+  // rank's first (centre, radius, row), gathered in row order.
+  std::vector<double> bad;
+  for (std::size_t i = 0; i < rows.size() && bad.empty(); ++i)
+    if (!is_sound_sphere(rows.centres_m[i], rows.radii_m[i])) {
+      const auto& c = rows.centres_m[i];
+      bad = {c[0], c[1], c[2], rows.radii_m[i], double(rows.first_row + i)};
+    }
+  bad = gathered_lists(domain, bad);
+  if (!bad.empty()) check_sphere({bad[0], bad[1], bad[2]}, bad[3], std::size_t(bad[4]));
   const int ranks = domain.size(), me = domain.rank();
   const double inf = std::numeric_limits<double>::infinity();
 
@@ -146,7 +131,8 @@ SpherePart::SpherePart(const Packing& rows, double density, Domain& domain, doub
   std::sort(keys.begin(), keys.end());
 
   // Each rank's first key: the key at whole position starts[r], bisected on the count of keys up to a bound.
-  const std::vector<std::size_t> starts = SphereSystem::rank_starts(total_, ranks);
+  starts_ = SphereSystem::rank_starts(total_, ranks);
+  const std::vector<std::size_t>& starts = starts_;
   begin_ = starts[std::size_t(me)], own_ = starts[std::size_t(me) + 1] - begin_;
   const std::vector<Key> first = first_keys(domain, keys, starts);
   std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks));
@@ -173,34 +159,25 @@ SpherePart::SpherePart(const Packing& rows, double density, Domain& domain, doub
   for (std::size_t k = 0; k < own_; ++k) {
     double* box = &boxes[6 * (k / block)];
     const double* row = &arrived[kRow * keys[k].second];
-    if (k % block == 0)
-      for (std::size_t d = 0; d < 3; ++d) box[d] = inf, box[3 + d] = -inf;
-    for (std::size_t d = 0; d < 3; ++d) box[d] = std::min(box[d], row[d]), box[3 + d] = std::max(box[3 + d], row[d]);
+    if (k % block == 0) clear_box(box);
+    grow_box_by_point(box, row);
     r_max = std::max(r_max, row[3]);
   }
   const double reach = reach_radii * domain.max(r_max);
-  boxes = gather_lists(domain, boxes);  // every rank's, in rank order (its blocks from starts[r] / block)
-  const auto near = [&](const double* x, const double* box) {
-    double gap2 = 0;
-    for (std::size_t d = 0; d < 3; ++d) {
-      const double gap = std::max({0.0, box[d] - x[d], x[d] - box[3 + d]});
-      gap2 += gap * gap;
-    }
-    return gap2 <= reach * reach;
-  };
+  boxes = gathered_lists(domain, boxes);  // every rank's, in rank order (its blocks from starts[r] / block)
   out.assign(static_cast<std::size_t>(ranks), {});
   for (int t = 0; t < ranks; ++t) {
     const std::size_t b0 = starts[std::size_t(t)] / block, b1 = (starts[std::size_t(t) + 1] + block - 1) / block;
     if (t == me || b0 == b1) continue;
     double all[6];  // the box of rank t's blocks
-    for (std::size_t d = 0; d < 3; ++d) all[d] = inf, all[3 + d] = -inf;
-    for (std::size_t b = b0; b < b1; ++b)
-      for (std::size_t d = 0; d < 3; ++d) all[d] = std::min(all[d], boxes[6 * b + d]), all[3 + d] = std::max(all[3 + d], boxes[6 * b + 3 + d]);
+    clear_box(all);
+    for (std::size_t b = b0; b < b1; ++b) grow_box(all, &boxes[6 * b]);
     for (std::size_t k = 0; k < own_; ++k) {
       const double* row = &arrived[kRow * keys[k].second];
-      if (!near(row, all)) continue;
+      const double point[6] = {row[0], row[1], row[2], row[0], row[1], row[2]};
+      if (!boxes_within(point, all, reach)) continue;
       bool any = false;
-      for (std::size_t b = b0; b < b1 && !any; ++b) any = near(row, &boxes[6 * b]);
+      for (std::size_t b = b0; b < b1 && !any; ++b) any = boxes_within(point, &boxes[6 * b], reach);
       if (!any) continue;
       out[std::size_t(t)].insert(out[std::size_t(t)].end(), row, row + kRow);
       out[std::size_t(t)].push_back(double(begin_ + k));
@@ -210,15 +187,17 @@ SpherePart::SpherePart(const Packing& rows, double density, Domain& domain, doub
   for (auto& piece : all_to_all(domain, std::move(out))) layer.insert(layer.end(), piece.begin(), piece.end());
   const std::size_t layers = layer.size() / (kRow + 1);
   set_ = sphere_set_of_size(own_ + layers, true);
-  const auto set_row = [&](std::size_t l, const double* row) {
-    set_sphere(set_, l, {row[0], row[1], row[2]}, row[3], density, std::uint32_t(row[4]), std::int64_t(row[5]));
-  };
-  for (std::size_t k = 0; k < own_; ++k) set_row(k, &arrived[kRow * keys[k].second]);
+  for (std::size_t k = 0; k < own_; ++k) set_row(set_, k, &arrived[kRow * keys[k].second], density);
   layer_index_.resize(layers);
   for (std::size_t i = 0; i < layers; ++i) {
-    set_row(own_ + i, &layer[(kRow + 1) * i]);
+    set_row(set_, own_ + i, &layer[(kRow + 1) * i], density);
     layer_index_[i] = std::uint32_t(layer[(kRow + 1) * i + kRow]);
   }
+}
+
+int SpherePart::owner(std::size_t k) const {
+  if (!domain_) return 0;
+  return int(std::upper_bound(starts_.begin(), starts_.end(), k) - starts_.begin()) - 1;
 }
 
 bool SpherePart::holds(std::size_t k) const {
@@ -261,7 +240,7 @@ std::size_t SpherePart::arg_min(const std::function<std::pair<double, double>(st
     if (a < best[0] || (a == best[0] && b < best[1])) best[0] = a, best[1] = b, best[2] = double(begin_ + k);
   }
   if (!domain_) return std::size_t(best[2]);
-  const auto all = gather_lists(*domain_, {best, best + 3});
+  const auto all = gathered_lists(*domain_, {best, best + 3});
   std::size_t r = 0;  // ranks in whole-index order: the first of equal keys has the lowest index
   for (std::size_t q = 3; q < all.size(); q += 3)
     if (all[q] < all[r] || (all[q] == all[r] && all[q + 1] < all[r + 1])) r = q;
@@ -272,7 +251,7 @@ std::vector<std::size_t> SpherePart::select(const std::function<bool(std::size_t
   std::vector<double> mine;  // whole index, packing index
   for (std::size_t k = 0; k < own_; ++k)
     if (keep(k)) mine.insert(mine.end(), {double(begin_ + k), double(set_.packing_index[k])});
-  const std::vector<double> all = domain_ ? gather_lists(*domain_, mine) : mine;
+  const std::vector<double> all = domain_ ? gathered_lists(*domain_, mine) : mine;
   std::vector<std::size_t> order(all.size() / 2);
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   if (by_packing_index) std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return all[2 * i + 1] < all[2 * j + 1]; });
@@ -284,15 +263,13 @@ std::vector<std::size_t> SpherePart::select(const std::function<bool(std::size_t
 std::vector<double> SpherePart::gathered(const std::function<double(std::size_t)>& value) const {
   std::vector<double> mine(own_);
   for (std::size_t k = 0; k < own_; ++k) mine[k] = value(k);
-  return domain_ ? gather_lists(*domain_, mine) : mine;
+  return domain_ ? gathered_lists(*domain_, mine) : mine;
 }
 
 Vec3 SpherePart::centre_of(std::size_t k) const {
   if (!domain_) return set_.centre_m[k];
-  const std::vector<std::size_t> starts = SphereSystem::rank_starts(total_, domain_->size());
-  const auto owner = std::size_t(std::upper_bound(starts.begin(), starts.end(), k) - starts.begin()) - 1;
-  std::vector<int> counts(starts.size() - 1, 0), displs(starts.size() - 1, 0);
-  counts[owner] = 3;
+  std::vector<int> counts(starts_.size() - 1, 0), displs(starts_.size() - 1, 0);
+  counts[std::size_t(owner(k))] = 3;
   Vec3 c = owns(k) ? set_.centre_m[k - begin_] : Vec3{};
   double x[3] = {c.x, c.y, c.z};
   domain_->share(x, counts, displs);
@@ -305,8 +282,8 @@ void SpherePart::fetch(std::vector<std::size_t> ids) {
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   std::vector<double> mine;
   for (const std::size_t k : ids)
-    if (owns(k)) append_record(set_, k - begin_, mine);
-  const std::vector<double> all = gather_lists(*domain_, mine);  // ranks in order: ascending ids
+    if (owns(k)) append_row(set_, k - begin_, mine);
+  const std::vector<double> all = gathered_lists(*domain_, mine);  // ranks in order: ascending ids
   std::vector<std::uint32_t> arrived;
   for (const std::size_t k : ids)
     if (!holds(k)) arrived.push_back(std::uint32_t(k));
@@ -314,16 +291,16 @@ void SpherePart::fetch(std::vector<std::size_t> ids) {
   std::vector<std::uint32_t> layer(layer_index_.size() + arrived.size());
   std::merge(layer_index_.begin(), layer_index_.end(), arrived.begin(), arrived.end(), layer.begin());
   SphereSet next = sphere_set_of_size(own_ + layer.size(), true);
-  std::vector<double> record;
+  std::vector<double> row;
   for (std::size_t l = 0; l < next.size(); ++l) {
     const std::size_t k = l < own_ ? begin_ + l : layer[l - own_];
     if (std::binary_search(arrived.begin(), arrived.end(), std::uint32_t(k))) {
       const auto at = std::size_t(std::lower_bound(ids.begin(), ids.end(), k) - ids.begin());
-      set_record(next, l, &all[kRecord * at]);
+      set_row(next, l, &all[kRow * at], density_);
     } else {
-      record.clear();
-      append_record(set_, local(k), record);
-      set_record(next, l, record.data());
+      row.clear();
+      append_row(set_, local(k), row);
+      set_row(next, l, row.data(), density_);
     }
   }
   set_ = std::move(next);

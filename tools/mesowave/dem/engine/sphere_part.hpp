@@ -46,6 +46,8 @@ public:
   std::size_t begin() const { return begin_; }
   std::size_t own_count() const { return own_; }
   bool owns(std::size_t k) const { return k >= begin_ && k < begin_ + own_; }
+  /// The rank that owns sphere k (a whole index): 0 in one process.
+  int owner(std::size_t k) const;
   /// The spheres held here: the own ones first (local index k: whole index begin() + k), then the
   /// layer in ascending whole index.
   const SphereSet& spheres() const { return set_; }
@@ -90,6 +92,8 @@ public:
 private:
   SphereSet set_;
   std::size_t begin_ = 0, own_ = 0, total_ = 0;
+  std::vector<std::size_t> starts_;  ///< SphereSystem::rank_starts: rank r owns [starts_[r], starts_[r + 1])
+  double density_ = 0;               ///< of the spheres a rank's part receives (set_sphere)
   std::vector<std::uint32_t> layer_index_;  ///< whole index of set_'s sphere own_ + i, ascending
   Domain* domain_ = nullptr;
 };

@@ -69,6 +69,10 @@ void set_sphere(SphereSet& s, std::size_t k, const std::array<double, 3>& c, dou
   s.ids[k] = id;
 }
 
+bool is_sound_sphere(const std::array<double, 3>& centre, double r) {
+  return std::isfinite(r) && r > 0 && std::isfinite(centre[0]) && std::isfinite(centre[1]) && std::isfinite(centre[2]);
+}
+
 void check_sphere(const std::array<double, 3>& centre, double r, std::size_t i) {
   if (!std::isfinite(r) || r <= 0)
     throw InputError("sphere " + std::to_string(i) + " has radius " + format_number(r) + " m; radii must be positive");

@@ -27,6 +27,8 @@ SphereSet sphere_set_of_size(std::size_t n, bool with_ids);
 /// and inertia of a solid sphere of density `density_kg_m3`.
 void set_sphere(SphereSet& s, std::size_t k, const std::array<double, 3>& centre_m, double radius_m,
                 double density_kg_m3, std::uint32_t packing_index, std::int64_t id);
+/// A positive, finite radius and a finite centre.
+bool is_sound_sphere(const std::array<double, 3>& centre_m, double radius_m);
 /// InputError naming the sphere (`packing_index`) for a non-positive radius or a non-finite centre.
 void check_sphere(const std::array<double, 3>& centre_m, double radius_m, std::size_t packing_index);
 

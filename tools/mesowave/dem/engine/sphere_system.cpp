@@ -185,7 +185,6 @@ SphereSystem::~SphereSystem() = default;
 // One process takes the whole network; each of several ranks its part (make_bond_network with the
 // domain): the bonds with an end of its own, whose indices it keeps as two runs.
 void SphereSystem::keep_held_bonds() {
-  bonds_.incidence = {};
   std::vector<Vec3>().swap(bonds_.normal0);  // bond_geometry0 makes them anew
   std::vector<double>().swap(bonds_.overlap0_m);
   const std::size_t first = own_begin(), end = own_end();
@@ -318,8 +317,7 @@ double SphereSystem::impose_displacement(std::size_t sphere, const Vec3& e, doub
 }
 
 void SphereSystem::step(double dt, bool evaluate_energy) {
-  collected_ = {};  // rank 0's whole copy is spent (collect_state), and a checkpoint's slot order
-  forget_gathered_slots();
+  collected_ = {};  // rank 0's whole copy is spent (collect_state)
   if (domain_ && slot_elastic_.size() != first_.size())  // after a new layout (lay_out_domain)
     for (auto* values : {&slot_elastic_, &slot_plastic_}) values->resize(first_.size());
   forced_v_before_.resize(forced_.size());
@@ -589,16 +587,16 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
 // Distributed, the caller has shared every block's damping (Model::save_state); each sphere array
 // is gathered to rank 0 as it is written, one at a time, and the other ranks' group writes nowhere.
 void SphereSystem::save_state(StateGroup& group) const {
-  const auto write_spheres = [&](const char* name, const std::vector<Vec3>& held) {
+  const auto spheres = [&](const char* name, const std::vector<Vec3>& held) {
     if (!domain_) return group.write(name, held);
-    group.write(name, gathered_spheres(held));
+    write_spheres(group, name, held);
   };
-  write_spheres("x", x_);
-  write_spheres("v", v_);
-  write_spheres("w", w_);
-  write_spheres("a", a_);
-  write_spheres("a_undamped", a_undamped_);
-  if (track_rotation_) write_spheres("theta", theta_);
+  spheres("x", x_);
+  spheres("v", v_);
+  spheres("w", w_);
+  spheres("a", a_);
+  spheres("a_undamped", a_undamped_);
+  if (track_rotation_) spheres("theta", theta_);
   group.write("peak_ratio", peak_ratio_);
   group.write("max_speed", max_speed_);
   group.write("kinetic_J", energy_.kinetic_J);

@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <memory>
@@ -176,7 +177,7 @@ public:
   bool is_own(std::size_t k) const { return k >= own_begin() && k < own_end(); }
   /// The held bonds: those with an end of this rank's own (all in one process), by index, so
   /// sorted by (first, second) too; own_begin and own_end give the rank's spheres (their pairs
-  /// only: no incidence, no ids, no step-0 geometry, which bond_geometry0 makes anew).
+  /// only: no ids, no step-0 geometry, which bond_geometry0 makes anew).
   const BondNetwork& held_bond_network() const { return bonds_; }
   /// The index of held bond h (h in one process).
   std::size_t held_bond_id(std::size_t h) const {
@@ -222,9 +223,9 @@ public:
   /// Held slot s's place in the whole layout (s in one process).
   std::uint32_t global_slot(std::size_t s) const { return domain_ ? global_slot_[s] : std::uint32_t(s); }
   /// A law's checkpoint of a per-slot array (save_state): written in the whole layout's slot
-  /// order, whichever ranks hold the slots. Distributed (collective), each rank sends its
-  /// reported slots' values (every slot once) to rank 0, which writes them; the other ranks'
-  /// `group` writes nowhere (StateGroup::nowhere).
+  /// order, whichever ranks hold the slots. Distributed (collective), rank 0 writes the array a
+  /// piece of StateGroup::kPieceRows slots at a time, each piece's values sent by their
+  /// reporters (every slot once); the other ranks' `group` writes nowhere (StateGroup::nowhere).
   void write_slots(StateGroup& group, const std::string& name, const std::vector<double>& held) const;
   void write_slots(StateGroup& group, const std::string& name, const std::vector<std::uint32_t>& held) const;
   /// A restart (load_state, once set_contacts has laid out the checkpoint's contacts): the held
@@ -332,7 +333,7 @@ private:
   SphereSet spheres_;  ///< the held spheres' statics, local numbering (held_spheres()); no ids
   std::size_t sphere_total_ = 0;
   double radius_min_ = 0, radius_max_ = 0;
-  BondNetwork bonds_;  ///< the held bonds (all in one process), without incidence or ids
+  BondNetwork bonds_;  ///< the held bonds (all in one process), without ids
   std::size_t bond_count_ = 0;  ///< in the whole network
   CohesiveFrictionalMaterial material_;
   std::unique_ptr<ContactKernel> kernel_;
@@ -372,15 +373,13 @@ private:
   std::size_t global_slots_ = 0, global_cross_begin_ = 0, global_cross_blocks_ = 0;
   std::vector<std::uint32_t> global_interior_start_, global_slot_;
   std::size_t global_task_of(std::size_t global_slot) const;
-  std::vector<double> gathered_slots(const std::vector<double>& held) const;  ///< write_slots' gather
-  /// From a checkpoint's first write_slots until the next step or layout: on every rank each
-  /// rank's count of reported slots (empty: not gathered yet), and on rank 0 the whole layout's
-  /// slot of each value gathered (the reporters' slots in rank order), so that the other
-  /// arrays send their values only.
-  mutable std::vector<int> gathered_counts_;
-  mutable std::vector<std::uint32_t> gathered_slot_order_;
-  /// Forgets them (a new step or layout).
-  void forget_gathered_slots() { gathered_counts_.clear(), gathered_slot_order_.clear(); }
+  /// Distributed write_slots: value(s) of each reported slot s.
+  void write_reported_slots(StateGroup& group, const std::string& name, bool indices,
+                            const std::function<double(std::uint32_t held_slot)>& value) const;
+  /// Distributed: rank 0 writes the whole array (global ids) a piece at a time, each piece from
+  /// the own spheres of the ranks whose range meets it (collective; a checkpoint).
+  template <class T>  // Vec3 or double
+  void write_spheres(StateGroup& group, const std::string& name, const std::vector<T>& held) const;
   /// Distributed: rank 0 gets the whole array (global ids) gathered from each rank's own
   /// spheres, the other ranks an empty one (collective).
   template <class T>  // Vec3 or double

@@ -99,6 +99,21 @@ void StateGroup::write(const std::string& name, const std::vector<std::uint32_t>
   if (id_ >= 0) io::h5::write_int64s(id_, name, std::vector<std::int64_t>(values.begin(), values.end()));
 }
 
+StateGroup::Rows::Rows(std::unique_ptr<io::h5::RowWriter> writer, bool indices) : writer_(std::move(writer)), indices_(indices) {}
+StateGroup::Rows::Rows(Rows&&) noexcept = default;
+StateGroup::Rows::~Rows() = default;
+
+void StateGroup::Rows::write(std::size_t first, const std::vector<double>& values) {
+  if (!writer_) return;
+  if (indices_) writer_->write_rows(first, std::vector<std::int64_t>(values.begin(), values.end()));
+  else writer_->write_rows(first, values);
+}
+
+StateGroup::Rows StateGroup::write_rows(const std::string& name, std::size_t rows, std::size_t cols, bool indices) const {
+  if (id_ < 0) return Rows(nullptr, indices);
+  return Rows(std::make_unique<io::h5::RowWriter>(id_, name, rows, cols, indices), indices);
+}
+
 std::vector<double> StateGroup::read_doubles(const std::string& name) const {
   existing(id_, where_, name);
   return io::h5::read_doubles(id_, name);

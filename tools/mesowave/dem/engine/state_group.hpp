@@ -9,10 +9,15 @@
 // knows no kind. Numbers are stored binary (float64 for doubles, int64 for
 // counts and indices), never as text, so every double comes back bit for bit.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "mesowave/dem/engine/vec3.hpp"
+
+namespace mesowave::io::h5 {
+class RowWriter;
+}
 
 namespace mesowave::dem {
 
@@ -40,6 +45,25 @@ public:
   void write(const std::string& name, const std::vector<double>& values);
   void write(const std::string& name, const std::vector<Vec3>& values);
   void write(const std::string& name, const std::vector<std::uint32_t>& values);
+
+  /// An array of `rows` rows of `cols` doubles (0: 1-D), or of indices (stored as write() stores
+  /// them), written a piece at a time as the pieces come: once every row is written, the file
+  /// holds what write() would have written whole. What a distributed checkpoint's rank 0 writes
+  /// as the ranks send it, never holding the array whole. A group that writes nowhere gives a
+  /// writer that writes nothing.
+  class Rows {
+  public:
+    explicit Rows(std::unique_ptr<io::h5::RowWriter> writer, bool indices);
+    Rows(Rows&&) noexcept;
+    ~Rows();
+    /// Rows [first, first + values.size() / max(cols, 1)); indices travel as doubles (exact).
+    void write(std::size_t first, const std::vector<double>& values);
+
+  private:
+    std::unique_ptr<io::h5::RowWriter> writer_;
+    bool indices_;
+  };
+  Rows write_rows(const std::string& name, std::size_t rows, std::size_t cols, bool indices) const;
 
   /// A text attribute of the group (a part's name).
   void write_text(const std::string& key, const std::string& text);

@@ -58,6 +58,30 @@ inline std::uint64_t pair_hash(std::uint32_t first, std::uint32_t second) {
   return ((std::uint64_t(first) << 32) | second) * 0x9E3779B97F4A7C15ull;
 }
 
+/// Every rank's `value` (a count: exact below 2^53), in rank order, on every rank.
+inline std::vector<double> gathered_each(Domain& domain, double value) {
+  const auto ranks = static_cast<std::size_t>(domain.size());
+  std::vector<int> ones(ranks, 1), at(ranks);
+  for (std::size_t r = 0; r < ranks; ++r) at[r] = int(r);
+  std::vector<double> all(ranks);
+  domain.gather_all(&value, 1, all.data(), ones, at);
+  return all;
+}
+
+/// Every rank's list `mine` (of any length), one after the other in rank order, on every rank.
+inline std::vector<double> gathered_lists(Domain& domain, const std::vector<double>& mine) {
+  const std::vector<double> lengths = gathered_each(domain, double(mine.size()));
+  std::vector<int> counts(lengths.size()), displs(lengths.size());
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < lengths.size(); ++r) {
+    counts[r] = int(lengths[r]), displs[r] = int(total);
+    total += std::size_t(lengths[r]);
+  }
+  std::vector<double> all(total);
+  domain.gather_all(mine.data(), int(mine.size()), all.data(), counts, displs);
+  return all;
+}
+
 /// A floating-point sum in the serial order of parts held rank after rank (rank r's part comes
 /// after rank r - 1's, as the spheres' ranges do): rank 0 starts from 0, each rank continues the
 /// previous rank's partial sum (`continue_sum(partial)` adds its own terms in order) and passes

@@ -31,6 +31,7 @@
 
 #include "mesowave/core/error.hpp"
 #include "mesowave/core/format.hpp"
+#include "mesowave/dem/engine/centre_box.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
 #include "mesowave/dem/engine/state_group.hpp"
 #include "mesowave/dem/parallel/domain.hpp"
@@ -48,6 +49,14 @@ double test_ghost_layer_m() {
 int test_ghost_layer_rank() {
   const char* v = std::getenv("MESOWAVE_TEST_GHOST_LAYER_RANK");
   return v ? std::atoi(v) : -1;
+}
+
+// Test-only (tests/cli/mw_dem_mpi_test.cpp): MESOWAVE_TEST_CHECKPOINT_PIECE_ROWS writes a
+// distributed checkpoint's arrays in pieces of that many rows (StateGroup::kPieceRows otherwise),
+// so that a small model's pieces cut the ranks' ranges and the reporters' runs.
+std::size_t checkpoint_piece_rows() {
+  const char* v = std::getenv("MESOWAVE_TEST_CHECKPOINT_PIECE_ROWS");
+  return v && std::atol(v) > 0 ? std::size_t(std::atol(v)) : StateGroup::kPieceRows;
 }
 
 void sort_unique(std::vector<std::uint32_t>& v) {
@@ -385,7 +394,6 @@ void SphereSystem::lay_out_domain() {
   sort_unique(ids);
   hold(std::move(ids), arrived, ghosts);
   number_contacts_locally();
-  forget_gathered_slots();
   ghosts_stale_ = true;
 }
 
@@ -653,11 +661,11 @@ SphereSystem::Nearby SphereSystem::spheres_near_own(double reach_m) {
   std::vector<double> box(6 * blocks);
   for (std::size_t b = own_block_begin_; b < own_block_end_; ++b) {
     double* q = &box[6 * b];
-    for (int d = 0; d < 3; ++d) q[d] = std::numeric_limits<double>::infinity(), q[3 + d] = -q[d];
+    clear_box(q);
     for (std::size_t k = b * kSphereBlock; k < block_end(b); ++k) {
       const Vec3& x = x_[own_local(k)];
       const double c[3] = {x.x, x.y, x.z};
-      for (int d = 0; d < 3; ++d) q[d] = std::min(q[d], c[d]), q[3 + d] = std::max(q[3 + d], c[d]);
+      grow_box_by_point(q, c);
     }
   }
   std::vector<int> counts(static_cast<std::size_t>(ranks)), displs(static_cast<std::size_t>(ranks));
@@ -668,20 +676,12 @@ SphereSystem::Nearby SphereSystem::spheres_near_own(double reach_m) {
     const auto b0 = std::size_t(block_displs_[std::size_t(r)]);
     return std::pair{b0, b0 + std::size_t(block_counts_[std::size_t(r)])};
   };
-  const auto near_boxes = [&](const double* a, const double* b) {
-    double gap2 = 0;
-    for (int d = 0; d < 3; ++d) {
-      const double gap = std::max({0.0, b[d] - a[3 + d], a[d] - b[3 + d]});
-      gap2 += gap * gap;
-    }
-    return gap2 <= reach_m * reach_m;
-  };
+  const auto near_boxes = [&](const double* a, const double* b) { return boxes_within(a, b, reach_m); };
   std::vector<double> rank_box(6 * std::size_t(ranks));
   for (int r = 0; r < ranks; ++r) {
     double* q = &rank_box[6 * std::size_t(r)];
-    for (int d = 0; d < 3; ++d) q[d] = std::numeric_limits<double>::infinity(), q[3 + d] = -q[d];
-    for (auto [b, e] = blocks_of(r); b < e; ++b)
-      for (int d = 0; d < 3; ++d) q[d] = std::min(q[d], box[6 * b + d]), q[3 + d] = std::max(q[3 + d], box[6 * b + 3 + d]);
+    clear_box(q);
+    for (auto [b, e] = blocks_of(r); b < e; ++b) grow_box(q, &box[6 * b]);
   }
   // Rank r's blocks that come within reach of one of rank t's: what r sends t, worked out alike
   // on both (the same call on the same boxes).
@@ -767,52 +767,78 @@ void SphereSystem::collect_energy() {
 
 std::size_t SphereSystem::broken_bond_count() const { return domain_ ? broken_ : kernel_->broken_bond_count(); }
 
-// A checkpoint's per-slot array, whole on rank 0 (empty on the others): each rank's values of its
-// reported slots (every slot of the whole layout once), gathered there in rank order and put in
-// place. The slots themselves travel with the checkpoint's first array only (gathered_slot_order_).
-std::vector<double> SphereSystem::gathered_slots(const std::vector<double>& held) const {
-  const int ranks = domain_->size();
-  const bool root = domain_->rank() == 0, first_array = gathered_counts_.empty();
-  if (first_array) {
-    const double mine = double(reported_.size());
-    std::vector<double> sizes(static_cast<std::size_t>(ranks));
-    std::vector<int> ones(static_cast<std::size_t>(ranks), 1), at(static_cast<std::size_t>(ranks));
-    for (int r = 0; r < ranks; ++r) at[std::size_t(r)] = r;
-    domain_->gather_all(&mine, 1, sizes.data(), ones, at);
-    gathered_counts_.assign(sizes.begin(), sizes.end());
+// A checkpoint's per-slot array: rank 0 writes the whole layout's slots a piece at a time
+// (checkpoint_piece_rows). The
+// reporters' runs (slot_runs_, the same on every rank) say how many of a piece's slots each rank
+// reports and where they go; a rank's reported slots ascend in the layout (its held slots are in
+// the layout's order), so each sends its next ones. Rank 0 holds a piece, never the array.
+void SphereSystem::write_reported_slots(StateGroup& group, const std::string& name, bool indices,
+                                        const std::function<double(std::uint32_t)>& value) const {
+  const auto ranks = static_cast<std::size_t>(domain_->size()), me = static_cast<std::size_t>(rank_);
+  const bool root = me == 0;
+  StateGroup::Rows rows = group.write_rows(name, global_slots_, 0, indices);
+  std::vector<int> counts(ranks), displs(ranks), next(ranks);
+  std::vector<double> send, arrived, piece;
+  std::size_t sent = 0;  // this rank's reported slots sent so far
+  const std::size_t piece_rows = checkpoint_piece_rows();
+  for (std::size_t begin = 0; begin < global_slots_; begin += piece_rows) {
+    const std::size_t end = std::min(global_slots_, begin + piece_rows);
+    std::fill(counts.begin(), counts.end(), 0);
+    for_each_reporter(begin, end, [&](int r, std::size_t b, std::size_t e) { counts[std::size_t(r)] += int(e - b); });
+    for (std::size_t r = 1; r < ranks; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+    send.resize(std::size_t(counts[me]));
+    for (double& v : send) v = value(reported_[sent++]);
+    arrived.resize(root ? end - begin : 0);
+    domain_->gather(send.data(), int(send.size()), arrived.data(), counts, displs);
+    if (!root) continue;
+    piece.resize(end - begin);
+    next = displs;
+    for_each_reporter(begin, end, [&](int r, std::size_t b, std::size_t e) {
+      for (std::size_t s = b; s < e; ++s) piece[s - begin] = arrived[std::size_t(next[std::size_t(r)]++)];
+    });
+    rows.write(begin, piece);
   }
-  std::vector<int> displs(static_cast<std::size_t>(ranks));
-  std::size_t total = 0;
-  for (int r = 0; r < ranks; ++r) {
-    displs[std::size_t(r)] = int(total);
-    total += std::size_t(gathered_counts_[std::size_t(r)]);
-  }
-  if (total > std::size_t(0x7fffffff)) throw InputError("a checkpoint's contacts exceed MPI's int counts in one gather");
-  if (root && total != global_slots_) throw std::logic_error("SphereSystem::gathered_slots: the reporters do not cover the layout");
-  std::vector<double> send(reported_.size()), values(root ? total : 0);
-  if (first_array) {
-    for (std::size_t k = 0; k < reported_.size(); ++k) send[k] = double(global_slot_[reported_[k]]);  // exact below 2^53
-    domain_->gather(send.data(), int(send.size()), values.data(), gathered_counts_, displs);
-    gathered_slot_order_.assign(values.begin(), values.end());
-  }
-  for (std::size_t k = 0; k < reported_.size(); ++k) send[k] = held[reported_[k]];
-  domain_->gather(send.data(), int(send.size()), values.data(), gathered_counts_, displs);
-  if (!root) return {};
-  std::vector<double> whole(global_slots_);
-  for (std::size_t k = 0; k < total; ++k) whole[gathered_slot_order_[k]] = values[k];
-  return whole;
+  if (sent != reported_.size()) throw std::logic_error("SphereSystem::write_slots: the reporters' runs do not cover the layout");
 }
 
 void SphereSystem::write_slots(StateGroup& group, const std::string& name, const std::vector<double>& held) const {
   if (!domain_) return group.write(name, held);
-  group.write(name, gathered_slots(held));  // the other ranks' group writes nowhere
+  write_reported_slots(group, name, false, [&](std::uint32_t s) { return held[s]; });  // the other ranks' group writes nowhere
 }
 
 void SphereSystem::write_slots(StateGroup& group, const std::string& name, const std::vector<std::uint32_t>& held) const {
   if (!domain_) return group.write(name, held);
-  const std::vector<double> whole = gathered_slots(std::vector<double>(held.begin(), held.end()));  // exact
-  group.write(name, std::vector<std::uint32_t>(whole.begin(), whole.end()));
+  write_reported_slots(group, name, true, [&](std::uint32_t s) { return double(held[s]); });  // exact
 }
+
+// A checkpoint's sphere array: rank 0 writes it a piece at a time, each piece the own spheres of
+// the ranks whose ranges meet it, in rank order (the ranges ascend).
+template <class T>
+void SphereSystem::write_spheres(StateGroup& group, const std::string& name, const std::vector<T>& held) const {
+  static_assert(sizeof(T) % sizeof(double) == 0);
+  constexpr std::size_t per = sizeof(T) / sizeof(double);
+  const auto ranks = static_cast<std::size_t>(domain_->size());
+  const bool root = rank_ == 0;
+  StateGroup::Rows rows = group.write_rows(name, sphere_total_, per == 1 ? 0 : per, false);
+  std::vector<int> counts(ranks), displs(ranks);
+  std::vector<double> piece;
+  const std::size_t piece_rows = checkpoint_piece_rows();
+  for (std::size_t begin = 0; begin < sphere_total_; begin += piece_rows) {
+    const std::size_t end = std::min(sphere_total_, begin + piece_rows);
+    for (std::size_t r = 0; r < ranks; ++r) {  // rank r's spheres [first, last) (sphere_counts_ count 3 a sphere)
+      const std::size_t first = std::size_t(sphere_displs_[r]) / 3, last = first + std::size_t(sphere_counts_[r]) / 3;
+      const std::size_t from = std::max(first, begin), to = std::min(last, end);
+      counts[r] = from < to ? int(per * (to - from)) : 0;
+      displs[r] = from < to ? int(per * (from - begin)) : 0;
+    }
+    const std::size_t from = std::max(own_begin_, begin);
+    const double* mine = counts[std::size_t(rank_)] ? reinterpret_cast<const double*>(&held[own_local(from)]) : nullptr;
+    piece.resize(root ? per * (end - begin) : 0);
+    domain_->gather(mine, counts[std::size_t(rank_)], piece.data(), counts, displs);
+    rows.write(begin, piece);
+  }
+}
+template void SphereSystem::write_spheres(StateGroup&, const std::string&, const std::vector<Vec3>&) const;
 
 std::string SphereSystem::distribution() const {
   if (!domain_) return {};

@@ -34,10 +34,13 @@ std::optional<Vec3> line_axis(const SpherePart& part) {
 double estimated_force_ratio(const ResolvedLoad& load, const SpherePart& s, const BondNetwork& bonds,
                              const CohesiveFrictionalMaterial& m, double duration_s) {
   double weakest = std::numeric_limits<double>::infinity(), stiffest = 0;
-  for (std::size_t k : load.spheres) {
-    if (!bonds.lists_all_of(k)) continue;  // another rank's sphere: that rank takes it
-    for (std::uint32_t e = bonds.incidence.offset[k]; e < bonds.incidence.offset[k + 1]; ++e) {
-      const std::uint32_t b = Incidence::bond(bonds.incidence.entry[e]);
+  std::vector<std::size_t> loaded;  // this rank's own loaded spheres: another rank takes its own
+  for (std::size_t k : load.spheres)
+    if (bonds.lists_all_of(k)) loaded.push_back(k);
+  std::sort(loaded.begin(), loaded.end());
+  const auto is_loaded = [&](std::size_t k) { return std::binary_search(loaded.begin(), loaded.end(), k); };
+  for (std::size_t b = 0; b < bonds.size() && !loaded.empty(); ++b) {
+    if (is_loaded(bonds.first[b]) || is_loaded(bonds.second[b])) {
       const double ri = s.radius(bonds.first[b]), rj = s.radius(bonds.second[b]);
       const double kn = normal_stiffness(m, ri, rj);
       const double strength = m.breakable()
