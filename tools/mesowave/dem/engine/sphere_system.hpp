@@ -378,8 +378,7 @@ private:
                             const std::function<double(std::uint32_t held_slot)>& value) const;
   /// Distributed: rank 0 writes the whole array (global ids) a piece at a time, each piece from
   /// the own spheres of the ranks whose range meets it (collective; a checkpoint).
-  template <class T>  // Vec3 or double
-  void write_spheres(StateGroup& group, const std::string& name, const std::vector<T>& held) const;
+  void write_spheres(StateGroup& group, const std::string& name, const std::vector<Vec3>& held) const;
   /// Distributed: rank 0 gets the whole array (global ids) gathered from each rank's own
   /// spheres, the other ranks an empty one (collective).
   template <class T>  // Vec3 or double

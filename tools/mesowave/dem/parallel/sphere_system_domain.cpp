@@ -768,10 +768,10 @@ void SphereSystem::collect_energy() {
 std::size_t SphereSystem::broken_bond_count() const { return domain_ ? broken_ : kernel_->broken_bond_count(); }
 
 // A checkpoint's per-slot array: rank 0 writes the whole layout's slots a piece at a time
-// (checkpoint_piece_rows). The
-// reporters' runs (slot_runs_, the same on every rank) say how many of a piece's slots each rank
-// reports and where they go; a rank's reported slots ascend in the layout (its held slots are in
-// the layout's order), so each sends its next ones. Rank 0 holds a piece, never the array.
+// (checkpoint_piece_rows). The reporters' runs (slot_runs_, the same on every rank) say how many
+// of a piece's slots each rank reports and where they go; a rank's reported slots ascend in the
+// layout (its held slots are in the layout's order), so each sends its next ones. Rank 0 holds a
+// piece, never the array.
 void SphereSystem::write_reported_slots(StateGroup& group, const std::string& name, bool indices,
                                         const std::function<double(std::uint32_t)>& value) const {
   const auto ranks = static_cast<std::size_t>(domain_->size()), me = static_cast<std::size_t>(rank_);
@@ -813,13 +813,11 @@ void SphereSystem::write_slots(StateGroup& group, const std::string& name, const
 
 // A checkpoint's sphere array: rank 0 writes it a piece at a time, each piece the own spheres of
 // the ranks whose ranges meet it, in rank order (the ranges ascend).
-template <class T>
-void SphereSystem::write_spheres(StateGroup& group, const std::string& name, const std::vector<T>& held) const {
-  static_assert(sizeof(T) % sizeof(double) == 0);
-  constexpr std::size_t per = sizeof(T) / sizeof(double);
+void SphereSystem::write_spheres(StateGroup& group, const std::string& name, const std::vector<Vec3>& held) const {
+  constexpr std::size_t per = 3;  // doubles a row
   const auto ranks = static_cast<std::size_t>(domain_->size());
   const bool root = rank_ == 0;
-  StateGroup::Rows rows = group.write_rows(name, sphere_total_, per == 1 ? 0 : per, false);
+  StateGroup::Rows rows = group.write_rows(name, sphere_total_, per, false);
   std::vector<int> counts(ranks), displs(ranks);
   std::vector<double> piece;
   const std::size_t piece_rows = checkpoint_piece_rows();
@@ -838,7 +836,6 @@ void SphereSystem::write_spheres(StateGroup& group, const std::string& name, con
     rows.write(begin, piece);
   }
 }
-template void SphereSystem::write_spheres(StateGroup&, const std::string&, const std::vector<Vec3>&) const;
 
 std::string SphereSystem::distribution() const {
   if (!domain_) return {};
