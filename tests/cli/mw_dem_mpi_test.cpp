@@ -203,7 +203,9 @@ void expect_same_files_on_ranks(const test::TempDir& dir, const std::string& sce
       EXPECT_LE(std::stoul(m[1].str()), (spheres + std::size_t(np) - 1) / std::size_t(np)) << split;
       // (At np 2 rank 0's part of the 864-sphere blocks, 512 own spheres and a layer two radii
       // deep, reaches every sphere; not on the 8,788-sphere block, nor on the line, 259 of 600.)
-      if (np >= 3 || spheres > 5000) EXPECT_LT(std::stoul(m[2].str()), spheres) << split;
+      if (np >= 3 || spheres > 5000) {
+        EXPECT_LT(std::stoul(m[2].str()), spheres) << split;
+      }
       EXPECT_GE(std::stoul(m[2].str()), own) << split;
     }
   }
@@ -456,12 +458,14 @@ TEST(MwDemMpi, ACheckpointOfTwoRanksIsTheOneProcessFileAndRestartsOnThreeToTheSa
     const auto one = run_tool("mw-dem", with(with(base, outputs("-one")), checkpoint("-one")));
     ASSERT_EQ(one.exit_status, 0) << scene << ": " << one.err;
     // Rank 0 writes each array in pieces of 97 rows here (StateGroup::kPieceRows in a run): they
-    // cut the ranks' sphere ranges and the reporters' runs of slots.
+    // cut the ranks' sphere ranges.
     const auto two = mpirun(2, with(with(base, outputs("-np2")), checkpoint("-np2")), {"MESOWAVE_TEST_CHECKPOINT_PIECE_ROWS=97"});
     ASSERT_EQ(two.exit_status, 0) << scene << ": " << two.err;
     EXPECT_EQ(test::read_file(dir / (scene + "-one.h5")), test::read_file(dir / (scene + "-np2.h5"))) << scene;
     EXPECT_EQ(test::read_file(dir / (scene + "-one.refused.h5")), test::read_file(dir / (scene + "-np2.refused.h5"))) << scene;  // cmp
-    const auto again = mpirun(3, with(with(base, outputs("-np3")), {"--restart", (dir / (scene + "-np2.refused.h5")).string()}));
+    // ... and the restart reads the contact list in rounds of three ranks' 97-row pieces.
+    const auto again = mpirun(3, with(with(base, outputs("-np3")), {"--restart", (dir / (scene + "-np2.refused.h5")).string()}),
+                              {"MESOWAVE_TEST_CHECKPOINT_PIECE_ROWS=97"});
     ASSERT_EQ(again.exit_status, 0) << scene << ": " << again.err;
     EXPECT_EQ(test::read_file(dir / (scene + "-one.h5")), test::read_file(dir / (scene + "-np3.h5"))) << scene;
     EXPECT_EQ(test::read_file(dir / (scene + "-one.csv")), test::read_file(dir / (scene + "-np3.csv"))) << scene;
@@ -477,6 +481,17 @@ TEST(MwDemMpi, ACheckpointOfTwoRanksIsTheOneProcessFileAndRestartsOnThreeToTheSa
   EXPECT_NE(refused.err.find("its bonds are not this packing's"), std::string::npos) << refused.err;
   EXPECT_EQ(occurrences(refused.err, "error: "), 1u) << refused.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "refused.h5"));
+  // Row 100's contact to sphere 864, past the block's: rank 1 reads that row (three ranks, rows
+  // 97-193 its first piece of 97) and finds it, and every rank refuses the checkpoint in one line.
+  std::filesystem::copy_file(dir / "crush-np2.refused.h5", dir / "unfit.h5");
+  ASSERT_NO_FATAL_FAILURE(test::set_a_contacts_second_sphere(dir / "unfit.h5", 100, 864));
+  const auto unfit = mpirun(3, {"run", (dir / "crush.toml").string(), "--quiet", "--threads", "1", "--signals",
+                                (dir / "unfit-signals.h5").string(), "--restart", (dir / "unfit.h5").string()},
+                            {"MESOWAVE_TEST_CHECKPOINT_PIECE_ROWS=97"});
+  EXPECT_EQ(unfit.exit_status, 1) << unfit.err;
+  EXPECT_NE(unfit.err.find("its contacts do not fit this packing's 864 spheres"), std::string::npos) << unfit.err;
+  EXPECT_EQ(occurrences(unfit.err, "error: "), 1u) << unfit.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "unfit-signals.h5"));
 }
 
 // SIGTERM to rank 1 alone, mid-run (Slurm signals each task itself, at its own moment): the

@@ -38,32 +38,6 @@ void set_row(SphereSet& s, std::size_t k, const double* row, double density) {
 __extension__ typedef unsigned __int128 Key;
 Key key_of(std::uint64_t code, std::size_t packing_index) { return (Key(code) << 32) | Key(packing_index); }
 
-// What each rank sends each: out[t] goes to rank t, the result's [r] came from rank r (the
-// lengths travel first, one double each way).
-std::vector<std::vector<double>> all_to_all(Domain& domain, std::vector<std::vector<double>> out) {
-  const int ranks = domain.size(), me = domain.rank();
-  std::vector<double> lengths_out(static_cast<std::size_t>(ranks)), lengths_in(static_cast<std::size_t>(ranks));
-  std::vector<Domain::Message> sends, receives;
-  for (int r = 0; r < ranks; ++r) {
-    if (r == me) continue;
-    lengths_out[std::size_t(r)] = double(out[std::size_t(r)].size());
-    sends.push_back({r, &lengths_out[std::size_t(r)], 1});
-    receives.push_back({r, &lengths_in[std::size_t(r)], 1});
-  }
-  domain.exchange(sends, receives);
-  std::vector<std::vector<double>> in(static_cast<std::size_t>(ranks));
-  in[std::size_t(me)] = std::move(out[std::size_t(me)]);
-  sends.clear(), receives.clear();
-  for (int r = 0; r < ranks; ++r) {
-    if (r == me) continue;
-    in[std::size_t(r)].resize(std::size_t(lengths_in[std::size_t(r)]));
-    if (!out[std::size_t(r)].empty()) sends.push_back({r, out[std::size_t(r)].data(), int(out[std::size_t(r)].size())});
-    if (!in[std::size_t(r)].empty()) receives.push_back({r, in[std::size_t(r)].data(), int(in[std::size_t(r)].size())});
-  }
-  domain.exchange(sends, receives);
-  return in;
-}
-
 // The key at whole position starts[r] of every rank r (first[0] = 0; past the last key, and
 // first[ranks], the largest key): for each, the least bound with more than starts[r] keys of all
 // ranks at most it, bisected with one sum of the ranks' counts a step (integers: exact).
@@ -140,8 +114,7 @@ SpherePart::SpherePart(const Packing& rows, double density, Domain& domain, doub
     const auto r = std::size_t(std::upper_bound(first.begin() + 1, first.end(), key) - first.begin()) - 1;
     append_row(rows, i, out[r]);
   }
-  std::vector<double> arrived;
-  for (auto& piece : all_to_all(domain, std::move(out))) arrived.insert(arrived.end(), piece.begin(), piece.end());
+  const std::vector<double> arrived = exchanged_lists(domain, std::move(out));
   if (arrived.size() != kRow * own_) throw std::logic_error("SpherePart: the Morton sort gave this rank another count than its range");
   keys.resize(own_);
   for (std::size_t k = 0; k < own_; ++k) {
@@ -183,8 +156,7 @@ SpherePart::SpherePart(const Packing& rows, double density, Domain& domain, doub
       out[std::size_t(t)].push_back(double(begin_ + k));
     }
   }
-  std::vector<double> layer;  // ranks in order, each ascending: ascending whole index
-  for (auto& piece : all_to_all(domain, std::move(out))) layer.insert(layer.end(), piece.begin(), piece.end());
+  const std::vector<double> layer = exchanged_lists(domain, std::move(out));  // ranks in order, each ascending: ascending whole index
   const std::size_t layers = layer.size() / (kRow + 1);
   set_ = sphere_set_of_size(own_ + layers, true);
   for (std::size_t k = 0; k < own_; ++k) set_row(set_, k, &arrived[kRow * keys[k].second], density);

@@ -234,6 +234,13 @@ public:
   /// are in the whole layout's order, so a law that read its held slots' rows ascending has them
   /// in place.
   std::vector<double> read_slots(const StateGroup& group, const std::string& name) const;
+  /// A restart's contact list (arrays `first` and `second`, `rows` rows, a checkpoint's whole
+  /// layout) on several ranks, collective: each rank reads a share of the rows, a piece at a
+  /// time, checks each contact against the packing (first < second < the sphere count) and sends
+  /// it to the ranks of its ends. Gives every held contact (an end of this rank's own) with its
+  /// row (`rows_held`, ascending) and spheres; false, on every rank, if a contact does not fit.
+  bool read_held_contacts(const StateGroup& group, std::size_t rows, std::vector<std::uint32_t>& rows_held,
+                          std::vector<std::uint32_t>& first, std::vector<std::uint32_t>& second) const;
   std::uint32_t first(std::size_t slot) const { return first_[slot]; }  ///< local ids
   std::uint32_t second(std::size_t slot) const { return second_[slot]; }
   /// Largest |v| after the last step.

@@ -12,6 +12,8 @@
 // The only reductions are max and the integer sum, which are exact in any order.
 // exchange() is the point-to-point part: each rank sends its neighbours the motion of
 // the spheres they hold as ghosts (stage 2, docs/mpi.md), nothing to anyone else.
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -80,6 +82,33 @@ inline std::vector<double> gathered_lists(Domain& domain, const std::vector<doub
   std::vector<double> all(total);
   domain.gather_all(mine.data(), int(mine.size()), all.data(), counts, displs);
   return all;
+}
+
+/// What every rank sends this one, one after the other in rank order: out[t] goes to rank t (this
+/// rank's own, out[rank], stays). The lengths travel first, one double each way.
+inline std::vector<double> exchanged_lists(Domain& domain, std::vector<std::vector<double>> out) {
+  const auto ranks = static_cast<std::size_t>(domain.size()), me = static_cast<std::size_t>(domain.rank());
+  std::vector<double> lengths_out(ranks), lengths_in(ranks);
+  std::vector<Domain::Message> sends, receives;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    if (r == me) continue;
+    lengths_out[r] = double(out[r].size());
+    sends.push_back({int(r), &lengths_out[r], 1});
+    receives.push_back({int(r), &lengths_in[r], 1});
+  }
+  domain.exchange(sends, receives);
+  std::vector<std::size_t> at(ranks + 1, 0);  // where rank r's list starts in the result
+  for (std::size_t r = 0; r < ranks; ++r) at[r + 1] = at[r] + (r == me ? out[r].size() : std::size_t(lengths_in[r]));
+  std::vector<double> in(at[ranks]);
+  std::copy(out[me].begin(), out[me].end(), in.begin() + std::ptrdiff_t(at[me]));
+  sends.clear(), receives.clear();
+  for (std::size_t r = 0; r < ranks; ++r) {
+    if (r == me) continue;
+    if (!out[r].empty()) sends.push_back({int(r), out[r].data(), int(out[r].size())});
+    if (at[r + 1] > at[r]) receives.push_back({int(r), in.data() + at[r], int(at[r + 1] - at[r])});
+  }
+  domain.exchange(sends, receives);
+  return in;
 }
 
 /// A floating-point sum in the serial order of parts held rank after rank (rank r's part comes

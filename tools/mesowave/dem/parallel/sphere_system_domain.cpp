@@ -837,6 +837,36 @@ void SphereSystem::write_spheres(StateGroup& group, const std::string& name, con
   }
 }
 
+// Round k reads rows [k P N, (k + 1) P N) (P a piece's rows, N ranks), rank r its piece
+// [k P N + r P, k P N + (r + 1) P): what arrives, rank after rank and round after round, is in row
+// order, so the held contacts need no sort (and no more than their 12 B each).
+bool SphereSystem::read_held_contacts(const StateGroup& group, std::size_t rows, std::vector<std::uint32_t>& rows_held,
+                                      std::vector<std::uint32_t>& first, std::vector<std::uint32_t>& second) const {
+  const auto ranks = static_cast<std::size_t>(domain_->size()), me = static_cast<std::size_t>(rank_);
+  const std::size_t piece_rows = checkpoint_piece_rows();
+  bool fits = true;
+  rows_held.clear(), first.clear(), second.clear();
+  for (std::size_t round = 0; round * piece_rows * ranks < rows; ++round) {
+    const std::size_t start = std::min(rows, (round * ranks + me) * piece_rows);
+    const std::size_t count = std::min(rows, start + piece_rows) - start;
+    const auto f = group.read_uint32s("first", start, count), g = group.read_uint32s("second", start, count);
+    std::vector<std::vector<double>> out(ranks);
+    for (std::size_t q = 0; q < count; ++q) {
+      if (!(f[q] < g[q] && g[q] < sphere_total_)) {
+        fits = false;  // not sent: its ends may be no rank's
+        continue;
+      }
+      const auto a = std::size_t(owner(f[q])), b = std::size_t(owner(g[q]));
+      out[a].insert(out[a].end(), {double(start + q), double(f[q]), double(g[q])});
+      if (b != a) out[b].insert(out[b].end(), {double(start + q), double(f[q]), double(g[q])});
+    }
+    const std::vector<double> in = exchanged_lists(*domain_, std::move(out));
+    for (std::size_t c = 0; c < in.size(); c += 3)
+      rows_held.push_back(std::uint32_t(in[c])), first.push_back(std::uint32_t(in[c + 1])), second.push_back(std::uint32_t(in[c + 2]));
+  }
+  return domain_->sum(fits ? 0 : 1) == 0;
+}
+
 std::string SphereSystem::distribution() const {
   if (!domain_) return {};
   const std::size_t steps = std::max<std::uint64_t>(shared_steps_, 1);
