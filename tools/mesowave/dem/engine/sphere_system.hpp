@@ -387,7 +387,7 @@ private:
   /// the own spheres of the ranks whose range meets it (collective; a checkpoint).
   void write_spheres(StateGroup& group, const std::string& name, const std::vector<Vec3>& held) const;
   /// Distributed: rank 0 gets the whole array (global ids) gathered from each rank's own
-  /// spheres, the other ranks an empty one (collective).
+  /// spheres, the other ranks an empty one (collective; the snapshots' collect_state).
   template <class T>  // Vec3 or double
   std::vector<T> gathered_spheres(const std::vector<T>& held) const;
   Incidence cross_incidence_;                  ///< entries index out_ (slot - cross_begin_)

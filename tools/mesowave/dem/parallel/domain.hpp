@@ -84,9 +84,10 @@ inline std::vector<double> gathered_lists(Domain& domain, const std::vector<doub
   return all;
 }
 
-/// What every rank sends this one, one after the other in rank order: out[t] goes to rank t (this
-/// rank's own, out[rank], stays). The lengths travel first, one double each way.
-inline std::vector<double> exchanged_lists(Domain& domain, std::vector<std::vector<double>> out) {
+/// What every rank sends this one, one after the other in rank order, into `in`: out[t] goes to
+/// rank t (this rank's own, out[rank], stays; `out` is read, not changed). The lengths travel
+/// first, one double each way.
+inline void exchange_lists(Domain& domain, std::vector<std::vector<double>>& out, std::vector<double>& in) {
   const auto ranks = static_cast<std::size_t>(domain.size()), me = static_cast<std::size_t>(domain.rank());
   std::vector<double> lengths_out(ranks), lengths_in(ranks);
   std::vector<Domain::Message> sends, receives;
@@ -97,9 +98,9 @@ inline std::vector<double> exchanged_lists(Domain& domain, std::vector<std::vect
     receives.push_back({int(r), &lengths_in[r], 1});
   }
   domain.exchange(sends, receives);
-  std::vector<std::size_t> at(ranks + 1, 0);  // where rank r's list starts in the result
+  std::vector<std::size_t> at(ranks + 1, 0);  // where rank r's list starts in `in`
   for (std::size_t r = 0; r < ranks; ++r) at[r + 1] = at[r] + (r == me ? out[r].size() : std::size_t(lengths_in[r]));
-  std::vector<double> in(at[ranks]);
+  in.resize(at[ranks]);
   std::copy(out[me].begin(), out[me].end(), in.begin() + std::ptrdiff_t(at[me]));
   sends.clear(), receives.clear();
   for (std::size_t r = 0; r < ranks; ++r) {
@@ -108,6 +109,12 @@ inline std::vector<double> exchanged_lists(Domain& domain, std::vector<std::vect
     if (at[r + 1] > at[r]) receives.push_back({int(r), in.data() + at[r], int(at[r + 1] - at[r])});
   }
   domain.exchange(sends, receives);
+}
+
+/// exchange_lists into a new list; `out` is spent.
+inline std::vector<double> exchanged_lists(Domain& domain, std::vector<std::vector<double>> out) {
+  std::vector<double> in;
+  exchange_lists(domain, out, in);
   return in;
 }
 

@@ -846,11 +846,13 @@ bool SphereSystem::read_held_contacts(const StateGroup& group, std::size_t rows,
   const std::size_t piece_rows = checkpoint_piece_rows();
   bool fits = true;
   rows_held.clear(), first.clear(), second.clear();
+  std::vector<std::vector<double>> out(ranks);  // a round's, kept from round to round (no churn of the heap)
+  std::vector<double> in;
   for (std::size_t round = 0; round * piece_rows * ranks < rows; ++round) {
     const std::size_t start = std::min(rows, (round * ranks + me) * piece_rows);
     const std::size_t count = std::min(rows, start + piece_rows) - start;
     const auto f = group.read_uint32s("first", start, count), g = group.read_uint32s("second", start, count);
-    std::vector<std::vector<double>> out(ranks);
+    for (auto& o : out) o.clear();
     for (std::size_t q = 0; q < count; ++q) {
       if (!(f[q] < g[q] && g[q] < sphere_total_)) {
         fits = false;  // not sent: its ends may be no rank's
@@ -860,7 +862,7 @@ bool SphereSystem::read_held_contacts(const StateGroup& group, std::size_t rows,
       out[a].insert(out[a].end(), {double(start + q), double(f[q]), double(g[q])});
       if (b != a) out[b].insert(out[b].end(), {double(start + q), double(f[q]), double(g[q])});
     }
-    const std::vector<double> in = exchanged_lists(*domain_, std::move(out));
+    exchange_lists(*domain_, out, in);
     for (std::size_t c = 0; c < in.size(); c += 3)
       rows_held.push_back(std::uint32_t(in[c])), first.push_back(std::uint32_t(in[c + 1])), second.push_back(std::uint32_t(in[c + 2]));
   }
