@@ -1,10 +1,13 @@
 // The HDF5 readers on files mesowave did not write: an attribute or dataset of
 // another shape or type than the layout says is an InputError naming it - HDF5
 // would otherwise convert into a buffer sized for one value (an overflow) or
-// fail as an internal error (docs/fuzzing.md, crashes 1 and 2).
+// fail as an internal error (docs/fuzzing.md, crashes 1 and 2). And the piecewise
+// writer against the whole one.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -101,4 +104,34 @@ TEST(Hdf5Read, ADatasetMustStoreWhatItClaims) {
   EXPECT_EQ(h5::read_doubles(file.id(), "small"), std::vector<double>(10, 0.0));
   EXPECT_EQ(test::input_error_of([&] { h5::read_doubles(file.id(), "huge"); }),
             "HDF5 dataset 'huge' claims 16777216 values but stores 0 bytes (a damaged file)");
+}
+
+// A distributed checkpoint's rank 0 writes each array a piece at a time (dem/engine/state_group.hpp):
+// once every row is written, in any order of pieces, the file is the one the whole writers make,
+// byte for byte (the MPI tests compare such checkpoints with one process's by cmp).
+TEST(Hdf5Write, RowsWrittenInPiecesMakeTheWholeWritersFile) {
+  test::TempDir dir;
+  std::vector<double> xyz(3 * 1000);
+  for (std::size_t k = 0; k < xyz.size(); ++k) xyz[k] = 0.001 * double(k) - 1.0;
+  std::vector<std::int64_t> ids(777);
+  for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = std::int64_t(k * k) - 300;
+  {
+    auto file = h5::create_file(dir.path() / "whole.h5");
+    h5::write_doubles(file.id(), "xyz", xyz, 3);
+    h5::write_int64s(file.id(), "ids", ids);
+  }
+  {
+    auto file = h5::create_file(dir.path() / "pieces.h5");
+    h5::RowWriter rows(file.id(), "xyz", 1000, 3, false);
+    const auto piece = [&](std::size_t first, std::size_t end) {
+      rows.write_rows(first, std::vector<double>(xyz.begin() + std::ptrdiff_t(3 * first), xyz.begin() + std::ptrdiff_t(3 * end)));
+    };
+    piece(500, 1000), piece(0, 97), piece(97, 500);
+    EXPECT_THROW(rows.write_rows(999, std::vector<double>(6, 0.0)), std::logic_error);  // past the last row
+    EXPECT_THROW(rows.write_rows(0, std::vector<double>(4, 0.0)), std::logic_error);    // not whole rows
+    h5::RowWriter indices(file.id(), "ids", 777, 0, true);
+    indices.write_rows(0, std::vector<std::int64_t>(ids.begin(), ids.begin() + 400));
+    indices.write_rows(400, std::vector<std::int64_t>(ids.begin() + 400, ids.end()));
+  }
+  EXPECT_EQ(test::read_file(dir.path() / "whole.h5"), test::read_file(dir.path() / "pieces.h5"));
 }
