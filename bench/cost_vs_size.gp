@@ -5,6 +5,8 @@
 if (!exists("csv")) csv = 'cost-vs-size.csv'
 if (!exists("out")) out = 'cost-vs-size.png'
 set datafile separator ','
+set fit quiet
+set fit logfile '/dev/null'  # no fit.log in the caller's folder (the checkout)
 set terminal pngcairo size 1000,650 font ',11'
 set output out
 set logscale xy

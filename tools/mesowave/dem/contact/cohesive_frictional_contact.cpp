@@ -95,25 +95,15 @@ void CohesiveFrictionalContact::load_state(SphereSystem& system, const StateGrou
   // they are not held beside the checkpoint's whole arrays (the restart's peak).
   for (auto* array : {&nx_, &ny_, &nz_, &sx_, &sy_, &sz_, &overlap0_, &cohesive_}) std::vector<double>().swap(*array);
   std::vector<std::uint32_t>().swap(bond_);
-  // The contact list a piece at a time, checked to fit the packing: one process keeps every slot
-  // (so no list of them); several ranks share the reading, and each gets its held slots (an end
-  // of its own), ascending, with their spheres (read_held_contacts).
+  // The contact list, checked to fit the packing: one process keeps every slot (so no list of
+  // them); several ranks share the reading, and each gets its held slots (an end of its own),
+  // ascending, with their spheres (read_held_contacts). The lengths are the same on every rank.
   const std::size_t n = system.sphere_count(), nb = system.bond_count();
   std::size_t m = 0, m_second = 0;
   group.read_uint32s("first", 0, 0, &m);
   group.read_uint32s("second", 0, 0, &m_second);
-  bool fits = m == m_second && m >= nb;  // the same on every rank: the file's lengths
   std::vector<std::uint32_t> slots, first, second;
-  if (system.distributed() && fits) fits = system.read_held_contacts(group, m, slots, first, second);
-  if (!system.distributed()) first.reserve(m), second.reserve(m);
-  for (std::size_t start = 0; !system.distributed() && fits && start < m; start += StateGroup::kPieceRows) {
-    const std::size_t count = std::min(StateGroup::kPieceRows, m - start);
-    const auto f = group.read_uint32s("first", start, count), g = group.read_uint32s("second", start, count);
-    for (std::size_t q = 0; fits && q < count; ++q) {
-      fits = f[q] < g[q] && g[q] < n;
-      first.push_back(f[q]), second.push_back(g[q]);
-    }
-  }
+  const bool fits = m == m_second && m >= nb && system.read_held_contacts(group, m, slots, first, second);
   if (!fits) throw InputError("checkpoint " + group.where() + ": its contacts do not fit this packing's " +
                               std::to_string(n) + " spheres: the checkpoint is not from this run");
   std::vector<double> cohesive;

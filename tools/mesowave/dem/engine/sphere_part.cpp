@@ -104,11 +104,10 @@ SpherePart::SpherePart(const Packing& rows, double density, Domain& domain, doub
   for (std::size_t i = 0; i < rows.size(); ++i) keys[i] = {key_of(frame.code(rows.centres_m[i]), rows.first_row + i), std::uint32_t(i)};
   std::sort(keys.begin(), keys.end());
 
-  // Each rank's first key: the key at whole position starts[r], bisected on the count of keys up to a bound.
+  // Each rank's first key: the key at whole position starts_[r], bisected on the count of keys up to a bound.
   starts_ = SphereSystem::rank_starts(total_, ranks);
-  const std::vector<std::size_t>& starts = starts_;
-  begin_ = starts[std::size_t(me)], own_ = starts[std::size_t(me) + 1] - begin_;
-  const std::vector<Key> first = first_keys(domain, keys, starts);
+  begin_ = starts_[std::size_t(me)], own_ = starts_[std::size_t(me) + 1] - begin_;
+  const std::vector<Key> first = first_keys(domain, keys, starts_);
   std::vector<std::vector<double>> out(static_cast<std::size_t>(ranks));
   for (const auto& [key, i] : keys) {
     const auto r = std::size_t(std::upper_bound(first.begin() + 1, first.end(), key) - first.begin()) - 1;
@@ -137,10 +136,10 @@ SpherePart::SpherePart(const Packing& rows, double density, Domain& domain, doub
     r_max = std::max(r_max, row[3]);
   }
   const double reach = reach_radii * domain.max(r_max);
-  boxes = gathered_lists(domain, boxes);  // every rank's, in rank order (its blocks from starts[r] / block)
+  boxes = gathered_lists(domain, boxes);  // every rank's, in rank order (its blocks from starts_[r] / block)
   out.assign(static_cast<std::size_t>(ranks), {});
   for (int t = 0; t < ranks; ++t) {
-    const std::size_t b0 = starts[std::size_t(t)] / block, b1 = (starts[std::size_t(t) + 1] + block - 1) / block;
+    const std::size_t b0 = starts_[std::size_t(t)] / block, b1 = (starts_[std::size_t(t) + 1] + block - 1) / block;
     if (t == me || b0 == b1) continue;
     double all[6];  // the box of rank t's blocks
     clear_box(all);

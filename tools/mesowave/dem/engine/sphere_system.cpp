@@ -584,19 +584,16 @@ double SphereSystem::scaled_stiffness_row_sum_bound() const {
 // sums kept per task and per sphere block, in the order they are added - and
 // the law's state. The law goes first: a new contact layout resets the per-task
 // plastic sums, which are then read over it.
-// Distributed, the caller has shared every block's damping (Model::save_state); each sphere array
-// is gathered to rank 0 as it is written, one at a time, and the other ranks' group writes nowhere.
+// Distributed, the caller has shared every block's damping (Model::save_state); rank 0 writes
+// each sphere array a piece at a time from the ranks' own spheres (write_spheres), and the other
+// ranks' group writes nowhere.
 void SphereSystem::save_state(StateGroup& group) const {
-  const auto spheres = [&](const char* name, const std::vector<Vec3>& held) {
-    if (!domain_) return group.write(name, held);
-    write_spheres(group, name, held);
-  };
-  spheres("x", x_);
-  spheres("v", v_);
-  spheres("w", w_);
-  spheres("a", a_);
-  spheres("a_undamped", a_undamped_);
-  if (track_rotation_) spheres("theta", theta_);
+  write_spheres(group, "x", x_);
+  write_spheres(group, "v", v_);
+  write_spheres(group, "w", w_);
+  write_spheres(group, "a", a_);
+  write_spheres(group, "a_undamped", a_undamped_);
+  if (track_rotation_) write_spheres(group, "theta", theta_);
   group.write("peak_ratio", peak_ratio_);
   group.write("max_speed", max_speed_);
   group.write("kinetic_J", energy_.kinetic_J);

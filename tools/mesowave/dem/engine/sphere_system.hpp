@@ -235,10 +235,11 @@ public:
   /// in place.
   std::vector<double> read_slots(const StateGroup& group, const std::string& name) const;
   /// A restart's contact list (arrays `first` and `second`, `rows` rows, a checkpoint's whole
-  /// layout) on several ranks, collective: each rank reads a share of the rows, a piece at a
-  /// time, checks each contact against the packing (first < second < the sphere count) and sends
-  /// it to the ranks of its ends. Gives every held contact (an end of this rank's own) with its
-  /// row (`rows_held`, ascending) and spheres; false, on every rank, if a contact does not fit.
+  /// layout), read a piece at a time, each contact checked against the packing (first < second <
+  /// the sphere count); false, on every rank, if one does not fit. One process keeps every
+  /// contact (`rows_held` stays empty: row c is slot c). Several ranks (collective) each read a
+  /// share of the rows and send each contact to the ranks of its ends: each gets its held
+  /// contacts (an end of its own) with their rows (`rows_held`, ascending).
   bool read_held_contacts(const StateGroup& group, std::size_t rows, std::vector<std::uint32_t>& rows_held,
                           std::vector<std::uint32_t>& first, std::vector<std::uint32_t>& second) const;
   std::uint32_t first(std::size_t slot) const { return first_[slot]; }  ///< local ids
@@ -383,8 +384,8 @@ private:
   /// Distributed write_slots: value(s) of each reported slot s.
   void write_reported_slots(StateGroup& group, const std::string& name, bool indices,
                             const std::function<double(std::uint32_t held_slot)>& value) const;
-  /// Distributed: rank 0 writes the whole array (global ids) a piece at a time, each piece from
-  /// the own spheres of the ranks whose range meets it (collective; a checkpoint).
+  /// A checkpoint's sphere array (global ids). Distributed (collective), rank 0 writes it a piece
+  /// at a time, each piece from the own spheres of the ranks whose range meets it.
   void write_spheres(StateGroup& group, const std::string& name, const std::vector<Vec3>& held) const;
   /// Distributed: rank 0 gets the whole array (global ids) gathered from each rank's own
   /// spheres, the other ranks an empty one (collective; the snapshots' collect_state).

@@ -814,6 +814,7 @@ void SphereSystem::write_slots(StateGroup& group, const std::string& name, const
 // A checkpoint's sphere array: rank 0 writes it a piece at a time, each piece the own spheres of
 // the ranks whose ranges meet it, in rank order (the ranges ascend).
 void SphereSystem::write_spheres(StateGroup& group, const std::string& name, const std::vector<Vec3>& held) const {
+  if (!domain_) return group.write(name, held);
   constexpr std::size_t per = 3;  // doubles a row
   const auto ranks = static_cast<std::size_t>(domain_->size());
   const bool root = rank_ == 0;
@@ -839,13 +840,15 @@ void SphereSystem::write_spheres(StateGroup& group, const std::string& name, con
 
 // Round k reads rows [k P N, (k + 1) P N) (P a piece's rows, N ranks), rank r its piece
 // [k P N + r P, k P N + (r + 1) P): what arrives, rank after rank and round after round, is in row
-// order, so the held contacts need no sort (and no more than their 12 B each).
+// order, so the held contacts need no sort (and no more than their 12 B each). One process reads
+// every piece in order and keeps every contact.
 bool SphereSystem::read_held_contacts(const StateGroup& group, std::size_t rows, std::vector<std::uint32_t>& rows_held,
                                       std::vector<std::uint32_t>& first, std::vector<std::uint32_t>& second) const {
-  const auto ranks = static_cast<std::size_t>(domain_->size()), me = static_cast<std::size_t>(rank_);
+  const auto ranks = static_cast<std::size_t>(domain_ ? domain_->size() : 1), me = static_cast<std::size_t>(rank_);
   const std::size_t piece_rows = checkpoint_piece_rows();
   bool fits = true;
   rows_held.clear(), first.clear(), second.clear();
+  if (!domain_) first.reserve(rows), second.reserve(rows);
   std::vector<std::vector<double>> out(ranks);  // a round's, kept from round to round (no churn of the heap)
   std::vector<double> in;
   for (std::size_t round = 0; round * piece_rows * ranks < rows; ++round) {
@@ -858,15 +861,20 @@ bool SphereSystem::read_held_contacts(const StateGroup& group, std::size_t rows,
         fits = false;  // not sent: its ends may be no rank's
         continue;
       }
+      if (!domain_) {
+        first.push_back(f[q]), second.push_back(g[q]);
+        continue;
+      }
       const auto a = std::size_t(owner(f[q])), b = std::size_t(owner(g[q]));
       out[a].insert(out[a].end(), {double(start + q), double(f[q]), double(g[q])});
       if (b != a) out[b].insert(out[b].end(), {double(start + q), double(f[q]), double(g[q])});
     }
+    if (!domain_) continue;
     exchange_lists(*domain_, out, in);
     for (std::size_t c = 0; c < in.size(); c += 3)
       rows_held.push_back(std::uint32_t(in[c])), first.push_back(std::uint32_t(in[c + 1])), second.push_back(std::uint32_t(in[c + 2]));
   }
-  return domain_->sum(fits ? 0 : 1) == 0;
+  return domain_ ? domain_->sum(fits ? 0 : 1) == 0 : fits;
 }
 
 std::string SphereSystem::distribution() const {
