@@ -8,7 +8,10 @@
 #    CPU time is the steadier figure; the load average is printed before every run), and the
 #    benchmark process's peak RSS (the larger of the two models, built one after the other);
 # one row per size and model as CSV, then the exponent b of cost ~ spheres^b fitted on the rows
-# (least squares in log-log); bench/cost_vs_size.gp draws the CSV.
+# (least squares in log-log); bench/cost_vs_size.gp draws the CSV. Then the step again with every
+# size side by side in one process (bench_dem_sizes: the sizes stepped in turns, so that the
+# machine's drift between the rows above does not enter the exponent), for both models, with its
+# CSV beside (steps-side-by-side-MODEL.csv): the exponent to quote.
 #
 #   bench/cost_vs_size.sh OUT_DIR SIDE[:PACKING] ...    e.g. bench/cost_vs_size.sh /tmp/cvs 32 50:results/concrete-cube/packing.h5 75 150:big.h5
 # BIN (default build/bin).
@@ -23,6 +26,7 @@ csv=$out/cost-vs-size.csv
 load() { cut -d' ' -f1 /proc/loadavg; }
 echo "# machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u +%FT%TZ)" >&2
 echo "side_mm,spheres,bonds,pack_wall_s,pack_cpu_s,pack_peak_rss_MiB,model,wall_ms_per_step,cpu_ms_per_step,cpu_ns_per_bond_step,bench_peak_rss_MiB,bytes_per_sphere,load" > "$csv"
+packings=()
 for spec in "$@"; do
   side=${spec%%:*}; packing=${spec#*:}
   pack_cpu=; pack_rss=
@@ -35,6 +39,7 @@ for spec in "$@"; do
     read -r pack_wall u sy pack_rss < "$out/pack-$side.time"
     pack_cpu=$(awk -v u="$u" -v s="$sy" 'BEGIN { print u + s }'); pack_rss=$((pack_rss / 1024))
   fi
+  packings+=("$packing")
   pack_wall=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1])).get('wall_time_s', ''))" "${packing%.h5}.json" 2>/dev/null || true)
   l=$(load)
   echo "# $(date -u +%T) load $l: bench_dem on $packing (1 thread)" >&2
@@ -76,3 +81,9 @@ if len(r) >= 2:
     p = [(a, float(x["pack_cpu_s"])) for a, x in zip(n, r) if x["pack_cpu_s"]]
     if len(p) >= 2: print(f"exponent of the packing's CPU against spheres: {fit([a for a, _ in p], [b for _, b in p]):.3f}")
 PY
+if [ "${#packings[@]}" -ge 2 ]; then
+  for model in linear full; do
+    echo "# $(date -u +%T) load $(load): bench_dem_sizes --model $model ($THREADS thread(s)), the sizes side by side" >&2
+    "$BIN/bench_dem_sizes" --model "$model" --threads "$THREADS" --csv "$out/steps-side-by-side-$model.csv" "${packings[@]}" 2>/dev/null
+  done
+fi

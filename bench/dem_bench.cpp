@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "dem_step_model.hpp"
 #include "mesowave/core/threads.hpp"
 #include "mesowave/dem/contact/cohesive_frictional_contact.hpp"
 #include "mesowave/dem/contact/linear_bonded_network.hpp"
@@ -60,32 +61,15 @@ const Packing& cube() {
   return p;
 }
 
-CohesiveFrictionalMaterial concrete() {
-  CohesiveFrictionalMaterial m;
-  m.E_dem_Pa = 23.31e9;
-  m.stiffness_ratio = 0.32;
-  m.friction_angle_rad = 18.0 * 3.14159265358979 / 180;
-  m.tensile_strength_Pa = m.cohesion_Pa = 24.4e6;
-  m.density_kg_m3 = cube().particle_density_kg_m3 > 0 ? cube().particle_density_kg_m3 : 2290;
-  m.damping = 0.01;
-  m.bond_factor = 1.1;
-  return m;
-}
-
 template <class Law>
 void step_benchmark(benchmark::State& state) {
   mesowave::use_threads(int(state.range(0)));
-  const auto m = concrete();
-  SphereSet s = make_sphere_set(cube(), m.density_kg_m3);
-  BondNetwork b = make_bond_network(s, m.bond_factor);
-  SphereSystem model(std::move(s), std::move(b), m, std::make_unique<Law>());
-  for (std::size_t k = 0; k < 50; ++k) model.add_external_force(k, {1e-3, 0, 0});
-  for (int i = 0; i < 20; ++i) model.step(5e-8, false);  // warm the caches
-  for (auto _ : state) model.step(5e-8, false);
-  state.counters["spheres"] = double(model.sphere_count());
-  state.counters["bonds"] = double(model.bond_count());
+  const auto model = mesowave::bench::step_model<Law>(cube());
+  for (auto _ : state) model->step(5e-8, false);
+  state.counters["spheres"] = double(model->sphere_count());
+  state.counters["bonds"] = double(model->bond_count());
   state.counters["ns_per_bond_step"] =
-      benchmark::Counter(double(model.bond_count()) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+      benchmark::Counter(double(model->bond_count()) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.SetItemsProcessed(state.iterations());
 }
 
@@ -93,7 +77,7 @@ void BM_FullLawStep(benchmark::State& state) { step_benchmark<CohesiveFrictional
 void BM_LinearNetworkStep(benchmark::State& state) { step_benchmark<LinearBondedNetwork>(state); }
 
 void BM_BondDetection(benchmark::State& state) {
-  const auto m = concrete();
+  const auto m = mesowave::bench::concrete(cube());
   const SphereSet s = make_sphere_set(cube(), m.density_kg_m3);
   for (auto _ : state) benchmark::DoNotOptimize(make_bond_network(s, m.bond_factor));
 }

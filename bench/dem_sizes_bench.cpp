@@ -1,0 +1,111 @@
+// Cost of the DEM step against size, side by side (issue 17 item 5; docs/benchmarks.md, "Cost
+// against size", session 5): one model per packing, all in one process, stepped in turns - a
+// block of steps of the first, then of the second, ... - for several rounds, so that every size
+// sees the same machine. On the shared VMs the speed of memory wanders by up to 2x over minutes:
+// sizes measured one after the other (cost_vs_size.sh) mix that drift into the exponent.
+// Prints each size's median ms per step over the rounds (and quartiles), the ns per bond-step,
+// and the exponent b of ms per step ~ spheres^b (least squares in log-log).
+//
+//   build/bin/bench_dem_sizes --model linear --threads 1 p32.h5 p50.h5 p75.h5 p150.h5
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dem_step_model.hpp"
+#include "mesowave/core/threads.hpp"
+#include "mesowave/dem/contact/cohesive_frictional_contact.hpp"
+#include "mesowave/dem/contact/linear_bonded_network.hpp"
+
+using namespace mesowave;
+
+namespace {
+
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  return v[std::size_t(std::lround(q * double(v.size() - 1)))];
+}
+
+/// The slope of log y against log x (least squares).
+double exponent(const std::vector<double>& x, const std::vector<double>& y) {
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) mx += std::log(x[i]), my += std::log(y[i]);
+  mx /= double(x.size()), my /= double(x.size());
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double dx = std::log(x[i]) - mx;
+    sxy += dx * (std::log(y[i]) - my), sxx += dx * dx;
+  }
+  return sxy / sxx;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"The DEM step's cost against size: the packings' models stepped in turns in one process"};
+  std::string model_name = "linear", csv;
+  int threads = 1, rounds = 12;
+  double block_ms = 500;
+  std::vector<std::string> packings;
+  app.add_option("--model", model_name, "Contact law: linear (the linearised network) or full")
+      ->check(CLI::IsMember({"linear", "full"}));
+  app.add_option("--threads", threads, "Threads per step")->check(CLI::PositiveNumber);
+  app.add_option("--rounds", rounds, "Turns per model (the medians are over these)")->check(CLI::PositiveNumber);
+  app.add_option("--block-ms", block_ms, "Wall time of one turn [ms] (whole steps: at least one)")->check(CLI::PositiveNumber);
+  app.add_option("--csv", csv, "Also write one row per packing to this CSV file");
+  app.add_option("packings", packings, "mw-pack packing files (HDF5), smallest first")->required()->check(CLI::ExistingFile);
+  CLI11_PARSE(app, argc, argv);
+  if (packings.size() < 2) {
+    std::fprintf(stderr, "error: give at least two packings (an exponent needs two sizes), got %zu\n", packings.size());
+    return 1;
+  }
+
+  use_threads(threads);
+  std::vector<std::unique_ptr<dem::SphereSystem>> models;
+  for (const std::string& file : packings) {
+    const dem::Packing packing = dem::read_packing_file(file);
+    models.push_back(model_name == "full" ? bench::step_model<dem::CohesiveFrictionalContact>(packing)
+                                          : bench::step_model<dem::LinearBondedNetwork>(packing));
+    std::fprintf(stderr, "# %s: %zu spheres, %zu bonds, built\n", file.c_str(), models.back()->sphere_count(),
+                 models.back()->bond_count());
+  }
+  std::vector<std::vector<double>> ms_per_step(models.size());
+  for (int round = 0; round < rounds; ++round)
+    for (std::size_t m = 0; m < models.size(); ++m) {
+      models[m]->step(5e-8, false);  // the caches hold the last model's data: one step to take them back
+      const auto start = std::chrono::steady_clock::now();
+      int steps = 0;
+      double ms = 0;
+      do {
+        models[m]->step(5e-8, false);
+        ++steps;
+        ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      } while (ms < block_ms);
+      ms_per_step[m].push_back(ms / steps);
+    }
+
+  std::ofstream out;
+  if (!csv.empty()) {
+    out.open(csv);
+    out << "packing,model,threads,spheres,bonds,rounds,ms_per_step_median,ms_per_step_q1,ms_per_step_q3,ns_per_bond_step\n";
+  }
+  std::vector<double> spheres, medians;
+  std::printf("# %s, %d thread(s), %d rounds of %.0f ms a model\n", model_name.c_str(), threads, rounds, block_ms);
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    const double median = quantile(ms_per_step[m], 0.5), q1 = quantile(ms_per_step[m], 0.25), q3 = quantile(ms_per_step[m], 0.75);
+    const double bonds = double(models[m]->bond_count()), ns_per_bond = 1e6 * median / bonds;
+    std::printf("%-40s %9zu spheres %9.0f bonds  %9.4g ms/step (quartiles %.4g-%.4g)  %6.3g ns/bond-step\n", packings[m].c_str(),
+                models[m]->sphere_count(), bonds, median, q1, q3, ns_per_bond);
+    if (out) out << packings[m] << ',' << model_name << ',' << threads << ',' << models[m]->sphere_count() << ',' << bonds << ','
+                 << rounds << ',' << median << ',' << q1 << ',' << q3 << ',' << ns_per_bond << '\n';
+    spheres.push_back(double(models[m]->sphere_count())), medians.push_back(median);
+  }
+  std::printf("exponent b of ms/step ~ spheres^b: %.3f\n", exponent(spheres, medians));
+  return 0;
+}
