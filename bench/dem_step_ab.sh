@@ -3,7 +3,13 @@
 # near the memory limit"): bench_dem of build A and of build B alternated A, B, A, B, ... in one
 # script, benchmark by benchmark, so that both see the same load; the 1-minute load average is
 # printed before each run.
-# Medians over the rounds (the `median` lines at the end), per benchmark and build.
+# The order alternates from round to round (A B, then B A), so that a drift of the machine within a
+# pair favours neither; at the end, per benchmark and build the medians over the rounds, and per
+# benchmark the median of the rounds' ratios B/A with its quartiles: the figure to quote. (The
+# host's memory speed can drift by 2x within minutes: rounds far apart in time compare badly, and
+# a few rounds can show a steady gain that is not there - docs/benchmarks.md, "The step near the
+# memory limit", fifth part. For a switch the step reads at run time, A against B in one process
+# is better still.)
 #
 #   MESOWAVE_BENCH_PACKING=cube.h5 bench/dem_step_ab.sh OLD/bin/bench_dem NEW/bin/bench_dem [rounds] [filter] [min_time]
 set -euo pipefail
@@ -20,20 +26,30 @@ echo "# $(date -u +%FT%TZ) A=$A B=$B rounds=$ROUNDS filter=$FILTER min_time=$MIN
 names=$("$A" --benchmark_list_tests=true --benchmark_filter="$FILTER" 2>/dev/null)
 for round in $(seq 1 "$ROUNDS"); do
   for name in $names; do
-    for side in A B; do
+    order="A B"
+    [ $((round % 2)) = 0 ] && order="B A"
+    for side in $order; do
       bin=$A
       [ "$side" = B ] && bin=$B
       echo "# round $round $side load $(cut -d' ' -f1 /proc/loadavg)"
       "$bin" --benchmark_filter="^$name\$" --benchmark_min_time="$MIN_TIME" 2>/dev/null | grep '^BM_' |
-        sed "s/^/$side /" | tee -a "$out"
+        sed "s/^/$side $round /" | tee -a "$out"
     done
   done
 done
-# Median of the wall and CPU ms per benchmark and side.
-awk '{name = $1 " " $2; sub(/\/min_time.*/, "", name); wall[name] = wall[name] " " $3; cpu[name] = cpu[name] " " $5}
-  function median(list,   v, n, i, j, t) {
-    n = split(list, v, " ")
-    for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (v[j] + 0 < v[i] + 0) { t = v[i]; v[i] = v[j]; v[j] = t }
-    return n % 2 ? v[(n + 1) / 2] : (v[n / 2] + v[n / 2 + 1]) / 2
-  }
-  END { for (k in wall) printf "median %-32s wall %8.3f ms  cpu %8.3f ms\n", k, median(wall[k]), median(cpu[k]) }' "$out" | sort -k3,3 -k2,2
+# Medians of the wall and CPU ms per benchmark and side, and of the ratios B/A per benchmark.
+python3 - "$out" <<'PY'
+import collections, statistics, sys
+wall, cpu, pair = collections.defaultdict(list), collections.defaultdict(list), collections.defaultdict(dict)
+for line in open(sys.argv[1]):
+    side, rnd, name, w, _, c = line.split()[:6]
+    name = name.split('/min_time')[0]
+    wall[(name, side)].append(float(w)), cpu[(name, side)].append(float(c))
+    pair[(name, rnd)][side] = float(w)
+for key in sorted(wall):
+    print(f"median {key[1]} {key[0]:<32} wall {statistics.median(wall[key]):8.3f} ms  cpu {statistics.median(cpu[key]):8.3f} ms")
+for name in sorted({k[0] for k in pair}):
+    r = sorted(v['B'] / v['A'] for k, v in pair.items() if k[0] == name and len(v) == 2)
+    q = lambda f: r[round(f * (len(r) - 1))]
+    print(f"ratio B/A {name:<32} median {q(0.5):.3f} (quartiles {q(0.25):.3f}-{q(0.75):.3f}) over {len(r)} rounds")
+PY
