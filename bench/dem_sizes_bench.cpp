@@ -27,6 +27,7 @@ using namespace mesowave;
 
 namespace {
 
+/// The value of rank q (n - 1), rounded (the median of an even count: the upper middle value).
 double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
   return v[std::size_t(std::lround(q * double(v.size() - 1)))];
