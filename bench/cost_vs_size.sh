@@ -4,8 +4,9 @@
 #  - the packing: mw-pack box --cube-side-mm SIDE (wall, CPU, peak RSS), or an existing packing's
 #    wall time from its summary when one is given (SIDE:FILE);
 #  - the wave step: bench_dem's step benchmarks on that packing (MESOWAVE_BENCH_PACKING), the
-#    linearised network and the full law, one thread: wall and CPU per step (the machine is shared:
-#    CPU time is the steadier figure; the load average is printed before every run), and the
+#    linearised network and the full law, THREADS threads (default 1): wall and CPU per step (the machine is shared:
+#    CPU time is the steadier figure, on one thread: Google Benchmark counts the main thread only;
+#    the load average is printed before every run), and the
 #    benchmark process's peak RSS (the larger of the two models, built one after the other);
 # one row per size and model as CSV, then the exponent b of cost ~ spheres^b fitted on the rows
 # (least squares in log-log); bench/cost_vs_size.gp draws the CSV. Then the step again with every
@@ -42,9 +43,9 @@ for spec in "$@"; do
   packings+=("$packing")
   pack_wall=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1])).get('wall_time_s', ''))" "${packing%.h5}.json" 2>/dev/null || true)
   l=$(load)
-  echo "# $(date -u +%T) load $l: bench_dem on $packing (1 thread)" >&2
+  echo "# $(date -u +%T) load $l: bench_dem on $packing ($THREADS thread(s))" >&2
   MESOWAVE_BENCH_PACKING=$packing /usr/bin/time -f '%M' -o "$out/bench.time" "$BIN/bench_dem" \
-    --benchmark_filter='BM_(FullLaw|LinearNetwork)Step/1/' --benchmark_format=json > "$out/bench-$side.json"
+    --benchmark_filter="BM_(FullLaw|LinearNetwork)Step/$THREADS/" --benchmark_format=json > "$out/bench-$side.json"
   python3 - "$out/bench-$side.json" "$side" "$pack_wall" "$pack_cpu" "$pack_rss" "$(cat "$out/bench.time")" "$l" >> "$csv" <<'PY'
 import json, sys
 b = json.load(open(sys.argv[1]))["benchmarks"]

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Two builds' DEM step timed against each other on a shared machine (docs/benchmarks.md, "The step
-# near the memory limit"): bench_dem of build A and of build B alternated A, B, A, B, ... in one
-# script, benchmark by benchmark, so that both see the same load; the 1-minute load average is
+# near the memory limit"): bench_dem of build A and of build B alternated in one script, benchmark
+# by benchmark, so that both see the same load; the 1-minute load average is
 # printed before each run.
 # The order alternates from round to round (A B, then B A), so that a drift of the machine within a
 # pair favours neither; at the end, per benchmark and build the medians over the rounds, and per
@@ -22,7 +22,7 @@ MIN_TIME=${5:-1}
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 echo "# $(date -u +%FT%TZ) A=$A B=$B rounds=$ROUNDS filter=$FILTER min_time=$MIN_TIME"
-# Alternated per benchmark (A, B on one benchmark, then the next), so that a pair sees the same load.
+# Alternated per benchmark (A and B on one benchmark, then the next), so that a pair sees the same load.
 names=$("$A" --benchmark_list_tests=true --benchmark_filter="$FILTER" 2>/dev/null)
 for round in $(seq 1 "$ROUNDS"); do
   for name in $names; do

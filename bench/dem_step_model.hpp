@@ -5,7 +5,6 @@
 // steps to warm the caches.
 #include <memory>
 
-#include "mesowave/dem/engine/simulation.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
 #include "mesowave/dem/packing/packing_file.hpp"
 
