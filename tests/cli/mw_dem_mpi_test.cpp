@@ -484,7 +484,7 @@ TEST(MwDemMpi, ACheckpointOfTwoRanksIsTheOneProcessFileAndRestartsOnThreeToTheSa
   // Row 100's contact to sphere 864, past the block's: rank 1 reads that row (three ranks, rows
   // 97-193 its first piece of 97) and finds it, and every rank refuses the checkpoint in one line.
   std::filesystem::copy_file(dir / "crush-np2.refused.h5", dir / "unfit.h5");
-  ASSERT_NO_FATAL_FAILURE(test::set_a_contacts_second_sphere(dir / "unfit.h5", 100, 864));
+  ASSERT_NO_FATAL_FAILURE(test::set_a_contacts_end(dir / "unfit.h5", "second", 100, 864));
   const auto unfit = mpirun(3, {"run", (dir / "crush.toml").string(), "--quiet", "--threads", "1", "--signals",
                                 (dir / "unfit-signals.h5").string(), "--restart", (dir / "unfit.h5").string()},
                             {"MESOWAVE_TEST_CHECKPOINT_PIECE_ROWS=97"});
@@ -492,6 +492,25 @@ TEST(MwDemMpi, ACheckpointOfTwoRanksIsTheOneProcessFileAndRestartsOnThreeToTheSa
   EXPECT_NE(unfit.err.find("its contacts do not fit this packing's 864 spheres"), std::string::npos) << unfit.err;
   EXPECT_EQ(occurrences(unfit.err, "error: "), 1u) << unfit.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "unfit-signals.h5"));
+  // Values that are no index in rows read by three ranks (97-row pieces: rows 100 and 200 are the
+  // first round's of ranks 1 and 2, row 300 the second round's of rank 0): every rank refuses the
+  // checkpoint with the one line one process prints, for the file's first (was: whichever rank
+  // printed first, often two lines).
+  std::filesystem::copy_file(dir / "crush-np2.refused.h5", dir / "nonindex.h5");
+  ASSERT_NO_FATAL_FAILURE(test::set_a_contacts_end(dir / "nonindex.h5", "first", 100, -7));
+  ASSERT_NO_FATAL_FAILURE(test::set_a_contacts_end(dir / "nonindex.h5", "second", 200, std::int64_t(1) << 40));
+  ASSERT_NO_FATAL_FAILURE(test::set_a_contacts_end(dir / "nonindex.h5", "first", 300, -3));
+  const std::string nonindex = "nonindex.h5:/model/law/first holds -7, not an index";
+  const std::vector<std::string> restart = {"run", (dir / "crush.toml").string(), "--quiet", "--threads", "1", "--signals",
+                                            (dir / "nonindex-signals.h5").string(), "--restart", (dir / "nonindex.h5").string()};
+  const auto one_refused = run_tool("mw-dem", restart);
+  EXPECT_EQ(one_refused.exit_status, 1) << one_refused.err;
+  EXPECT_NE(one_refused.err.find(nonindex), std::string::npos) << one_refused.err;
+  const auto three_refused = mpirun(3, restart, {"MESOWAVE_TEST_CHECKPOINT_PIECE_ROWS=97"});
+  EXPECT_EQ(three_refused.exit_status, 1) << three_refused.err;
+  EXPECT_NE(three_refused.err.find(nonindex), std::string::npos) << three_refused.err;
+  EXPECT_EQ(occurrences(three_refused.err, "error: "), 1u) << three_refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "nonindex-signals.h5"));
 }
 
 // SIGTERM to rank 1 alone, mid-run (Slurm signals each task itself, at its own moment): the

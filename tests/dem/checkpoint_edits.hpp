@@ -2,7 +2,8 @@
 // Checkpoints damaged on purpose, for the tests that a restart refuses them (dem.Checkpoint, and
 // cli.MwDemMpi on several ranks): the law's first slot given the bond index of the last bonded
 // slot, so that bond is in two slots and the first slot's own bond in none; or a contact's sphere
-// past the packing's. Every other array is left as written, so only one check can tell.
+// past the packing's, or not an index at all. Every other array is left as written, so only one
+// check can tell.
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -25,8 +26,11 @@ void edit_law_indices(const std::filesystem::path& checkpoint, const std::string
   std::vector<std::int64_t> values(std::size_t(H5Sget_simple_extent_npoints(space)));
   ASSERT_GE(H5Dread(d, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
   edit(values);
-  ASSERT_GE(H5Dwrite(d, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+  // An ASSERT inside edit ends edit alone: then nothing is written back (the test fails anyway).
+  const bool edited = !::testing::Test::HasFatalFailure();
+  const herr_t written = edited ? H5Dwrite(d, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) : 0;
   H5Sclose(space), H5Dclose(d), H5Fclose(f);
+  ASSERT_GE(written, 0) << checkpoint << ": " << name;
 }
 
 inline void give_the_first_slot_the_last_bond(const std::filesystem::path& checkpoint) {
@@ -38,12 +42,13 @@ inline void give_the_first_slot_the_last_bond(const std::filesystem::path& check
   });
 }
 
-/// The law's contact list with row `row`'s second sphere set to `sphere` (one that no packing of
-/// fewer spheres has): a restart must find that the contacts do not fit.
-inline void set_a_contacts_second_sphere(const std::filesystem::path& checkpoint, std::size_t row, std::int64_t sphere) {
-  edit_law_indices(checkpoint, "second", [&](std::vector<std::int64_t>& second) {
-    ASSERT_LT(row, second.size());
-    second[row] = sphere;
+/// The law's contact list with row `row`'s sphere `end` ("first" or "second") set to `sphere`:
+/// one that no packing of fewer spheres has, or a value that is no index. A restart must refuse it.
+inline void set_a_contacts_end(const std::filesystem::path& checkpoint, const std::string& end, std::size_t row,
+                               std::int64_t sphere) {
+  edit_law_indices(checkpoint, end, [&](std::vector<std::int64_t>& spheres) {
+    ASSERT_LT(row, spheres.size());
+    spheres[row] = sphere;
   });
 }
 

@@ -236,7 +236,9 @@ public:
   std::vector<double> read_slots(const StateGroup& group, const std::string& name) const;
   /// A restart's contact list (arrays `first` and `second`, `rows` rows, a checkpoint's whole
   /// layout), read a piece at a time, each contact checked against the packing (first < second <
-  /// the sphere count); false, on every rank, if one does not fit. One process keeps every
+  /// the sphere count); false, on every rank, if one does not fit. A value that is not an index
+  /// ends it on every rank with StateGroup::not_an_index for the file's first such value, the
+  /// line one process gives, whichever ranks read them. One process keeps every
   /// contact (`rows_held` stays empty: row c is slot c). Several ranks (collective) each read a
   /// share of the rows and send each contact to the ranks of its ends: each gets its held
   /// contacts (an end of its own) with their rows (`rows_held`, ascending).

@@ -30,9 +30,12 @@ std::string existing(std::int64_t id, const std::string& where, const std::strin
   return at;
 }
 
+InputError not_an_index_at(const std::string& where, std::int64_t v) {
+  return InputError("checkpoint " + where + " holds " + std::to_string(v) + ", not an index");
+}
+
 std::uint32_t as_index(std::int64_t v, const std::string& where) {
-  if (v < 0 || v > std::int64_t(UINT32_MAX))
-    throw InputError("checkpoint " + where + " holds " + std::to_string(v) + ", not an index");
+  if (v < 0 || v > std::int64_t(UINT32_MAX)) throw not_an_index_at(where, v);
   return std::uint32_t(v);
 }
 
@@ -129,13 +132,24 @@ std::vector<std::uint32_t> StateGroup::read_uint32s(const std::string& name) con
 
 std::vector<std::uint32_t> StateGroup::read_uint32s(const std::string& name, std::size_t first, std::size_t count,
                                                     std::size_t* rows) const {
-  const std::string at = existing(id_, where_, name);
-  std::vector<hsize_t> shape;
-  const std::vector<std::int64_t> v = io::h5::read_int64_rows(id_, name, first, count, &shape);
+  const std::vector<std::int64_t> v = read_int64s(name, first, count, rows);
+  const std::string at = child_path(where_, name);
   std::vector<std::uint32_t> out(v.size());
   for (std::size_t k = 0; k < v.size(); ++k) out[k] = as_index(v[k], at);
-  if (rows) *rows = std::size_t(shape[0]);
   return out;
+}
+
+std::vector<std::int64_t> StateGroup::read_int64s(const std::string& name, std::size_t first, std::size_t count,
+                                                  std::size_t* rows) const {
+  existing(id_, where_, name);
+  std::vector<hsize_t> shape;
+  std::vector<std::int64_t> v = io::h5::read_int64_rows(id_, name, first, count, &shape);
+  if (rows) *rows = std::size_t(shape[0]);
+  return v;
+}
+
+InputError StateGroup::not_an_index(const std::string& name, std::int64_t value) const {
+  return not_an_index_at(child_path(where_, name), value);
 }
 
 std::vector<double> StateGroup::read_at(const std::string& name, std::size_t rows, const std::vector<std::uint32_t>& at) const {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "mesowave/core/error.hpp"
 #include "mesowave/dem/engine/vec3.hpp"
 
 namespace mesowave::io::h5 {
@@ -85,6 +86,11 @@ public:
   /// that is not an index), and `rows` its length: an array read a piece at a time.
   std::vector<std::uint32_t> read_uint32s(const std::string& name, std::size_t first, std::size_t count,
                                           std::size_t* rows = nullptr) const;
+  /// The same rows as stored, unchecked: for a reader that finds the first bad value itself (the
+  /// ranks of a restart agree on it). not_an_index is the error read_uint32s throws for `value`.
+  std::vector<std::int64_t> read_int64s(const std::string& name, std::size_t first, std::size_t count,
+                                        std::size_t* rows = nullptr) const;
+  InputError not_an_index(const std::string& name, std::int64_t value) const;
   /// The rows at the ascending indices `at` of array `name`, which must have `rows` rows
   /// (InputError otherwise), read a piece at a time: a rank of a distributed restart holds its
   /// part of an array, never the whole array (SphereSystem::read_slots and load_state).

@@ -851,13 +851,25 @@ bool SphereSystem::read_held_contacts(const StateGroup& group, std::size_t rows,
   if (!domain_) first.reserve(rows), second.reserve(rows);
   std::vector<std::vector<double>> out(ranks);  // a round's, kept from round to round (no churn of the heap)
   std::vector<double> in;
-  for (std::size_t round = 0; round * piece_rows * ranks < rows; ++round) {
+  // The first value that is not an index, as one process meets it (the pieces in row order, in
+  // each `first` before `second`): {its piece's first row, the array (0 first, 1 second), the
+  // value's upper and lower 32 bits (exact as doubles)}. Every rank reads on (the exchanges are
+  // collective), and the ranks agree on the file's first, so that every rank refuses the
+  // checkpoint with the line one process prints.
+  std::vector<double> bad;
+  const auto find_bad = [&](const std::vector<std::int64_t>& values, std::size_t start, int array) {
+    for (const std::int64_t v : values)
+      if (bad.empty() && (v < 0 || v > std::int64_t(UINT32_MAX)))
+        bad = {double(start), double(array), double(v >> 32), double(v & 0xffffffff)};
+  };
+  for (std::size_t round = 0; round * piece_rows * ranks < rows && (domain_ || bad.empty()); ++round) {
     const std::size_t start = std::min(rows, (round * ranks + me) * piece_rows);
     const std::size_t count = std::min(rows, start + piece_rows) - start;
-    const auto f = group.read_uint32s("first", start, count), g = group.read_uint32s("second", start, count);
+    const auto f = group.read_int64s("first", start, count), g = group.read_int64s("second", start, count);
+    find_bad(f, start, 0), find_bad(g, start, 1);
     for (auto& o : out) o.clear();
     for (std::size_t q = 0; q < count; ++q) {
-      if (!(f[q] < g[q] && g[q] < sphere_total_)) {
+      if (!(0 <= f[q] && f[q] < g[q] && g[q] < std::int64_t(sphere_total_))) {
         fits = false;  // not sent: its ends may be no rank's
         continue;
       }
@@ -874,6 +886,13 @@ bool SphereSystem::read_held_contacts(const StateGroup& group, std::size_t rows,
     for (std::size_t c = 0; c < in.size(); c += 3)
       rows_held.push_back(std::uint32_t(in[c])), first.push_back(std::uint32_t(in[c + 1])), second.push_back(std::uint32_t(in[c + 2]));
   }
+  if (domain_) bad = gathered_lists(*domain_, bad);  // each rank's first, in rank order
+  std::size_t earliest = bad.size();
+  for (std::size_t k = 0; k < bad.size(); k += 4)
+    if (earliest == bad.size() || bad[k] < bad[earliest]) earliest = k;  // the ranks read distinct pieces
+  if (earliest < bad.size())
+    throw group.not_an_index(bad[earliest + 1] == 0 ? "first" : "second",
+                             std::int64_t(std::uint64_t(std::int64_t(bad[earliest + 2])) << 32 | std::uint64_t(bad[earliest + 3])));
   return domain_ ? domain_->sum(fits ? 0 : 1) == 0 : fits;
 }
 
