@@ -4,9 +4,11 @@
 // sees the same machine. On the shared VMs the speed of memory wanders by up to 2x over minutes:
 // sizes measured one after the other (cost_vs_size.sh) mix that drift into the exponent.
 // Prints each size's median ms per step over the rounds (and quartiles), the ns per bond-step,
-// and the exponent b of ms per step ~ spheres^b (least squares in log-log).
+// and the exponent b of ms per step ~ spheres^b (least squares in log-log). With --profile-s it
+// steps one model alone, for a profiler attached after the set-up (docs/benchmarks.md, sixth part).
 //
 //   build/bin/bench_dem_sizes --model linear --threads 1 p32.h5 p50.h5 p75.h5 p150.h5
+//   build/bin/bench_dem_sizes --model linear --profile-s 20 p150.h5   # then perf record -p PID
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -17,6 +19,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "dem_step_model.hpp"
 #include "mesowave/core/threads.hpp"
@@ -46,13 +50,26 @@ double exponent(const std::vector<double>& x, const std::vector<double>& y) {
   return sxy / sxx;
 }
 
+/// Steps `model` for at least `ms` of wall time, whole steps; the wall ms per step.
+double ms_per_step(dem::SphereSystem& model, double ms) {
+  const auto start = std::chrono::steady_clock::now();
+  int steps = 0;
+  double elapsed = 0;
+  do {
+    model.step(5e-8, false);
+    ++steps;
+    elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  } while (elapsed < ms);
+  return elapsed / steps;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"The DEM step's cost against size: the packings' models stepped in turns in one process"};
   std::string model_name = "linear", csv;
   int threads = 1, rounds = 12;
-  double block_ms = 500;
+  double block_ms = 500, profile_s = 0;
   std::vector<std::string> packings;
   app.add_option("--model", model_name, "Contact law: linear (the linearised network) or full")
       ->check(CLI::IsMember({"linear", "full"}));
@@ -60,10 +77,15 @@ int main(int argc, char** argv) {
   app.add_option("--rounds", rounds, "Turns per model (the medians are over these)")->check(CLI::PositiveNumber);
   app.add_option("--block-ms", block_ms, "Wall time of one turn [ms] (whole steps: at least one)")->check(CLI::PositiveNumber);
   app.add_option("--csv", csv, "Also write one row per packing to this CSV file");
+  app.add_option("--profile-s", profile_s,
+                 "Instead of the rounds: once built, step the first packing's model alone for this long [s], "
+                 "its process id printed first, so that a profiler attached then (perf record -p PID) sees the "
+                 "steady step without the set-up (which takes longer than the steps at 1 M spheres)")
+      ->check(CLI::PositiveNumber);
   app.add_option("packings", packings, "mw-pack packing files (HDF5), smallest first")->required()->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
-  if (packings.size() < 2) {
-    std::fprintf(stderr, "error: give at least two packings (an exponent needs two sizes), got %zu\n", packings.size());
+  if (packings.size() < 2 && profile_s == 0) {
+    std::fprintf(stderr, "error: give at least two packings (an exponent needs two sizes) or --profile-s, got %zu\n", packings.size());
     return 1;
   }
 
@@ -76,19 +98,17 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "# %s: %zu spheres, %zu bonds, built\n", file.c_str(), models.back()->sphere_count(),
                  models.back()->bond_count());
   }
-  std::vector<std::vector<double>> ms_per_step(models.size());
+  if (profile_s > 0) {
+    std::printf("# process %d: %s alone for %g s\n", int(getpid()), packings[0].c_str(), profile_s);
+    std::fflush(stdout);
+    std::printf("%s: %.4g ms/step\n", packings[0].c_str(), ms_per_step(*models[0], 1e3 * profile_s));
+    return 0;
+  }
+  std::vector<std::vector<double>> step_ms(models.size());
   for (int round = 0; round < rounds; ++round)
     for (std::size_t m = 0; m < models.size(); ++m) {
       models[m]->step(5e-8, false);  // the caches hold the last model's data: one step to take them back
-      const auto start = std::chrono::steady_clock::now();
-      int steps = 0;
-      double ms = 0;
-      do {
-        models[m]->step(5e-8, false);
-        ++steps;
-        ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      } while (ms < block_ms);
-      ms_per_step[m].push_back(ms / steps);
+      step_ms[m].push_back(ms_per_step(*models[m], block_ms));
     }
 
   std::ofstream out;
@@ -99,7 +119,7 @@ int main(int argc, char** argv) {
   std::vector<double> spheres, medians;
   std::printf("# %s, %d thread(s), %d rounds of %.0f ms a model\n", model_name.c_str(), threads, rounds, block_ms);
   for (std::size_t m = 0; m < models.size(); ++m) {
-    const double median = quantile(ms_per_step[m], 0.5), q1 = quantile(ms_per_step[m], 0.25), q3 = quantile(ms_per_step[m], 0.75);
+    const double median = quantile(step_ms[m], 0.5), q1 = quantile(step_ms[m], 0.25), q3 = quantile(step_ms[m], 0.75);
     const double bonds = double(models[m]->bond_count()), ns_per_bond = 1e6 * median / bonds;
     std::printf("%-40s %9zu spheres %9.0f bonds  %9.4g ms/step (quartiles %.4g-%.4g)  %6.3g ns/bond-step\n", packings[m].c_str(),
                 models[m]->sphere_count(), bonds, median, q1, q3, ns_per_bond);

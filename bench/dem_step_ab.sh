@@ -32,24 +32,13 @@ for round in $(seq 1 "$ROUNDS"); do
       bin=$A
       [ "$side" = B ] && bin=$B
       echo "# round $round $side load $(cut -d' ' -f1 /proc/loadavg)"
-      "$bin" --benchmark_filter="^$name\$" --benchmark_min_time="$MIN_TIME" 2>/dev/null | grep '^BM_' |
-        sed "s/^/$side $round /" | tee -a "$out"
+      line=$("$bin" --benchmark_filter="^$name\$" --benchmark_min_time="$MIN_TIME" 2>/dev/null | grep '^BM_')
+      echo "$side $round $line"
+      # For the summary: "NAME-wall ROUND SIDE ms" and "NAME-cpu ROUND SIDE ms".
+      echo "$line" | awk -v r="$round" -v s="$side" \
+        '{ n = $1; sub("/min_time.*", "", n); print n "-wall", r, s, $2; print n "-cpu", r, s, $4 }' >> "$out"
     done
   done
 done
-# Medians of the wall and CPU ms per benchmark and side, and of the ratios B/A per benchmark.
-python3 - "$out" <<'PY'
-import collections, statistics, sys
-wall, cpu, pair = collections.defaultdict(list), collections.defaultdict(list), collections.defaultdict(dict)
-for line in open(sys.argv[1]):
-    side, rnd, name, w, _, c = line.split()[:6]
-    name = name.split('/min_time')[0]
-    wall[(name, side)].append(float(w)), cpu[(name, side)].append(float(c))
-    pair[(name, rnd)][side] = float(w)
-for key in sorted(wall):
-    print(f"median {key[1]} {key[0]:<32} wall {statistics.median(wall[key]):8.3f} ms  cpu {statistics.median(cpu[key]):8.3f} ms")
-for name in sorted({k[0] for k in pair}):
-    r = sorted(v['B'] / v['A'] for k, v in pair.items() if k[0] == name and len(v) == 2)
-    q = lambda f: r[round(f * (len(r) - 1))]
-    print(f"ratio B/A {name:<32} median {q(0.5):.3f} (quartiles {q(0.25):.3f}-{q(0.75):.3f}) over {len(r)} rounds")
-PY
+# Per benchmark: the medians of the wall and CPU ms per build, and the median of the ratios B/A.
+python3 "$(dirname "$0")/paired_ratios.py" "$out" B A --unit ms
