@@ -27,6 +27,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "mesowave/dem/engine/contact_ends.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
 
 namespace mesowave::dem {
@@ -127,13 +128,16 @@ inline void CohesiveFrictionalContact::run(SphereSystem& system, double dt, bool
   const std::uint32_t* first = system.first();
   const std::uint32_t* second = system.second();
 
+  // x, v and w at both ends, staged a chunk at a time before the vector loop (contact_ends.hpp).
+  ContactEnds<3> ends;
   // Two versions of the loop, the energy's divisions only in the one for energy steps (on the
   // others nothing reads the elastic energy).
   const auto contacts = [&](auto energy) __attribute__((always_inline)) {
     [[maybe_unused]] constexpr double energy_on = decltype(energy)::value ? 1.0 : 0.0;
-    system.template for_each_contact<Result>([&](std::size_t b, Result& r) __attribute__((always_inline)) {
+    const auto kernel = [&](std::size_t b, Result& r) __attribute__((always_inline)) {
       const std::uint32_t i = first[b], j = second[b];
-      const Vec3 d = x[j] - x[i];
+      const Vec3 vi = ends.at(1, 0, b), vj = ends.at(1, 1, b), wi = ends.at(2, 0, b), wj = ends.at(2, 1, b);
+      const Vec3 d = ends.at(0, 1, b) - ends.at(0, 0, b);
       const double dist = std::sqrt(norm2(d));
       const double ri = radius[i], rj = radius[j], sum = ri + rj;
       const double inv = 1.0 / (sum * dist);  // one division: 1/dist, K_n and the factor a
@@ -144,11 +148,10 @@ inline void CohesiveFrictionalContact::run(SphereSystem& system, double dt, bool
       // ScGeom::precompute + rotate: carry the shear force with the contact frame.
       const Vec3 n_prev{nx[b], ny[b], nz[b]};
       Vec3 fs{sx[b], sy[b], sz[b]};
-      const Vec3 wi = w[i], wj = w[j];
       fs -= cross(fs, cross(n_prev, n));
       fs -= cross(fs, (half_dt * dot(n_prev, wi + wj)) * n_prev);
       // Shear increment, Eq. (2): ScGeom::getIncidentVel with avoidGranularRatcheting.
-      Vec3 v_rel = (sum * sum * inv) * (v[j] - v[i]) - rj * cross(wj, n) - ri * cross(wi, n);
+      Vec3 v_rel = (sum * sum * inv) * (vj - vi) - rj * cross(wj, n) - ri * cross(wi, n);
       v_rel -= dot(n, v_rel) * n;
       fs -= (ks * dt) * v_rel;
       const double fn = kn * (u - overlap0[b]);  // Eq. (1)
@@ -194,7 +197,10 @@ inline void CohesiveFrictionalContact::run(SphereSystem& system, double dt, bool
       if constexpr (decltype(energy)::value)
         r.elastic = 0.5 * fn_new * fn_new / kn + 0.5 * norm2(fs_new) * dist * inv * dist * inv_ks;
       if constexpr (extended) extension.finish(b, intact, energy_on, ks, r);
-    }, decltype(energy)::value, true);
+    };
+    system.template for_each_contact<Result>(kernel, decltype(energy)::value, true, [&](std::size_t chunk, std::size_t m) {
+      ends.fill({x, v, w}, first, second, chunk, m);
+    });
   };
   if (evaluate_energy)
     contacts(std::true_type{});

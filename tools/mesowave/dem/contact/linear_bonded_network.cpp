@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "mesowave/core/kernel_clones.hpp"
+#include "mesowave/dem/engine/contact_ends.hpp"
 
 namespace mesowave::dem {
 
@@ -41,14 +42,15 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
   const std::uint32_t* first = system.first();
   const std::uint32_t* second = system.second();
 
+  // d and theta at both ends, staged a chunk at a time before the vector loop (contact_ends.hpp).
+  ContactEnds<2> ends;
   // Two versions of the loop, the energy's divisions only in the one for energy steps (on the
   // others nothing reads the elastic energy).
   const auto contacts = [&](auto energy) __attribute__((always_inline)) {
-    system.for_each_contact([&](std::size_t b, SphereSystem::ContactResult& r) __attribute__((always_inline)) {
-      const std::uint32_t i = first[b], j = second[b];
-      const double ri = radius[i], rj = radius[j];
+    const auto kernel = [&](std::size_t b, SphereSystem::ContactResult& r) __attribute__((always_inline)) {
+      const double ri = radius[first[b]], rj = radius[second[b]];
       const LinearBondResponse q = linear_bond_response(two_E_dem, ratio, ri, rj, overlap0[b], Vec3{nx[b], ny[b], nz[b]},
-                                                        d[j] - d[i], theta[i], theta[j]);
+                                                        ends.at(0, 1, b) - ends.at(0, 0, b), ends.at(1, 0, b), ends.at(1, 1, b));
       const double fn = q.fn, kn = q.kn, ks = q.ks, a0 = q.a0;
       const Vec3 fs = q.fs;
       r.f = q.f;
@@ -68,7 +70,9 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
         const double shear_energy = 0.5 * fs2 / (a0 * ks);
         r.elastic = 0.5 * fn * fn / kn + (ks > 0 ? shear_energy : 0.0);
       }
-    }, decltype(energy)::value, false);
+    };
+    system.for_each_contact(kernel, decltype(energy)::value, false,
+                            [&](std::size_t chunk, std::size_t m) { ends.fill({d, theta}, first, second, chunk, m); });
   };
   if (evaluate_energy)
     contacts(std::true_type{});

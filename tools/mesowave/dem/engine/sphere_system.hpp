@@ -307,9 +307,13 @@ public:
   /// `Result` is ContactResult, or MomentContactResult for a law with moments
   /// (set_contacts with `moments` then keeps room for them).
   /// `sum_elastic`: add up the elastic energies (energy steps); `sum_plastic`: the dissipation
-  /// (laws that slide).
-  template <class Result = ContactResult, class Kernel>
-  void for_each_contact(Kernel&& kernel, bool sum_elastic, bool sum_plastic) __attribute__((always_inline));
+  /// (laws that slide). `stage(chunk, m)` runs before each chunk's vector loop, on contacts
+  /// [chunk, chunk + m): a law fetches its spheres' data there (ContactEnds, contact_ends.hpp).
+  struct NoStage {
+    void operator()(std::size_t, std::size_t) const {}
+  };
+  template <class Result = ContactResult, class Kernel, class Stage = NoStage>
+  void for_each_contact(Kernel&& kernel, bool sum_elastic, bool sum_plastic, Stage&& stage = {}) __attribute__((always_inline));
 
   /// The integrator's blocking (kernels size their chunks by it).
   static constexpr std::size_t kContactBlock = 2048;
@@ -512,8 +516,8 @@ private:
   void share_elastic();
 };
 
-template <class Result, class Kernel>
-inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bool sum_plastic) {
+template <class Result, class Kernel, class Stage>
+inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bool sum_plastic, Stage&& stage) {
   constexpr bool moments = std::is_same_v<Result, MomentContactResult>;
   const std::size_t tasks = partitions_ + cross_blocks_;
   const std::size_t count = first_.size();
@@ -544,6 +548,7 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
       // The law runs on a private Result per contact, stored component by component into the chunk's
       // arrays: only stores to separate arrays indexed by q let GCC vectorize this loop (a store of the
       // whole struct into an array of structs kept it scalar: issue 17 item 3, docs/benchmarks.md).
+      stage(chunk, m);
 #pragma GCC ivdep
       for (std::size_t q = 0; q < m; ++q) {
         Result r;

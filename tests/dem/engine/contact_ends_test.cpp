@@ -1,0 +1,54 @@
+// A chunk's contact ends (dem/engine/contact_ends.hpp) against the spheres' arrays indexed directly:
+// every component of every source at both ends, bit for bit (-0, a subnormal and distinct values
+// in each lane, so that a transposed lane or component shows), for whole chunks, chunks shorter
+// than the vector width and tails, with the arrays' last sphere among the ends (the masked loads
+// must not read past it).
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "mesowave/dem/engine/contact_ends.hpp"
+
+using namespace mesowave::dem;
+
+namespace {
+
+bool same_bits(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof(Vec3)) == 0; }
+
+}  // namespace
+
+TEST(ContactEnds, EachEndIsItsSpheresValuesBitForBit) {
+  constexpr std::size_t spheres = 301;
+  std::vector<Vec3> x(spheres), v(spheres), w(spheres);  // exactly `spheres` long: nothing after the last
+  for (std::size_t k = 0; k < spheres; ++k) {
+    const double s = double(k);
+    x[k] = {s + 0.25, -s, 1e-3 * s};
+    v[k] = {-0.5 * s, s * s, 7.0 - s};
+    w[k] = {1.0 / (s + 1.0), -2.0 * s, s + 1e6};
+  }
+  x[3] = {-0.0, std::numeric_limits<double>::denorm_min(), 0.0};
+  // Pairs first < second, from a fixed pseudo-random walk; the last sphere and sphere 0 among them.
+  std::vector<std::uint32_t> first, second;
+  std::uint32_t state = 12345;
+  for (std::size_t c = 0; c < 200; ++c) {
+    state = state * 1664525u + 1013904223u;
+    const std::uint32_t i = (state >> 8) % (spheres - 1);
+    const std::uint32_t j = i + 1 + (state >> 20) % std::uint32_t(spheres - 1 - i);
+    first.push_back(i), second.push_back(j);
+  }
+  first[5] = 0, second[5] = spheres - 1;
+  first[199] = 3, second[199] = spheres - 1;
+
+  for (const auto& [begin, m] : {std::pair<std::size_t, std::size_t>{0, 32}, {32, 31}, {64, 8}, {100, 7}, {168, 32}, {199, 1}}) {
+    ContactEnds<3> ends;
+    ends.fill({x.data(), v.data(), w.data()}, first.data(), second.data(), begin, m);
+    const std::vector<Vec3>* sources[3] = {&x, &v, &w};
+    for (std::size_t b = begin; b < begin + m; ++b)
+      for (std::size_t s = 0; s < 3; ++s) {
+        EXPECT_TRUE(same_bits(ends.at(s, 0, b), (*sources[s])[first[b]])) << "chunk at " << begin << ", contact " << b << ", source " << s;
+        EXPECT_TRUE(same_bits(ends.at(s, 1, b), (*sources[s])[second[b]])) << "chunk at " << begin << ", contact " << b << ", source " << s;
+      }
+  }
+}

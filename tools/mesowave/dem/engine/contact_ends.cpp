@@ -1,0 +1,83 @@
+#include "mesowave/dem/engine/contact_ends.hpp"
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+namespace mesowave::dem {
+namespace {
+
+using Fill = void (*)(const Vec3* const*, std::size_t, const std::uint32_t*, const std::uint32_t*, std::size_t, std::size_t,
+                      double*);
+
+void fill_plain(const Vec3* const* sources, std::size_t count, const std::uint32_t* first, const std::uint32_t* second,
+                std::size_t b, std::size_t m, double* out) {
+  for (std::size_t s = 0; s < count; ++s)
+    for (int end = 0; end < 2; ++end) {
+      const std::uint32_t* index = (end == 0 ? first : second) + b;
+      double* row = out + (2 * s + std::size_t(end)) * 3 * kEndsChunk;
+      for (std::size_t q = 0; q < m; ++q) {
+        const Vec3& p = sources[s][index[q]];
+        row[q] = p.x, row[kEndsChunk + q] = p.y, row[2 * kEndsChunk + q] = p.z;
+      }
+    }
+}
+
+#if defined(__x86_64__)
+// GCC 12's intrinsics header initialises _mm512_undefined_pd from itself, which
+// -Wmaybe-uninitialized reports wherever a cast leaves a register's upper half undefined.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+// Eight spheres' (x, y, z) rows into three vectors of eight: masked loads of three doubles (the
+// fourth is never read, so no load passes the array's end), then pairs of rows in one register
+// and three two-source permutations.
+__attribute__((target("avx512f,avx512vl"))) inline void transpose8(const Vec3* src, const std::uint32_t* index, double* row) {
+  __m256d a[8];
+  for (int k = 0; k < 8; ++k) a[k] = _mm256_maskz_loadu_pd(0x7, &src[index[k]].x);
+  const __m512d r01 = _mm512_insertf64x4(_mm512_castpd256_pd512(a[0]), a[1], 1);  // x0 y0 z0 . x1 y1 z1 .
+  const __m512d r23 = _mm512_insertf64x4(_mm512_castpd256_pd512(a[2]), a[3], 1);
+  const __m512d r45 = _mm512_insertf64x4(_mm512_castpd256_pd512(a[4]), a[5], 1);
+  const __m512d r67 = _mm512_insertf64x4(_mm512_castpd256_pd512(a[6]), a[7], 1);
+  const __m512i xy = _mm512_setr_epi64(0, 4, 8, 12, 1, 5, 9, 13), zz = _mm512_setr_epi64(2, 6, 10, 14, 2, 6, 10, 14);
+  const __m512i lo = _mm512_setr_epi64(0, 1, 2, 3, 8, 9, 10, 11), hi = _mm512_setr_epi64(4, 5, 6, 7, 12, 13, 14, 15);
+  const __m512d t0 = _mm512_permutex2var_pd(r01, xy, r23), t1 = _mm512_permutex2var_pd(r45, xy, r67);  // x0-3 y0-3, x4-7 y4-7
+  const __m512d z0 = _mm512_permutex2var_pd(r01, zz, r23), z1 = _mm512_permutex2var_pd(r45, zz, r67);
+  _mm512_store_pd(row, _mm512_permutex2var_pd(t0, lo, t1));
+  _mm512_store_pd(row + kEndsChunk, _mm512_permutex2var_pd(t0, hi, t1));
+  _mm512_store_pd(row + 2 * kEndsChunk, _mm512_permutex2var_pd(z0, lo, z1));
+}
+
+__attribute__((target("avx512f,avx512vl"))) void fill_avx512(const Vec3* const* sources, std::size_t count,
+                                                           const std::uint32_t* first, const std::uint32_t* second,
+                                                           std::size_t b, std::size_t m, double* out) {
+  const std::size_t whole = m / 8 * 8;
+  for (std::size_t s = 0; s < count; ++s)
+    for (int end = 0; end < 2; ++end) {
+      const std::uint32_t* index = (end == 0 ? first : second) + b;
+      double* row = out + (2 * s + std::size_t(end)) * 3 * kEndsChunk;
+      for (std::size_t q = 0; q < whole; q += 8) transpose8(sources[s], index + q, row + q);
+      for (std::size_t q = whole; q < m; ++q) {
+        const Vec3& p = sources[s][index[q]];
+        row[q] = p.x, row[kEndsChunk + q] = p.y, row[2 * kEndsChunk + q] = p.z;
+      }
+    }
+}
+#pragma GCC diagnostic pop
+#endif
+
+Fill chosen() {
+#if defined(__x86_64__)
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) return fill_avx512;
+#endif
+  return fill_plain;
+}
+
+}  // namespace
+
+void fill_contact_ends(const Vec3* const* sources, std::size_t count, const std::uint32_t* first, const std::uint32_t* second,
+                       std::size_t b, std::size_t m, double* out) {
+  static const Fill fill = chosen();
+  fill(sources, count, first, second, b, m, out);
+}
+
+}  // namespace mesowave::dem
