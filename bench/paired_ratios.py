@@ -8,13 +8,15 @@ Used by bench/dem_step_ab.sh, bench/dem_run_ab.sh and bench/yade_side_by_side.sh
 
 Input (FILE, or standard input): one timing a line, "GROUP ROUND SIDE SECONDS_OR_MS"
 (whitespace-separated, GROUP without spaces). Output, per group: each side's median, then the
-median of the rounds' ratios NUMERATOR / DENOMINATOR with its quartiles (the value at rank
-floor(f (n - 1) + 1/2) of the n sorted ratios: of an even count, the upper middle one).
+median of the rounds' ratios NUMERATOR / DENOMINATOR with its quartiles (of the n sorted ratios
+the one at rank f (n - 1) rounded to the nearest, ties away from the median: of an even count the
+upper middle one is the median, of three rounds the quartiles are the extremes).
 
     paired_ratios.py FILE NUMERATOR DENOMINATOR [--unit ms]
 """
 import argparse
 import collections
+import math
 import statistics
 import sys
 
@@ -44,7 +46,8 @@ def main():
                    if g == group and args.numerator in v and args.denominator in v)
         if not r:
             continue
-        q = lambda f: r[int(f * (len(r) - 1) + 0.5)]
+        # The nearest rank, ties away from the median: of three rounds the quartiles are the extremes.
+        q = lambda f: r[math.ceil(f * (len(r) - 1) - 0.5) if f < 0.5 else math.floor(f * (len(r) - 1) + 0.5)]
         print(f"ratio {args.numerator}/{args.denominator} {group:<40} median {q(0.5):.3f} "
               f"(quartiles {q(0.25):.3f}-{q(0.75):.3f}) over {len(r)} rounds")
 
