@@ -30,7 +30,7 @@ void fill_plain(const Vec3* const* sources, std::size_t count, const std::uint32
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 // Eight spheres' (x, y, z) rows into three vectors of eight: masked loads of three doubles (the
 // fourth is never read, so no load passes the array's end), then pairs of rows in one register
-// and three two-source permutations.
+// and seven two-source permutations.
 __attribute__((target("avx512f,avx512vl"))) inline void transpose8(const Vec3* src, const std::uint32_t* index, double* row) {
   __m256d a[8];
   for (int k = 0; k < 8; ++k) a[k] = _mm256_maskz_loadu_pd(0x7, &src[index[k]].x);

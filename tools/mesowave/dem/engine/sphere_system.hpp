@@ -47,6 +47,7 @@
 
 #include "mesowave/dem/contact/bond_network.hpp"
 #include "mesowave/dem/contact/material.hpp"
+#include "mesowave/dem/engine/contact_ends.hpp"
 #include "mesowave/dem/engine/model.hpp"
 #include "mesowave/dem/engine/sphere_set.hpp"
 
@@ -318,6 +319,7 @@ public:
   /// The integrator's blocking (kernels size their chunks by it).
   static constexpr std::size_t kContactBlock = 2048;
   static constexpr std::size_t kChunk = 32;
+  static_assert(kChunk == kEndsChunk, "a law stages its contact ends a chunk at a time (contact_ends.hpp)");
   static constexpr std::size_t kSphereBlock = 256;
   static constexpr std::size_t kSpheresPerPartition = 4096;
 
