@@ -33,9 +33,15 @@ for round in $(seq 1 "$ROUNDS"); do
     same=identical
     [ -e "$tmp/first.h5" ] || cp "$tmp/$side-$round.h5" "$tmp/first.h5"
     cmp -s "$tmp/first.h5" "$tmp/$side-$round.h5" || same=DIFFERENT
-    python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print('$side round $round load $load: steps', d['steps'], 'threads', d['threads'], 'loop wall %.2f s, setup %.2f s, process %.2f s, signals $same' % (d['wall_s'], d['setup_s'], $end - $start))" "$tmp/$side-$round.json"
-    python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print('loop-wall $round $side', d['wall_s']); print('process $round $side', $end - $start)" \
-      "$tmp/$side-$round.json" >> "$tmp/rows"
+    # The run's line, and its rows for the summary ("loop-wall|process ROUND SIDE s").
+    python3 -c "
+import json, sys
+d, process = json.load(open(sys.argv[1])), $end - $start
+print('$side round $round load $load: steps', d['steps'], 'threads', d['threads'],
+      'loop wall %.2f s, setup %.2f s, process %.2f s, signals $same' % (d['wall_s'], d['setup_s'], process))
+with open(sys.argv[2], 'a') as rows:
+    print('loop-wall $round $side', d['wall_s'], file=rows)
+    print('process $round $side', process, file=rows)" "$tmp/$side-$round.json" "$tmp/rows"
   done
 done
 python3 "$(dirname "$0")/paired_ratios.py" "$tmp/rows" B A --unit s

@@ -31,10 +31,12 @@ using namespace mesowave;
 
 namespace {
 
-/// The value of rank q (n - 1), rounded (the median of an even count: the upper middle value).
+/// The value of rank q (n - 1) rounded to the nearest, ties away from the median (of an even count
+/// the median is the upper middle value), as bench/paired_ratios.py takes it.
 double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
-  return v[std::size_t(std::lround(q * double(v.size() - 1)))];
+  const double rank = q * double(v.size() - 1);
+  return v[std::size_t(q < 0.5 ? std::ceil(rank - 0.5) : std::floor(rank + 0.5))];
 }
 
 /// The slope of log y against log x (least squares).

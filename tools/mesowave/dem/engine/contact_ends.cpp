@@ -10,17 +10,21 @@ namespace {
 using Fill = void (*)(const Vec3* const*, std::size_t, const std::uint32_t*, const std::uint32_t*, std::size_t, std::size_t,
                       double*);
 
+// One source at one end: row[c * kEndsChunk + q] = src[index[q]][c], q < m.
+void rows_plain(const Vec3* src, const std::uint32_t* index, std::size_t m, double* row) {
+  for (std::size_t q = 0; q < m; ++q) {
+    const Vec3& p = src[index[q]];
+    row[q] = p.x, row[kEndsChunk + q] = p.y, row[2 * kEndsChunk + q] = p.z;
+  }
+}
+
+// Source s at end e (0 first, 1 second) fills rows out + (2 s + e) 3 kEndsChunk.
 void fill_plain(const Vec3* const* sources, std::size_t count, const std::uint32_t* first, const std::uint32_t* second,
                 std::size_t b, std::size_t m, double* out) {
-  for (std::size_t s = 0; s < count; ++s)
-    for (int end = 0; end < 2; ++end) {
-      const std::uint32_t* index = (end == 0 ? first : second) + b;
-      double* row = out + (2 * s + std::size_t(end)) * 3 * kEndsChunk;
-      for (std::size_t q = 0; q < m; ++q) {
-        const Vec3& p = sources[s][index[q]];
-        row[q] = p.x, row[kEndsChunk + q] = p.y, row[2 * kEndsChunk + q] = p.z;
-      }
-    }
+  for (std::size_t s = 0; s < count; ++s) {
+    rows_plain(sources[s], first + b, m, out + 2 * s * 3 * kEndsChunk);
+    rows_plain(sources[s], second + b, m, out + (2 * s + 1) * 3 * kEndsChunk);
+  }
 }
 
 #if defined(__x86_64__)
@@ -47,19 +51,17 @@ __attribute__((target("avx512f,avx512vl"))) inline void transpose8(const Vec3* s
   _mm512_store_pd(row + 2 * kEndsChunk, _mm512_permutex2var_pd(z0, lo, z1));
 }
 
+// fill_plain's rows, eight contacts at a time by transposes; a chunk's last m % 8 plainly.
 __attribute__((target("avx512f,avx512vl"))) void fill_avx512(const Vec3* const* sources, std::size_t count,
                                                            const std::uint32_t* first, const std::uint32_t* second,
                                                            std::size_t b, std::size_t m, double* out) {
   const std::size_t whole = m / 8 * 8;
   for (std::size_t s = 0; s < count; ++s)
-    for (int end = 0; end < 2; ++end) {
+    for (std::size_t end = 0; end < 2; ++end) {
       const std::uint32_t* index = (end == 0 ? first : second) + b;
-      double* row = out + (2 * s + std::size_t(end)) * 3 * kEndsChunk;
+      double* row = out + (2 * s + end) * 3 * kEndsChunk;
       for (std::size_t q = 0; q < whole; q += 8) transpose8(sources[s], index + q, row + q);
-      for (std::size_t q = whole; q < m; ++q) {
-        const Vec3& p = sources[s][index[q]];
-        row[q] = p.x, row[kEndsChunk + q] = p.y, row[2 * kEndsChunk + q] = p.z;
-      }
+      rows_plain(sources[s], index + whole, m - whole, row + whole);
     }
 }
 #pragma GCC diagnostic pop

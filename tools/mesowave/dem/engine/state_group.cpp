@@ -35,7 +35,7 @@ InputError not_an_index_at(const std::string& where, std::int64_t v) {
 }
 
 std::uint32_t as_index(std::int64_t v, const std::string& where) {
-  if (v < 0 || v > std::int64_t(UINT32_MAX)) throw not_an_index_at(where, v);
+  if (!StateGroup::is_index(v)) throw not_an_index_at(where, v);
   return std::uint32_t(v);
 }
 

@@ -87,9 +87,11 @@ public:
   std::vector<std::uint32_t> read_uint32s(const std::string& name, std::size_t first, std::size_t count,
                                           std::size_t* rows = nullptr) const;
   /// The same rows as stored, unchecked: for a reader that finds the first bad value itself (the
-  /// ranks of a restart agree on it). not_an_index is the error read_uint32s throws for `value`.
+  /// ranks of a restart agree on it). is_index is read_uint32s's test, not_an_index its error
+  /// for `value` in array `name`.
   std::vector<std::int64_t> read_int64s(const std::string& name, std::size_t first, std::size_t count,
                                         std::size_t* rows = nullptr) const;
+  static bool is_index(std::int64_t value) { return value >= 0 && value <= std::int64_t(UINT32_MAX); }
   InputError not_an_index(const std::string& name, std::int64_t value) const;
   /// The rows at the ascending indices `at` of array `name`, which must have `rows` rows
   /// (InputError otherwise), read a piece at a time: a rank of a distributed restart holds its

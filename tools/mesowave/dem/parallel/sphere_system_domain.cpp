@@ -852,15 +852,13 @@ bool SphereSystem::read_held_contacts(const StateGroup& group, std::size_t rows,
   std::vector<std::vector<double>> out(ranks);  // a round's, kept from round to round (no churn of the heap)
   std::vector<double> in;
   // The first value that is not an index, as one process meets it (the pieces in row order, in
-  // each `first` before `second`): {its piece's first row, the array (0 first, 1 second), the
-  // value's upper and lower 32 bits (exact as doubles)}. Every rank reads on (the exchanges are
-  // collective), and the ranks agree on the file's first, so that every rank refuses the
-  // checkpoint with the line one process prints.
+  // each `first` before `second`): {its piece's first row, the array (0 first, 1 second), its row}.
+  // Every rank reads on (the exchanges are collective), and the ranks agree on the file's first,
+  // so that every rank refuses the checkpoint with the line one process prints.
   std::vector<double> bad;
   const auto find_bad = [&](const std::vector<std::int64_t>& values, std::size_t start, int array) {
-    for (const std::int64_t v : values)
-      if (bad.empty() && (v < 0 || v > std::int64_t(UINT32_MAX)))
-        bad = {double(start), double(array), double(v >> 32), double(v & 0xffffffff)};
+    for (std::size_t q = 0; q < values.size() && bad.empty(); ++q)
+      if (!StateGroup::is_index(values[q])) bad = {double(start), double(array), double(start + q)};
   };
   for (std::size_t round = 0; round * piece_rows * ranks < rows && (domain_ || bad.empty()); ++round) {
     const std::size_t start = std::min(rows, (round * ranks + me) * piece_rows);
@@ -888,11 +886,12 @@ bool SphereSystem::read_held_contacts(const StateGroup& group, std::size_t rows,
   }
   if (domain_) bad = gathered_lists(*domain_, bad);  // each rank's first, in rank order
   std::size_t earliest = bad.size();
-  for (std::size_t k = 0; k < bad.size(); k += 4)
+  for (std::size_t k = 0; k < bad.size(); k += 3)
     if (earliest == bad.size() || bad[k] < bad[earliest]) earliest = k;  // the ranks read distinct pieces
-  if (earliest < bad.size())
-    throw group.not_an_index(bad[earliest + 1] == 0 ? "first" : "second",
-                             std::int64_t(std::uint64_t(std::int64_t(bad[earliest + 2])) << 32 | std::uint64_t(bad[earliest + 3])));
+  if (earliest < bad.size()) {  // every rank reads the value back, for the message
+    const std::string array = bad[earliest + 1] == 0 ? "first" : "second";
+    throw group.not_an_index(array, group.read_int64s(array, std::size_t(bad[earliest + 2]), 1)[0]);
+  }
   return domain_ ? domain_->sum(fits ? 0 : 1) == 0 : fits;
 }
 
