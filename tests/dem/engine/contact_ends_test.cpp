@@ -2,16 +2,24 @@
 // every component of every source at both ends, bit for bit (-0, a subnormal and distinct values
 // in each lane, so that a transposed lane or component shows), for whole chunks, chunks shorter
 // than the vector width and tails, with the arrays' last sphere among the ends (the masked loads
-// must not read past it).
+// must not read past it). And the requests for lines ahead (SphereSystem::set_prefetch_ahead)
+// change no bit of a step.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <vector>
 
+#include "mesowave/dem/contact/cohesive_frictional_contact.hpp"
+#include "mesowave/dem/contact/linear_bonded_network.hpp"
 #include "mesowave/dem/engine/contact_ends.hpp"
+#include "mesowave/dem/engine/sphere_system.hpp"
+#include "dem/test_packings.hpp"
 
 using namespace mesowave::dem;
+using namespace mesowave::dem::testing;
 
 namespace {
 
@@ -50,5 +58,41 @@ TEST(ContactEnds, EachEndIsItsSpheresValuesBitForBit) {
         EXPECT_TRUE(same_bits(ends.at(s, 0, b), (*sources[s])[first[b]])) << "chunk at " << begin << ", contact " << b << ", source " << s;
         EXPECT_TRUE(same_bits(ends.at(s, 1, b), (*sources[s])[second[b]])) << "chunk at " << begin << ", contact " << b << ", source " << s;
       }
+  }
+}
+
+// No lines asked for, one contact ahead, 33 (not a chunk's multiple) and more than a task holds
+// (the clamps to the task's end): positions, velocities, angular velocities and energies the same
+// to the bit, for both laws. 8,788 spheres: two partitions and the contacts between them.
+TEST(ContactEnds, AskingForLinesAheadChangesNoBit) {
+  const Packing p = fcc_packing(13, 2.5e-3, 0.8e-3, 1.0e-3, 0.03, 9, 2290);
+  const CohesiveFrictionalMaterial material = concrete_material();
+  for (const bool full : {false, true}) {
+    std::unique_ptr<SphereSystem> reference;
+    for (const std::size_t ahead : {0, 1, 33, 5000}) {
+      SphereSet spheres = make_sphere_set(p, material.density_kg_m3);
+      BondNetwork bonds = make_bond_network(spheres, material.bond_factor);
+      std::unique_ptr<ContactKernel> law;
+      if (full) law = std::make_unique<CohesiveFrictionalContact>();
+      else law = std::make_unique<LinearBondedNetwork>();
+      auto system = std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), material, std::move(law));
+      system->set_prefetch_ahead(ahead);
+      ASSERT_EQ(system->prefetch_ahead(), ahead);
+      for (int i = 0; i < 150; ++i) {
+        for (std::size_t k = 0; k < 40; ++k) system->add_external_force(k, {1e-3 * std::sin(0.1 * i), 2e-4, 0});
+        system->step(5e-8, i % 50 == 49);
+      }
+      if (!reference) {
+        reference = std::move(system);
+        continue;
+      }
+      const std::size_t n = system->sphere_count(), bytes = n * sizeof(Vec3);
+      EXPECT_EQ(std::memcmp(system->positions(), reference->positions(), bytes), 0) << (full ? "full" : "linear") << ", " << ahead;
+      EXPECT_EQ(std::memcmp(system->velocities(), reference->velocities(), bytes), 0) << (full ? "full" : "linear") << ", " << ahead;
+      EXPECT_EQ(std::memcmp(system->angular_velocities(), reference->angular_velocities(), bytes), 0)
+          << (full ? "full" : "linear") << ", " << ahead;
+      EXPECT_EQ(system->energy().elastic_J, reference->energy().elastic_J);
+      EXPECT_EQ(system->energy().damping_J, reference->energy().damping_J);
+    }
   }
 }

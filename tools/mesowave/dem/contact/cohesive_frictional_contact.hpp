@@ -198,7 +198,8 @@ inline void CohesiveFrictionalContact::run(SphereSystem& system, double dt, bool
         r.elastic = 0.5 * fn_new * fn_new / kn + 0.5 * norm2(fs_new) * dist * inv * dist * inv_ks;
       if constexpr (extended) extension.finish(b, intact, energy_on, ks, r);
     };
-    system.template for_each_contact<Result>(kernel, decltype(energy)::value, true, [&](std::size_t chunk, std::size_t m) {
+    system.template for_each_contact<Result>(kernel, decltype(energy)::value, true, [&](std::size_t chunk, std::size_t m, ContactRange ahead) {
+      ends.prefetch({x, v, w}, radius, second, ahead);
       ends.fill({x, v, w}, first, second, chunk, m);
     });
   };

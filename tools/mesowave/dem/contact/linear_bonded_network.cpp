@@ -72,7 +72,10 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
       }
     };
     system.for_each_contact(kernel, decltype(energy)::value, false,
-                            [&](std::size_t chunk, std::size_t m) { ends.fill({d, theta}, first, second, chunk, m); });
+                            [&](std::size_t chunk, std::size_t m, ContactRange ahead) {
+                              ends.prefetch({d, theta}, radius, second, ahead);
+                              ends.fill({d, theta}, first, second, chunk, m);
+                            });
   };
   if (evaluate_energy)
     contacts(std::true_type{});

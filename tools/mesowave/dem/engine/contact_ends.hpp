@@ -14,6 +14,23 @@
 
 namespace mesowave::dem {
 
+/// Asks for the cache line of p (prefetcht0). GCC drops __builtin_prefetch from a loop it
+/// vectorises (the loops asking for contacts' lines were, and asked for nothing); an asm
+/// statement keeps such a loop scalar and the request in it.
+inline void prefetch_line(const void* p) {
+#if defined(__x86_64__)
+  asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(p)));
+#else
+  __builtin_prefetch(p);
+#endif
+}
+
+/// Contacts [begin, end) of a task (SphereSystem::for_each_contact): those whose spheres' lines a
+/// chunk's stage asks for ahead of time.
+struct ContactRange {
+  std::size_t begin = 0, end = 0;
+};
+
 /// Fills out[s][end][c][q] = sources[s][end == 0 ? first[b + q] : second[b + q]][c] for the
 /// `count` sources, q < m <= kEndsChunk; out holds count * 2 * 3 rows of kEndsChunk doubles,
 /// 64-byte aligned.
@@ -32,6 +49,23 @@ struct alignas(64) ContactEnds {
             std::size_t chunk, std::size_t m) {
     begin = chunk;
     fill_contact_ends(sources.data(), Sources, first, second, chunk, m, &v[0][0][0][0]);
+  }
+  /// Asks for the cache lines of the second spheres of the contacts `ahead` in each source and
+  /// in `radius` (which the kernels gather in their loop): inside a partition a contact's second
+  /// sphere falls anywhere in it, a pattern no hardware prefetcher follows, and once the spheres
+  /// outgrow the caches each of those misses stalled the chunk (docs/benchmarks.md, "The step
+  /// near the memory limit", eighth part). A Vec3 may straddle two lines: its last byte is asked
+  /// for too. The first spheres come in runs, in order: the hardware fetches them.
+  static void prefetch(const std::array<const Vec3*, Sources>& sources, const double* radius, const std::uint32_t* second,
+                       ContactRange ahead) {
+    for (std::size_t b = ahead.begin; b < ahead.end; ++b) {
+      const std::uint32_t j = second[b];
+      for (const Vec3* source : sources) {
+        prefetch_line(&source[j]);
+        prefetch_line(reinterpret_cast<const char*>(&source[j] + 1) - 1);
+      }
+      prefetch_line(&radius[j]);
+    }
   }
   /// Source s at the first (end 0) or second (end 1) sphere of contact b of the chunk.
   Vec3 at(std::size_t s, int end, std::size_t b) const {

@@ -41,6 +41,7 @@
 #include <vector>
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -308,10 +309,12 @@ public:
   /// `Result` is ContactResult, or MomentContactResult for a law with moments
   /// (set_contacts with `moments` then keeps room for them).
   /// `sum_elastic`: add up the elastic energies (energy steps); `sum_plastic`: the dissipation
-  /// (laws that slide). `stage(chunk, m)` runs before each chunk's vector loop, on contacts
-  /// [chunk, chunk + m): a law fetches its spheres' data there (ContactEnds, contact_ends.hpp).
+  /// (laws that slide). `stage(chunk, m, ahead)` runs before each chunk's vector loop, on contacts
+  /// [chunk, chunk + m): a law fetches its spheres' data there (ContactEnds, contact_ends.hpp),
+  /// and asks for the lines of the contacts `ahead` (ContactEnds::prefetch; empty for systems
+  /// that fit in the caches: prefetch_ahead()).
   struct NoStage {
-    void operator()(std::size_t, std::size_t) const {}
+    void operator()(std::size_t, std::size_t, ContactRange) const {}
   };
   template <class Result = ContactResult, class Kernel, class Stage = NoStage>
   void for_each_contact(Kernel&& kernel, bool sum_elastic, bool sum_plastic, Stage&& stage = {}) __attribute__((always_inline));
@@ -322,6 +325,18 @@ public:
   static_assert(kChunk == kEndsChunk, "a law stages its contact ends a chunk at a time (contact_ends.hpp)");
   static constexpr std::size_t kSphereBlock = 256;
   static constexpr std::size_t kSpheresPerPartition = 4096;
+  /// How many contacts ahead a chunk asks for its second spheres' lines (ContactEnds::prefetch,
+  /// and the sums for_each_contact adds to), from kPrefetchFromSpheres held spheres on: below,
+  /// the lines are mostly in the caches and the requests cost their instructions (up to 17 % of
+  /// the step on one thread; on two, gains and losses by the host's state). Measured in
+  /// docs/benchmarks.md, "The step near the memory limit", eighth part; the bits do not depend on it.
+  static constexpr std::size_t kPrefetchAhead = 128;
+  static constexpr std::size_t kPrefetchFromSpheres = 32768;
+  /// The distance this system's chunks ask ahead: 0 or kPrefetchAhead.
+  std::size_t prefetch_ahead() const { return prefetch_ahead_; }
+  /// Sets that distance whatever the size (0: none), for every layout from now on: for tests and
+  /// benchmarks that compare the two (the same bits).
+  void set_prefetch_ahead(std::size_t contacts) { prefetch_set_ = prefetch_ahead_ = contacts; }
 
   /// One chunk's results, one array per component (structure of arrays), so that the kernel's
   /// vector loop stores each component of kChunk contacts with contiguous vector stores. The
@@ -356,6 +371,8 @@ private:
   bool displacement_state_, track_rotation_;
   int threads_ = 1;
   bool parallel_ = false;
+  std::size_t prefetch_ahead_ = 0;
+  std::optional<std::size_t> prefetch_set_;
 
   // The held bonds (an end of this rank's own; all in one process), in bond order: those whose
   // first sphere lies below the rank's spheres (held_cross_bonds_, their indices), then the bonds
@@ -547,10 +564,23 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
     ChunkResults<moments> results;
     for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
       const std::size_t m = std::min(kChunk, end - chunk);
+      // The lines of a later chunk's second spheres (the first come in order), so that their
+      // misses overlap with this chunk's work: the law's data (stage) and the sums a partition's
+      // contacts add to.
+      ContactRange ahead;
+      if (prefetch_ahead_ != 0) {
+        ahead.begin = std::min(end, chunk + prefetch_ahead_);
+        ahead.end = std::min(end, ahead.begin + m);
+        if (interior)
+          for (std::size_t b = ahead.begin; b < ahead.end; ++b) {
+            prefetch_line(&f[second[b]]);
+            prefetch_line(&t[second[b]]);
+          }
+      }
       // The law runs on a private Result per contact, stored component by component into the chunk's
       // arrays: only stores to separate arrays indexed by q let GCC vectorize this loop (a store of the
       // whole struct into an array of structs kept it scalar: issue 17 item 3, docs/benchmarks.md).
-      stage(chunk, m);
+      stage(chunk, m, ahead);
 #pragma GCC ivdep
       for (std::size_t q = 0; q < m; ++q) {
         Result r;
