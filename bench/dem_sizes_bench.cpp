@@ -6,9 +6,13 @@
 // Prints each size's median ms per step over the rounds (and quartiles), the ns per bond-step,
 // and the exponent b of ms per step ~ spheres^b (least squares in log-log). With --profile-s it
 // steps one model alone, for a profiler attached after the set-up (docs/benchmarks.md, sixth part).
+// With --compare-prefetch-ahead N each turn is two blocks, the contacts asking N ahead for their
+// second spheres' lines and asking for none (SphereSystem::set_prefetch_ahead; the same bits), in
+// an order alternating from round to round: the ratio of the two in one process (eighth part).
 //
 //   build/bin/bench_dem_sizes --model linear --threads 1 p32.h5 p50.h5 p75.h5 p150.h5
 //   build/bin/bench_dem_sizes --model linear --profile-s 20 p150.h5   # then perf record -p PID
+//   build/bin/bench_dem_sizes --model full --compare-prefetch-ahead 128 p32.h5 p50.h5
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -72,6 +76,7 @@ int main(int argc, char** argv) {
   std::string model_name = "linear", csv;
   int threads = 1, rounds = 12;
   double block_ms = 500, profile_s = 0;
+  int compared = 0;
   std::vector<std::string> packings;
   app.add_option("--model", model_name, "Contact law: linear (the linearised network) or full")
       ->check(CLI::IsMember({"linear", "full"}));
@@ -84,6 +89,12 @@ int main(int argc, char** argv) {
                  "its process id printed first, so that a profiler attached then (perf record -p PID) sees the "
                  "steady step without the set-up (which takes longer than the steps at 1 M spheres)")
       ->check(CLI::PositiveNumber);
+  app.add_option("--compare-prefetch-ahead", compared,
+                 "Instead of the engine's choice (128 from 32,768 spheres on, else 0), step each model in every turn "
+                 "twice: its chunks asking this many contacts ahead for their second spheres' lines, and asking for "
+                 "none, the order alternating from round to round; prints the medians of both and of the rounds' "
+                 "ratios (asking / none). The exponent is the one without")
+      ->check(CLI::Range(1, 1 << 20));
   app.add_option("packings", packings, "mw-pack packing files (HDF5), smallest first")->required()->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
   if (packings.size() < 2 && profile_s == 0) {
@@ -97,8 +108,8 @@ int main(int argc, char** argv) {
     const dem::Packing packing = dem::read_packing_file(file);
     models.push_back(model_name == "full" ? bench::step_model<dem::CohesiveFrictionalContact>(packing)
                                           : bench::step_model<dem::LinearBondedNetwork>(packing));
-    std::fprintf(stderr, "# %s: %zu spheres, %zu bonds, built\n", file.c_str(), models.back()->sphere_count(),
-                 models.back()->bond_count());
+    std::fprintf(stderr, "# %s: %zu spheres, %zu bonds, built (its contacts ask %zu ahead)\n", file.c_str(),
+                 models.back()->sphere_count(), models.back()->bond_count(), models.back()->prefetch_ahead());
   }
   if (profile_s > 0) {
     std::printf("# process %d: %s alone for %g s\n", int(getpid()), packings[0].c_str(), profile_s);
@@ -106,11 +117,21 @@ int main(int argc, char** argv) {
     std::printf("%s: %.4g ms/step\n", packings[0].c_str(), ms_per_step(*models[0], 1e3 * profile_s));
     return 0;
   }
-  std::vector<std::vector<double>> step_ms(models.size());
+  std::vector<std::vector<double>> step_ms(models.size()), asking_ms(models.size()), ratios(models.size());
   for (int round = 0; round < rounds; ++round)
     for (std::size_t m = 0; m < models.size(); ++m) {
       models[m]->step(5e-8, false);  // the caches hold the last model's data: one step to take them back
-      step_ms[m].push_back(ms_per_step(*models[m], block_ms));
+      if (compared == 0) {
+        step_ms[m].push_back(ms_per_step(*models[m], block_ms));
+        continue;
+      }
+      double ms[2];  // asking for none, asking `compared` ahead
+      for (int turn = 0; turn < 2; ++turn) {
+        const int which = (turn + round) % 2;
+        models[m]->set_prefetch_ahead(which == 0 ? 0 : std::size_t(compared));
+        ms[which] = ms_per_step(*models[m], block_ms);
+      }
+      step_ms[m].push_back(ms[0]), asking_ms[m].push_back(ms[1]), ratios[m].push_back(ms[1] / ms[0]);
     }
 
   std::ofstream out;
@@ -119,7 +140,8 @@ int main(int argc, char** argv) {
     out << "packing,model,threads,spheres,bonds,rounds,ms_per_step_median,ms_per_step_q1,ms_per_step_q3,ns_per_bond_step\n";
   }
   std::vector<double> spheres, medians;
-  std::printf("# %s, %d thread(s), %d rounds of %.0f ms a model\n", model_name.c_str(), threads, rounds, block_ms);
+  std::printf("# %s, %d thread(s), %d rounds of %.0f ms a model%s\n", model_name.c_str(), threads, rounds, block_ms,
+              compared > 0 ? " and setting (first rows: asking for no lines ahead)" : "");
   for (std::size_t m = 0; m < models.size(); ++m) {
     const double median = quantile(step_ms[m], 0.5), q1 = quantile(step_ms[m], 0.25), q3 = quantile(step_ms[m], 0.75);
     const double bonds = double(models[m]->bond_count()), ns_per_bond = 1e6 * median / bonds;
@@ -127,6 +149,9 @@ int main(int argc, char** argv) {
                 models[m]->sphere_count(), bonds, median, q1, q3, ns_per_bond);
     if (out) out << packings[m] << ',' << model_name << ',' << threads << ',' << models[m]->sphere_count() << ',' << bonds << ','
                  << rounds << ',' << median << ',' << q1 << ',' << q3 << ',' << ns_per_bond << '\n';
+    if (compared > 0)
+      std::printf("%-40s   asking %d ahead: %.4g ms/step; asking / none: median %.3f (quartiles %.3f-%.3f)\n", "", compared,
+                  quantile(asking_ms[m], 0.5), quantile(ratios[m], 0.5), quantile(ratios[m], 0.25), quantile(ratios[m], 0.75));
     spheres.push_back(double(models[m]->sphere_count())), medians.push_back(median);
   }
   std::printf("exponent b of ms/step ~ spheres^b: %.3f\n", exponent(spheres, medians));
