@@ -90,10 +90,12 @@ int main(int argc, char** argv) {
                  "steady step without the set-up (which takes longer than the steps at 1 M spheres)")
       ->check(CLI::PositiveNumber);
   app.add_option("--compare-prefetch-ahead", compared,
-                 "Instead of the engine's choice (128 from 32,768 spheres on, else 0), step each model in every turn "
-                 "twice: its chunks asking this many contacts ahead for their second spheres' lines, and asking for "
-                 "none, the order alternating from round to round; prints the medians of both and of the rounds' "
-                 "ratios (asking / none). The exponent is the one without")
+                 "Instead of the engine's choice (" + std::to_string(dem::SphereSystem::kPrefetchAhead) + " from " +
+                     std::to_string(dem::SphereSystem::kPrefetchFromSpheres) +
+                     " held spheres on, else 0), step each model in every turn twice: its chunks asking this many "
+                     "contacts ahead for their second spheres' lines, and asking for none, the order alternating from "
+                     "round to round; prints the medians of both and of the rounds' ratios (asking / none). The "
+                     "exponent is the one without")
       ->check(CLI::Range(1, 1 << 20));
   app.add_option("packings", packings, "mw-pack packing files (HDF5), smallest first")->required()->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
