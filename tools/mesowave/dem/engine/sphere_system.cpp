@@ -281,7 +281,6 @@ std::vector<std::uint32_t> SphereSystem::finish_layout(const std::vector<std::ui
   task_peak2_.assign(tasks, 0);
   // A parallel region costs a few microseconds: worth it only for big systems.
   parallel_ = threads_ > 1 && held >= 8 * kContactBlock && partitions_ > 1;
-  prefetch_ahead_ = prefetch_set_ ? *prefetch_set_ : x_.size() >= kPrefetchFromSpheres ? kPrefetchAhead : 0;
   return order;
 }
 

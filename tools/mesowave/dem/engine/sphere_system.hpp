@@ -332,11 +332,13 @@ public:
   /// docs/benchmarks.md, "The step near the memory limit", eighth part; the bits do not depend on it.
   static constexpr std::size_t kPrefetchAhead = 128;
   static constexpr std::size_t kPrefetchFromSpheres = 32768;
-  /// The distance this system's chunks ask ahead: 0 or kPrefetchAhead.
-  std::size_t prefetch_ahead() const { return prefetch_ahead_; }
-  /// Sets that distance whatever the size (0: none), for every layout from now on: for tests and
-  /// benchmarks that compare the two (the same bits).
-  void set_prefetch_ahead(std::size_t contacts) { prefetch_set_ = prefetch_ahead_ = contacts; }
+  /// The distance this system's chunks ask ahead: 0 or kPrefetchAhead by the held spheres, unless set.
+  std::size_t prefetch_ahead() const {
+    return prefetch_set_.value_or(x_.size() >= kPrefetchFromSpheres ? kPrefetchAhead : 0);
+  }
+  /// Sets that distance whatever the size (0: none): for tests and benchmarks that compare the
+  /// two (the same bits).
+  void set_prefetch_ahead(std::size_t contacts) { prefetch_set_ = contacts; }
 
   /// One chunk's results, one array per component (structure of arrays), so that the kernel's
   /// vector loop stores each component of kChunk contacts with contiguous vector stores. The
@@ -371,7 +373,6 @@ private:
   bool displacement_state_, track_rotation_;
   int threads_ = 1;
   bool parallel_ = false;
-  std::size_t prefetch_ahead_ = 0;
   std::optional<std::size_t> prefetch_set_;
 
   // The held bonds (an end of this rank's own; all in one process), in bond order: those whose
@@ -562,14 +563,15 @@ inline void SphereSystem::for_each_contact(Kernel&& kernel, bool sum_elastic, bo
     std::uint32_t run = begin < end ? first[begin] : 0;
     Vec3 run_f = interior && begin < end ? f[run] : Vec3{}, run_t = interior && begin < end ? t[run] : Vec3{};
     ChunkResults<moments> results;
+    const std::size_t prefetch_ahead = this->prefetch_ahead();
     for (std::size_t chunk = begin; chunk < end; chunk += kChunk) {
       const std::size_t m = std::min(kChunk, end - chunk);
       // The lines of a later chunk's second spheres (the first come in order), so that their
       // misses overlap with this chunk's work: the law's data (stage) and the sums a partition's
       // contacts add to.
       ContactRange ahead;
-      if (prefetch_ahead_ != 0) {
-        ahead.begin = std::min(end, chunk + prefetch_ahead_);
+      if (prefetch_ahead != 0) {
+        ahead.begin = std::min(end, chunk + prefetch_ahead);
         ahead.end = std::min(end, ahead.begin + m);
         if (interior)
           for (std::size_t b = ahead.begin; b < ahead.end; ++b) {
