@@ -6,13 +6,17 @@
 // Prints each size's median ms per step over the rounds (and quartiles), the ns per bond-step,
 // and the exponent b of ms per step ~ spheres^b (least squares in log-log). With --profile-s it
 // steps one model alone, for a profiler attached after the set-up (docs/benchmarks.md, sixth part).
-// With --compare-prefetch-ahead N each turn is two blocks, the contacts asking N ahead for their
-// second spheres' lines and asking for none (SphereSystem::set_prefetch_ahead; the same bits), in
-// an order alternating from round to round: the ratio of the two in one process (eighth part).
+// With a --compare-* option each turn is two blocks, the model as the engine makes it (A) and a
+// variant (B), in an order alternating from round to round: the ratio B / A in one process.
+//   --compare-prefetch-ahead N: B's contacts ask N ahead for their second spheres' lines, A's
+//     for none (SphereSystem::set_prefetch_ahead, on the one model; the same bits; eighth part);
+//   --compare-spheres-per-partition N: B is a second model of the packing laid out in partitions
+//     of about N spheres (SphereSystem::partition_count; other bits; ninth part).
 //
 //   build/bin/bench_dem_sizes --model linear --threads 1 p32.h5 p50.h5 p75.h5 p150.h5
 //   build/bin/bench_dem_sizes --model linear --profile-s 20 p150.h5   # then perf record -p PID
 //   build/bin/bench_dem_sizes --model full --compare-prefetch-ahead 128 p32.h5 p50.h5
+//   build/bin/bench_dem_sizes --model full --compare-spheres-per-partition 4096 p32.h5 p50.h5
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -76,7 +80,7 @@ int main(int argc, char** argv) {
   std::string model_name = "linear", csv;
   int threads = 1, rounds = 12;
   double block_ms = 500, profile_s = 0;
-  int compared = 0;
+  int compared = 0, compared_partition = 0;
   std::vector<std::string> packings;
   app.add_option("--model", model_name, "Contact law: linear (the linearised network) or full")
       ->check(CLI::IsMember({"linear", "full"}));
@@ -89,14 +93,25 @@ int main(int argc, char** argv) {
                  "its process id printed first, so that a profiler attached then (perf record -p PID) sees the "
                  "steady step without the set-up (which takes longer than the steps at 1 M spheres)")
       ->check(CLI::PositiveNumber);
-  app.add_option("--compare-prefetch-ahead", compared,
-                 "Instead of the engine's choice (" + std::to_string(dem::SphereSystem::kPrefetchAhead) + " from " +
-                     std::to_string(dem::SphereSystem::kPrefetchFromSpheres) +
-                     " held spheres on, else 0), step each model in every turn twice: its chunks asking this many "
-                     "contacts ahead for their second spheres' lines, and asking for none, the order alternating from "
-                     "round to round; prints the medians of both and of the rounds' ratios (asking / none). The "
-                     "exponent is the one without")
-      ->check(CLI::Range(1, 1 << 20));
+  auto* prefetch_option =
+      app.add_option("--compare-prefetch-ahead", compared,
+                     "Instead of the engine's choice (" + std::to_string(dem::SphereSystem::kPrefetchAhead) + " from " +
+                         std::to_string(dem::SphereSystem::kPrefetchFromSpheres) +
+                         " held spheres on, else 0), step each model in every turn twice: its chunks asking this many "
+                         "contacts ahead for their second spheres' lines (B), and asking for none (A), the order "
+                         "alternating from round to round; prints the medians of both and of the rounds' ratios B / A. "
+                         "The exponent is A's")
+          ->check(CLI::Range(1, 1 << 20));
+  app.add_option("--compare-spheres-per-partition", compared_partition,
+                 "Also build each packing's model laid out in partitions of about this many spheres (B; the engine's "
+                 "is " + std::to_string(dem::SphereSystem::kSpheresPerPartition) +
+                     ", at least " + std::to_string(dem::SphereSystem::kMinPartitions) + " partitions where " +
+                     std::to_string(dem::SphereSystem::kSpheresPerPartitionMin) + " spheres each allow it, at most " +
+                     std::to_string(dem::SphereSystem::kMaxPartitions) +
+                     "; other bits) and step both in every turn, the order alternating from round to round; prints "
+                     "the medians of both and of the rounds' ratios B / A (A: the engine's layout). The exponent is A's")
+      ->check(CLI::Range(dem::SphereSystem::kSpheresPerPartitionMin, std::size_t(1) << 24))
+      ->excludes(prefetch_option);
   app.add_option("packings", packings, "mw-pack packing files (HDF5), smallest first")->required()->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
   if (packings.size() < 2 && profile_s == 0) {
@@ -105,35 +120,52 @@ int main(int argc, char** argv) {
   }
 
   use_threads(threads);
-  std::vector<std::unique_ptr<dem::SphereSystem>> models;
+  const auto build = [&](const dem::Packing& packing, std::size_t spheres_per_partition) {
+    return model_name == "full" ? bench::step_model<dem::CohesiveFrictionalContact>(packing, spheres_per_partition)
+                                : bench::step_model<dem::LinearBondedNetwork>(packing, spheres_per_partition);
+  };
+  // Per packing the model as the engine makes it and, with --compare-spheres-per-partition, its variant.
+  std::vector<std::unique_ptr<dem::SphereSystem>> models, variants;
   for (const std::string& file : packings) {
     const dem::Packing packing = dem::read_packing_file(file);
-    models.push_back(model_name == "full" ? bench::step_model<dem::CohesiveFrictionalContact>(packing)
-                                          : bench::step_model<dem::LinearBondedNetwork>(packing));
-    std::fprintf(stderr, "# %s: %zu spheres, %zu bonds, built (its contacts ask %zu ahead)\n", file.c_str(),
-                 models.back()->sphere_count(), models.back()->bond_count(), models.back()->prefetch_ahead());
+    models.push_back(build(packing, dem::SphereSystem::kSpheresPerPartition));
+    std::fprintf(stderr, "# %s: %zu spheres, %zu bonds, built (%zu partitions; its contacts ask %zu ahead)\n", file.c_str(),
+                 models.back()->sphere_count(), models.back()->bond_count(),
+                 dem::SphereSystem::partition_count(models.back()->sphere_count()), models.back()->prefetch_ahead());
+    if (compared_partition > 0) {
+      variants.push_back(build(packing, std::size_t(compared_partition)));
+      std::fprintf(stderr, "#   and its variant in %zu partitions\n",
+                   dem::SphereSystem::partition_count(models.back()->sphere_count(), std::size_t(compared_partition)));
+    }
   }
+  const bool comparing = compared > 0 || compared_partition > 0;
+  // Readies turn `which` (0: A, 1: B) of packing m and returns the model it steps.
+  const auto variant = [&](std::size_t m, int which) -> dem::SphereSystem& {
+    if (compared > 0) models[m]->set_prefetch_ahead(which == 0 ? 0 : std::size_t(compared));
+    return which == 1 && compared_partition > 0 ? *variants[m] : *models[m];
+  };
   if (profile_s > 0) {
     std::printf("# process %d: %s alone for %g s\n", int(getpid()), packings[0].c_str(), profile_s);
     std::fflush(stdout);
     std::printf("%s: %.4g ms/step\n", packings[0].c_str(), ms_per_step(*models[0], 1e3 * profile_s));
     return 0;
   }
-  std::vector<std::vector<double>> step_ms(models.size()), asking_ms(models.size()), ratios(models.size());
+  std::vector<std::vector<double>> step_ms(models.size()), variant_ms(models.size()), ratios(models.size());
   for (int round = 0; round < rounds; ++round)
     for (std::size_t m = 0; m < models.size(); ++m) {
-      models[m]->step(5e-8, false);  // the caches hold the last model's data: one step to take them back
-      if (compared == 0) {
+      if (!comparing) {
+        models[m]->step(5e-8, false);  // the caches hold the last model's data: one step to take them back
         step_ms[m].push_back(ms_per_step(*models[m], block_ms));
         continue;
       }
-      double ms[2];  // asking for none, asking `compared` ahead
+      double ms[2];  // A, B
       for (int turn = 0; turn < 2; ++turn) {
         const int which = (turn + round) % 2;
-        models[m]->set_prefetch_ahead(which == 0 ? 0 : std::size_t(compared));
-        ms[which] = ms_per_step(*models[m], block_ms);
+        dem::SphereSystem& model = variant(m, which);
+        model.step(5e-8, false);
+        ms[which] = ms_per_step(model, block_ms);
       }
-      step_ms[m].push_back(ms[0]), asking_ms[m].push_back(ms[1]), ratios[m].push_back(ms[1] / ms[0]);
+      step_ms[m].push_back(ms[0]), variant_ms[m].push_back(ms[1]), ratios[m].push_back(ms[1] / ms[0]);
     }
 
   std::ofstream out;
@@ -142,8 +174,12 @@ int main(int argc, char** argv) {
     out << "packing,model,threads,spheres,bonds,rounds,ms_per_step_median,ms_per_step_q1,ms_per_step_q3,ns_per_bond_step\n";
   }
   std::vector<double> spheres, medians;
+  const std::string variant_name = compared > 0 ? "asking " + std::to_string(compared) + " ahead"
+                                   : "partitions of " + std::to_string(compared_partition) + " spheres";
   std::printf("# %s, %d thread(s), %d rounds of %.0f ms a model%s\n", model_name.c_str(), threads, rounds, block_ms,
-              compared > 0 ? " and setting (first rows: asking for no lines ahead)" : "");
+              !comparing ? ""
+              : compared > 0 ? " and setting (first rows, A: asking for no lines ahead)"
+                             : " and layout (first rows, A: the engine's partitions)");
   for (std::size_t m = 0; m < models.size(); ++m) {
     const double median = quantile(step_ms[m], 0.5), q1 = quantile(step_ms[m], 0.25), q3 = quantile(step_ms[m], 0.75);
     const double bonds = double(models[m]->bond_count()), ns_per_bond = 1e6 * median / bonds;
@@ -151,9 +187,9 @@ int main(int argc, char** argv) {
                 models[m]->sphere_count(), bonds, median, q1, q3, ns_per_bond);
     if (out) out << packings[m] << ',' << model_name << ',' << threads << ',' << models[m]->sphere_count() << ',' << bonds << ','
                  << rounds << ',' << median << ',' << q1 << ',' << q3 << ',' << ns_per_bond << '\n';
-    if (compared > 0)
-      std::printf("%-40s   asking %d ahead: %.4g ms/step; asking / none: median %.3f (quartiles %.3f-%.3f)\n", "", compared,
-                  quantile(asking_ms[m], 0.5), quantile(ratios[m], 0.5), quantile(ratios[m], 0.25), quantile(ratios[m], 0.75));
+    if (comparing)
+      std::printf("%-40s   B, %s: %.4g ms/step; B / A: median %.3f (quartiles %.3f-%.3f)\n", "", variant_name.c_str(),
+                  quantile(variant_ms[m], 0.5), quantile(ratios[m], 0.5), quantile(ratios[m], 0.25), quantile(ratios[m], 0.75));
     spheres.push_back(double(models[m]->sphere_count())), medians.push_back(median);
   }
   std::printf("exponent b of ms/step ~ spheres^b: %.3f\n", exponent(spheres, medians));

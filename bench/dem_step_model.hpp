@@ -22,12 +22,15 @@ inline dem::CohesiveFrictionalMaterial concrete(const dem::Packing& packing) {
   return m;
 }
 
+/// `spheres_per_partition`: the engine's unless a benchmark compares another (SphereSystem::partition_count).
 template <class Law>
-std::unique_ptr<dem::SphereSystem> step_model(const dem::Packing& packing) {
+std::unique_ptr<dem::SphereSystem> step_model(const dem::Packing& packing,
+                                              std::size_t spheres_per_partition = dem::SphereSystem::kSpheresPerPartition) {
   const auto m = concrete(packing);
   dem::SphereSet s = dem::make_sphere_set(packing, m.density_kg_m3);
   dem::BondNetwork b = dem::make_bond_network(s, m.bond_factor);
-  auto model = std::make_unique<dem::SphereSystem>(std::move(s), std::move(b), m, std::make_unique<Law>());
+  auto model = std::make_unique<dem::SphereSystem>(std::move(s), std::move(b), m, std::make_unique<Law>(), nullptr,
+                                                   spheres_per_partition);
   for (std::size_t k = 0; k < 50; ++k) model->add_external_force(k, {1e-3, 0, 0});
   for (int i = 0; i < 20; ++i) model->step(5e-8, false);
   return model;

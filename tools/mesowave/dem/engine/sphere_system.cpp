@@ -73,7 +73,7 @@ void copy_sphere(const SphereSet& from, std::size_t i, SphereSet& to, std::size_
 }  // namespace
 
 SphereSystem::SphereSystem(SpherePart spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
-                           std::unique_ptr<ContactKernel> kernel, Domain* domain)
+                           std::unique_ptr<ContactKernel> kernel, Domain* domain, std::size_t spheres_per_partition)
     : bonds_(std::move(bonds)), material_(material), kernel_(std::move(kernel)),
       displacement_state_(kernel_->displacement_state()), track_rotation_(kernel_->track_rotation()) {
   if (spheres.domain() != domain)
@@ -85,9 +85,7 @@ SphereSystem::SphereSystem(SpherePart spheres, BondNetwork bonds, const Cohesive
   sphere_block_damping_.assign(sphere_blocks, 0);
   sphere_block_vmax2_.assign(sphere_blocks, 0);
   threads_ = omp_get_max_threads();
-  // A fixed number of Morton ranges, set by the sphere count alone (never by
-  // the thread count, which must not change the bits): ~4000 spheres each.
-  partitions_ = std::clamp<std::size_t>(n / kSpheresPerPartition, 1, 64);
+  partitions_ = partition_count(n, spheres_per_partition);
   sphere_chunk_ = (n + partitions_ - 1) / partitions_;
   if (domain) split(*domain);
   // Until the law lays its contacts out, a rank holds its own spheres (one process all): what

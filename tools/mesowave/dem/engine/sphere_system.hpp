@@ -99,9 +99,11 @@ public:
   /// law lays out and holds only the contacts of this rank's spheres; distribute() must then
   /// be given the same domain. `spheres` and `bonds`: the whole set and network in one process,
   /// this rank's parts of them on several (SpherePart with the domain, make_bond_network of it:
-  /// the bonds with an end of its own).
+  /// the bonds with an end of its own). `spheres_per_partition`: the layout's partition size
+  /// (partition_count), another only for benchmarks that compare two.
   SphereSystem(SpherePart spheres, BondNetwork bonds, const CohesiveFrictionalMaterial& material,
-               std::unique_ptr<ContactKernel> kernel, Domain* domain = nullptr);
+               std::unique_ptr<ContactKernel> kernel, Domain* domain = nullptr,
+               std::size_t spheres_per_partition = kSpheresPerPartition);
   ~SphereSystem() override;
 
   std::string name() const override { return kernel_->name(); }
@@ -324,7 +326,20 @@ public:
   static constexpr std::size_t kChunk = 32;
   static_assert(kChunk == kEndsChunk, "a law stages its contact ends a chunk at a time (contact_ends.hpp)");
   static constexpr std::size_t kSphereBlock = 256;
-  static constexpr std::size_t kSpheresPerPartition = 4096;
+  /// The partitions (Morton ranges; set_contacts): about kSpheresPerPartition spheres each, but at
+  /// least kMinPartitions where ranges of kSpheresPerPartitionMin spheres allow that many, and at
+  /// most kMaxPartitions. Set by the sphere count alone: the same bits on any number of threads
+  /// or ranks. Fewer, larger ranges put fewer contacts across them (each leaves a record that
+  /// integrate gathers); four still give two threads' dynamic schedule tasks to balance. 16,384
+  /// instead of 4,096 spheres a range: the 50 and 75 mm cubes' step 4-7 % shorter, both laws,
+  /// 1 and 2 threads (docs/benchmarks.md, "The step near the memory limit", ninth part).
+  static constexpr std::size_t kSpheresPerPartition = 16384;
+  static constexpr std::size_t kSpheresPerPartitionMin = 4096;
+  static constexpr std::size_t kMinPartitions = 4, kMaxPartitions = 64;
+  static std::size_t partition_count(std::size_t spheres, std::size_t spheres_per_partition = kSpheresPerPartition) {
+    const std::size_t lowest = std::clamp<std::size_t>(spheres / kSpheresPerPartitionMin, 1, kMinPartitions);
+    return std::clamp(spheres / std::max<std::size_t>(spheres_per_partition, 1), lowest, kMaxPartitions);
+  }
   /// How many contacts ahead a chunk asks for its second spheres' lines (ContactEnds::prefetch,
   /// and the sums for_each_contact adds to), from kPrefetchFromSpheres held spheres on: below,
   /// the lines are mostly in the caches and the requests cost their instructions (up to 17 % of
