@@ -135,8 +135,11 @@ TEST(BlastSlab, CompactedZoneLiesUnderTheChargeAndIsEmptyBelowTheThresholdPressu
               above.crater.depth_m * 1e3, above.crater.width_m * 1e3, above.crater.pieces - 1);
   ASSERT_GT(above.crater.crushed_points, 0u);
   ASSERT_EQ(above.final_points.crater.size(), above.points);
-  for (std::size_t k = 0; k < above.points; ++k)
-    if (above.final_points.crater[k] == CraterLabel::crushed) EXPECT_LE(above.final_points.min_eps_v[k], -above.crushing_eps_v) << k;
+  for (std::size_t k = 0; k < above.points; ++k) {
+    if (above.final_points.crater[k] == CraterLabel::crushed) {
+      EXPECT_LE(above.final_points.min_eps_v[k], -above.crushing_eps_v) << k;
+    }
+  }
   if (above.crater.crater_fragments == 0) {
     EXPECT_LE(above.crater.depth_m, above.compacted_depth_m);
     EXPECT_GE(above.crater.x_min_m, above.compacted_x_min_m);
