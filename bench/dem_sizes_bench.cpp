@@ -153,19 +153,16 @@ int main(int argc, char** argv) {
   std::vector<std::vector<double>> step_ms(models.size()), variant_ms(models.size()), ratios(models.size());
   for (int round = 0; round < rounds; ++round)
     for (std::size_t m = 0; m < models.size(); ++m) {
-      if (!comparing) {
-        models[m]->step(5e-8, false);  // the caches hold the last model's data: one step to take them back
-        step_ms[m].push_back(ms_per_step(*models[m], block_ms));
-        continue;
-      }
-      double ms[2];  // A, B
-      for (int turn = 0; turn < 2; ++turn) {
-        const int which = (turn + round) % 2;
+      const int turns = comparing ? 2 : 1;
+      double ms[2] = {};  // A, B
+      for (int turn = 0; turn < turns; ++turn) {
+        const int which = (turn + round) % turns;
         dem::SphereSystem& model = variant(m, which);
-        model.step(5e-8, false);
+        model.step(5e-8, false);  // the caches hold the last model's data: one step to take them back
         ms[which] = ms_per_step(model, block_ms);
       }
-      step_ms[m].push_back(ms[0]), variant_ms[m].push_back(ms[1]), ratios[m].push_back(ms[1] / ms[0]);
+      step_ms[m].push_back(ms[0]);
+      if (comparing) variant_ms[m].push_back(ms[1]), ratios[m].push_back(ms[1] / ms[0]);
     }
 
   std::ofstream out;
