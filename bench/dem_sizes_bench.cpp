@@ -11,12 +11,15 @@
 //   --compare-prefetch-ahead N: B's contacts ask N ahead for their second spheres' lines, A's
 //     for none (SphereSystem::set_prefetch_ahead, on the one model; the same bits; eighth part);
 //   --compare-spheres-per-partition N: B is a second model of the packing laid out in partitions
-//     of about N spheres (SphereSystem::partition_count; other bits; ninth part).
+//     of about N spheres (SphereSystem::partition_count; other bits; ninth part);
+//   --compare-every-acceleration: B keeps every sphere's acceleration, A only the 50 observed
+//     spheres' (Model::observe, on the one model; the same bits; tenth part).
 //
 //   build/bin/bench_dem_sizes --model linear --threads 1 p32.h5 p50.h5 p75.h5 p150.h5
 //   build/bin/bench_dem_sizes --model linear --profile-s 20 p150.h5   # then perf record -p PID
 //   build/bin/bench_dem_sizes --model full --compare-prefetch-ahead 128 p32.h5 p50.h5
 //   build/bin/bench_dem_sizes --model full --compare-spheres-per-partition 4096 p32.h5 p50.h5
+//   build/bin/bench_dem_sizes --model linear --compare-every-acceleration p32.h5 p50.h5
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -81,6 +84,7 @@ int main(int argc, char** argv) {
   int threads = 1, rounds = 12;
   double block_ms = 500, profile_s = 0;
   int compared = 0, compared_partition = 0;
+  bool compared_every_acceleration = false;
   std::vector<std::string> packings;
   app.add_option("--model", model_name, "Contact law: linear (the linearised network) or full")
       ->check(CLI::IsMember({"linear", "full"}));
@@ -102,7 +106,7 @@ int main(int argc, char** argv) {
                          "alternating from round to round; prints the medians of both and of the rounds' ratios B / A. "
                          "The exponent is A's")
           ->check(CLI::Range(1, 1 << 20));
-  app.add_option("--compare-spheres-per-partition", compared_partition,
+  auto* partition_option = app.add_option("--compare-spheres-per-partition", compared_partition,
                  "Also build each packing's model laid out in partitions of about this many spheres (B; the engine's "
                  "is " + std::to_string(dem::SphereSystem::kSpheresPerPartition) +
                      ", at least " + std::to_string(dem::SphereSystem::kMinPartitions) + " partitions where " +
@@ -112,6 +116,13 @@ int main(int argc, char** argv) {
                      "the medians of both and of the rounds' ratios B / A (A: the engine's layout). The exponent is A's")
       ->check(CLI::Range(dem::SphereSystem::kSpheresPerPartitionMin, std::size_t(1) << 24))
       ->excludes(prefetch_option);
+  app.add_flag("--compare-every-acceleration", compared_every_acceleration,
+               "Step each model in every turn twice: keeping every sphere's acceleration (B) and only the 50 "
+               "observed spheres' blocks' (A, as a run keeps those of its sensors and actuators: Model::observe), "
+               "the order alternating from round to round; prints the medians of both and of the rounds' ratios "
+               "B / A (the same bits). The exponent is A's")
+      ->excludes(prefetch_option)
+      ->excludes(partition_option);
   app.add_option("packings", packings, "mw-pack packing files (HDF5), smallest first")->required()->check(CLI::ExistingFile);
   CLI11_PARSE(app, argc, argv);
   if (packings.size() < 2 && profile_s == 0) {
@@ -138,10 +149,15 @@ int main(int argc, char** argv) {
                    dem::SphereSystem::partition_count(models.back()->sphere_count(), std::size_t(compared_partition)));
     }
   }
-  const bool comparing = compared > 0 || compared_partition > 0;
+  const bool comparing = compared > 0 || compared_partition > 0 || compared_every_acceleration;
   // Readies turn `which` (0: A, 1: B) of packing m and returns the model it steps.
   const auto variant = [&](std::size_t m, int which) -> dem::SphereSystem& {
     if (compared > 0) models[m]->set_prefetch_ahead(which == 0 ? 0 : std::size_t(compared));
+    if (compared_every_acceleration) {
+      std::vector<std::size_t> observed(which == 0 ? 50 : models[m]->sphere_count());
+      for (std::size_t k = 0; k < observed.size(); ++k) observed[k] = k;
+      models[m]->observe(observed);
+    }
     return which == 1 && compared_partition > 0 ? *variants[m] : *models[m];
   };
   if (profile_s > 0) {
@@ -171,12 +187,14 @@ int main(int argc, char** argv) {
     out << "packing,model,threads,spheres,bonds,rounds,ms_per_step_median,ms_per_step_q1,ms_per_step_q3,ns_per_bond_step\n";
   }
   std::vector<double> spheres, medians;
-  const std::string variant_name = compared > 0 ? "asking " + std::to_string(compared) + " ahead"
-                                   : "partitions of " + std::to_string(compared_partition) + " spheres";
+  const std::string variant_name = compared > 0                  ? "asking " + std::to_string(compared) + " ahead"
+                                   : compared_every_acceleration ? std::string("every acceleration kept")
+                                                                 : "partitions of " + std::to_string(compared_partition) + " spheres";
   std::printf("# %s, %d thread(s), %d rounds of %.0f ms a model%s\n", model_name.c_str(), threads, rounds, block_ms,
-              !comparing ? ""
-              : compared > 0 ? " and setting (first rows, A: asking for no lines ahead)"
-                             : " and layout (first rows, A: the engine's partitions)");
+              !comparing                    ? ""
+              : compared > 0                ? " and setting (first rows, A: asking for no lines ahead)"
+              : compared_every_acceleration ? " and setting (first rows, A: the observed spheres' accelerations kept)"
+                                            : " and layout (first rows, A: the engine's partitions)");
   for (std::size_t m = 0; m < models.size(); ++m) {
     const double median = quantile(step_ms[m], 0.5), q1 = quantile(step_ms[m], 0.25), q3 = quantile(step_ms[m], 0.75);
     const double bonds = double(models[m]->bond_count()), ns_per_bond = 1e6 * median / bonds;

@@ -65,6 +65,12 @@ public:
   virtual double impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) = 0;
   /// Initial condition (tests, free vibration): v_{-1/2}.
   virtual void set_velocity(std::size_t k, const Vec3& v) = 0;
+  /// The spheres whose acceleration() the sensors read and on which the actuators call
+  /// impose_displacement(), given once before the first step. A model may then keep the
+  /// accelerations of those only: a step writes no others (issue 17: two of the sphere
+  /// update's ten arrays), and acceleration() or impose_displacement() of another sphere is a
+  /// std::logic_error. Without a call every sphere's is kept.
+  virtual void observe(const std::vector<std::size_t>& spheres) { (void)spheres; }
 
   /// One time step. With `evaluate_energy` the kinetic and elastic energies
   /// of this step are computed (an extra few flops per bond and sphere).

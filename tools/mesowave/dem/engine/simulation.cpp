@@ -214,7 +214,8 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
       sensors_.push_back(sensor_kinds().get(twin.kind, "sensor " + twin.name)
                              .make(SensorSite{twin, spheres, sensor_groups[i], line, 1, actuators_}, unused));
     }
-  // Every rank runs the actuators and sensors, so every rank holds the spheres they read.
+  // Every rank runs the actuators and sensors, so every rank holds the spheres they read; the
+  // model keeps the accelerations of those only.
   std::vector<std::size_t> observed;
   for (const auto& a : actuators_) observed.insert(observed.end(), a->spheres().begin(), a->spheres().end());
   for (const auto& groups : sensor_groups)
@@ -223,6 +224,7 @@ Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions op
   model_ = contact_laws()
                .get(scene_.contact_law, "[material].law")
                .make(choice_.model, std::move(spheres), std::move(bonds), LawInput{m, scene_.law_parameters, line, domain});
+  model_->observe(observed);
   if (domain) model_->distribute(*domain, observed);
 #ifdef __GLIBC__
   // The setup's buffers are freed, but in the heap's middle: hand those pages back before the

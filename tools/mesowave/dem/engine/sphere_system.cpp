@@ -82,6 +82,7 @@ SphereSystem::SphereSystem(SpherePart spheres, BondNetwork bonds, const Cohesive
   if (n > 0) radius_min_ = spheres.radius_min(), radius_max_ = spheres.radius_max();
   const std::size_t sphere_blocks = (n + kSphereBlock - 1) / kSphereBlock;
   sphere_block_kinetic_.assign(sphere_blocks, 0);
+  block_keeps_acceleration_.assign(sphere_blocks, 1);
   sphere_block_damping_.assign(sphere_blocks, 0);
   sphere_block_vmax2_.assign(sphere_blocks, 0);
   threads_ = omp_get_max_threads();
@@ -297,8 +298,23 @@ void SphereSystem::add_external_force(std::size_t sphere, const Vec3& force) {
   f_ext_[k] += force;
 }
 
+void SphereSystem::observe(const std::vector<std::size_t>& spheres) {
+  std::fill(block_keeps_acceleration_.begin(), block_keeps_acceleration_.end(), std::uint8_t(0));
+  for (const std::size_t k : spheres) {
+    if (k >= sphere_total_) throw std::logic_error("SphereSystem::observe: no sphere " + std::to_string(k));
+    block_keeps_acceleration_[k / kSphereBlock] = 1;
+  }
+}
+
+std::size_t SphereSystem::observed_local_id(std::size_t k) const {
+  if (k >= sphere_total_ || !block_keeps_acceleration_[k / kSphereBlock])
+    throw std::logic_error("SphereSystem: the acceleration of sphere " + std::to_string(k) +
+                           " is not kept (not among the observed spheres)");
+  return local_id(k);
+}
+
 double SphereSystem::impose_displacement(std::size_t sphere, const Vec3& e, double u_now, double u_next, double dt) {
-  const std::size_t k = local_id(sphere);
+  const std::size_t k = observed_local_id(sphere);
   const double v_imposed = (u_next - u_now) / dt;
   const double v_before = dot(v_[k], e) - dt * dot(a_[k], e);  // v_{n-1/2} along e
   // A constrained degree of freedom is not damped (Yade: blocked DOFs skip the
@@ -426,6 +442,8 @@ void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t
   const std::size_t m = 3 * (end - begin);
   double kin[3 * kSphereBlock];
   double vmax2 = 0, kinetic = 0;
+  // Only the observed spheres' blocks keep the accelerations (observe()).
+  const bool keep_a = block_keeps_acceleration_[blk] != 0;
   for (int part = 0; part < 2; ++part) {
     const bool rotation = part == 1;
     double* f = &(rotation ? t_acc_ : f_acc_)[begin].x;
@@ -450,9 +468,11 @@ void SphereSystem::update_motion(std::size_t begin, std::size_t end, std::size_t
       dmp[c] = mass * (a_free - a) * (v0 + v1) * half_dt;
       v[c] = v1;
       f[c] = 0.0;
-      if (!rotation) {
+      if (!rotation && keep_a) {
         a_out[c] = a;
         a_free_out[c] = a_free;
+      }
+      if (!rotation) {
         x[c] += dt * v1;
         part_vmax2 = std::max(part_vmax2, v1 * v1);
       }

@@ -128,10 +128,14 @@ public:
   /// writes, also any sphere on rank 0 after collect_state().
   Vec3 displacement(std::size_t k) const override;
   Vec3 velocity(std::size_t k) const override { return held_or_collected(v_, collected_.v, k); }
-  Vec3 acceleration(std::size_t k) const override { return a_[local_id(k)]; }
+  Vec3 acceleration(std::size_t k) const override { return a_[observed_local_id(k)]; }
   void add_external_force(std::size_t k, const Vec3& force) override;
   double impose_displacement(std::size_t k, const Vec3& e, double u_now, double u_next, double dt) override;
   void set_velocity(std::size_t k, const Vec3& v) override { v_[local_id(k)] = v; }
+  /// Keeps the accelerations of the blocks (kSphereBlock spheres) that hold an observed sphere.
+  /// May be called again between steps (benchmarks compare both): a block kept anew holds its
+  /// accelerations from the next step on.
+  void observe(const std::vector<std::size_t>& spheres) override;
   void step(double dt, bool evaluate_energy) override;
   EnergyAccount energy() const override;
   double peak_force_ratio() const override { return peak_ratio_; }
@@ -439,6 +443,10 @@ private:
   std::vector<double> task_elastic_, task_plastic_, task_peak2_;
   std::vector<double> sphere_block_kinetic_, sphere_block_damping_, sphere_block_vmax2_;
   std::vector<Vec3> a_undamped_;           ///< F/m before damping (a constrained DOF is not damped)
+  /// Per block of kSphereBlock spheres (global ids): whether a_ and a_undamped_ are kept (observe()).
+  std::vector<std::uint8_t> block_keeps_acceleration_;
+  /// Sphere k's local id, a std::logic_error if its acceleration is not kept (observe()).
+  std::size_t observed_local_id(std::size_t k) const;
   std::vector<std::uint32_t> forced_;  ///< spheres with an external force this step
   std::vector<Vec3> forced_v_before_;
   std::vector<std::uint8_t> is_forced_;
