@@ -69,9 +69,17 @@ UniaxialTestSpecimen describe_specimen(double r_mean, const Box& box, const std:
   return s;
 }
 
+// A copy of one default-constructed object, not a temporary: see the header.
+const SimulationOptions& default_options() {
+  static const SimulationOptions options;
+  return options;
+}
+
 }  // namespace
 
 Simulation::~Simulation() = default;
+
+Simulation::Simulation(const Scene& scene, Packing packing) : Simulation(scene, std::move(packing), default_options()) {}
 
 Simulation::Simulation(const Scene& scene, Packing packing, SimulationOptions options)
     : scene_(scene), options_(std::move(options)) {

@@ -100,7 +100,10 @@ public:
   /// InputError for anything the user can fix (scene, packing, dt above the limit...). The
   /// packing is dropped once the spheres are made from it (move it in: 24 B a sphere less at setup).
   /// With options.domain of several ranks it is this rank's rows (read_packing_file's part).
-  Simulation(const Scene& scene, Packing packing, SimulationOptions options = {});
+  Simulation(const Scene& scene, Packing packing, SimulationOptions options);
+  /// With the default options. (Not a default argument: GCC 12 then warns of a json member of
+  /// the caller's temporary options as maybe uninitialised, a false positive.)
+  Simulation(const Scene& scene, Packing packing);
   ~Simulation();
 
   const ModelChoice& choice() const { return choice_; }
