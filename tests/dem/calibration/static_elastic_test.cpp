@@ -5,10 +5,9 @@
 // dynamically and statically.
 #include <gtest/gtest.h>
 
-#include <numeric>
-
 #include <cmath>
 #include <cstring>
+#include <numeric>
 
 #include "dem/test_packings.hpp"
 #include "mesowave/core/error.hpp"
