@@ -117,10 +117,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(dem::SphereSystem::kSpheresPerPartitionMin, std::size_t(1) << 24))
       ->excludes(prefetch_option);
   app.add_flag("--compare-every-acceleration", compared_every_acceleration,
-               "Step each model in every turn twice: keeping every sphere's acceleration (B) and only the 50 "
-               "observed spheres' blocks' (A, as a run keeps those of its sensors and actuators: Model::observe), "
-               "the order alternating from round to round; prints the medians of both and of the rounds' ratios "
-               "B / A (the same bits). The exponent is A's")
+               "Step each model in every turn twice: keeping every sphere's acceleration (B) and only the " +
+                   std::to_string(bench::kPushedSpheres) +
+                   " observed spheres' blocks' (A, as a run keeps those of its sensors and actuators: "
+                   "Model::observe), the order alternating from round to round; prints the medians of both and of "
+                   "the rounds' ratios B / A (the same bits). The exponent is A's")
       ->excludes(prefetch_option)
       ->excludes(partition_option);
   app.add_option("packings", packings, "mw-pack packing files (HDF5), smallest first")->required()->check(CLI::ExistingFile);
@@ -153,11 +154,8 @@ int main(int argc, char** argv) {
   // Readies turn `which` (0: A, 1: B) of packing m and returns the model it steps.
   const auto variant = [&](std::size_t m, int which) -> dem::SphereSystem& {
     if (compared > 0) models[m]->set_prefetch_ahead(which == 0 ? 0 : std::size_t(compared));
-    if (compared_every_acceleration) {
-      std::vector<std::size_t> observed(which == 0 ? 50 : models[m]->sphere_count());
-      for (std::size_t k = 0; k < observed.size(); ++k) observed[k] = k;
-      models[m]->observe(observed);
-    }
+    if (compared_every_acceleration)
+      models[m]->observe(bench::first_spheres(which == 0 ? bench::kPushedSpheres : models[m]->sphere_count()));
     return which == 1 && compared_partition > 0 ? *variants[m] : *models[m];
   };
   if (profile_s > 0) {

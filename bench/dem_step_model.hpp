@@ -5,6 +5,7 @@
 // steps to warm the caches. Those 50 are the observed spheres (Model::observe), as an actuator's
 // patch is in a run: the others' accelerations are not kept.
 #include <memory>
+#include <numeric>
 #include <vector>
 
 #include "mesowave/dem/engine/sphere_system.hpp"
@@ -24,6 +25,16 @@ inline dem::CohesiveFrictionalMaterial concrete(const dem::Packing& packing) {
   return m;
 }
 
+/// The spheres a benchmark model pushes and observes (step_model).
+inline constexpr std::size_t kPushedSpheres = 50;
+
+/// Spheres 0 to n - 1 (Model::observe's list).
+inline std::vector<std::size_t> first_spheres(std::size_t n) {
+  std::vector<std::size_t> ids(n);
+  std::iota(ids.begin(), ids.end(), std::size_t(0));
+  return ids;
+}
+
 /// `spheres_per_partition`: the engine's unless a benchmark compares another (SphereSystem::partition_count).
 template <class Law>
 std::unique_ptr<dem::SphereSystem> step_model(const dem::Packing& packing,
@@ -33,8 +44,7 @@ std::unique_ptr<dem::SphereSystem> step_model(const dem::Packing& packing,
   dem::BondNetwork b = dem::make_bond_network(s, m.bond_factor);
   auto model = std::make_unique<dem::SphereSystem>(std::move(s), std::move(b), m, std::make_unique<Law>(), nullptr,
                                                    spheres_per_partition);
-  std::vector<std::size_t> pushed(50);
-  for (std::size_t k = 0; k < pushed.size(); ++k) pushed[k] = k;
+  const std::vector<std::size_t> pushed = first_spheres(kPushedSpheres);
   model->observe(pushed);
   for (std::size_t k : pushed) model->add_external_force(k, {1e-3, 0, 0});
   for (int i = 0; i < 20; ++i) model->step(5e-8, false);

@@ -17,6 +17,7 @@
 #include "mesowave/dem/engine/contact_ends.hpp"
 #include "mesowave/dem/engine/sphere_system.hpp"
 #include "dem/test_packings.hpp"
+#include "dem/test_systems.hpp"
 
 using namespace mesowave::dem;
 using namespace mesowave::dem::testing;
@@ -70,12 +71,7 @@ TEST(ContactEnds, AskingForLinesAheadChangesNoBit) {
   for (const bool full : {false, true}) {
     std::unique_ptr<SphereSystem> reference;
     for (const std::size_t ahead : {0, 1, 33, 5000}) {
-      SphereSet spheres = make_sphere_set(p, material.density_kg_m3);
-      BondNetwork bonds = make_bond_network(spheres, material.bond_factor);
-      std::unique_ptr<ContactKernel> law;
-      if (full) law = std::make_unique<CohesiveFrictionalContact>();
-      else law = std::make_unique<LinearBondedNetwork>();
-      auto system = std::make_unique<SphereSystem>(std::move(spheres), std::move(bonds), material, std::move(law));
+      auto system = bonded_system(p, material, full);
       system->set_prefetch_ahead(ahead);
       ASSERT_EQ(system->prefetch_ahead(), ahead);
       for (int i = 0; i < 150; ++i) {
@@ -86,13 +82,7 @@ TEST(ContactEnds, AskingForLinesAheadChangesNoBit) {
         reference = std::move(system);
         continue;
       }
-      const std::size_t n = system->sphere_count(), bytes = n * sizeof(Vec3);
-      EXPECT_EQ(std::memcmp(system->positions(), reference->positions(), bytes), 0) << (full ? "full" : "linear") << ", " << ahead;
-      EXPECT_EQ(std::memcmp(system->velocities(), reference->velocities(), bytes), 0) << (full ? "full" : "linear") << ", " << ahead;
-      EXPECT_EQ(std::memcmp(system->angular_velocities(), reference->angular_velocities(), bytes), 0)
-          << (full ? "full" : "linear") << ", " << ahead;
-      EXPECT_EQ(system->energy().elastic_J, reference->energy().elastic_J);
-      EXPECT_EQ(system->energy().damping_J, reference->energy().damping_J);
+      expect_same_motion(*system, *reference, std::string(full ? "full" : "linear") + ", " + std::to_string(ahead) + " ahead");
     }
   }
 }
