@@ -2,8 +2,8 @@
 // every component of every source at both ends, bit for bit (-0, a subnormal and distinct values
 // in each lane, so that a transposed lane or component shows), for whole chunks, chunks shorter
 // than the vector width and tails, with the arrays' last sphere among the ends (the masked loads
-// must not read past it). And the requests for lines ahead (SphereSystem::set_prefetch_ahead)
-// change no bit of a step.
+// must not read past it); the same for sphere records. And the requests for lines ahead
+// (SphereSystem::set_prefetch_ahead) change no bit of a step.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -58,6 +58,47 @@ TEST(ContactEnds, EachEndIsItsSpheresValuesBitForBit) {
       for (std::size_t s = 0; s < 3; ++s) {
         EXPECT_TRUE(same_bits(ends.at(s, 0, b), (*sources[s])[first[b]])) << "chunk at " << begin << ", contact " << b << ", source " << s;
         EXPECT_TRUE(same_bits(ends.at(s, 1, b), (*sources[s])[second[b]])) << "chunk at " << begin << ", contact " << b << ", source " << s;
+      }
+  }
+}
+
+// The same for sphere records (the linearised network's d, theta and r as one line a sphere):
+// packed from three arrays and staged by transposes of eight records, every component at both
+// ends, the last record among the ends.
+TEST(ContactEnds, EachRecordEndIsItsSpheresValuesBitForBit) {
+  constexpr std::size_t spheres = 301;
+  std::vector<Vec3> d(spheres), theta(spheres);
+  std::vector<double> r(spheres);
+  for (std::size_t k = 0; k < spheres; ++k) {
+    const double s = double(k);
+    d[k] = {s + 0.25, -s, 1e-3 * s};
+    theta[k] = {1.0 / (s + 1.0), -2.0 * s, s + 1e6};
+    r[k] = 1e-3 * (s + 0.5);
+  }
+  d[3] = {-0.0, std::numeric_limits<double>::denorm_min(), 0.0};
+  std::vector<SphereRecord> records(spheres);  // exactly `spheres` long
+  pack_sphere_records(d.data(), theta.data(), r.data(), 0, 150, records.data());
+  pack_sphere_records(d.data(), theta.data(), r.data(), 150, spheres, records.data());
+  std::vector<std::uint32_t> first, second;
+  std::uint32_t state = 54321;
+  for (std::size_t c = 0; c < 200; ++c) {
+    state = state * 1664525u + 1013904223u;
+    const std::uint32_t i = (state >> 8) % (spheres - 1);
+    const std::uint32_t j = i + 1 + (state >> 20) % std::uint32_t(spheres - 1 - i);
+    first.push_back(i), second.push_back(j);
+  }
+  first[5] = 0, second[5] = spheres - 1;
+  first[199] = 3, second[199] = spheres - 1;
+
+  for (const auto& [begin, m] : {std::pair<std::size_t, std::size_t>{0, 32}, {32, 31}, {64, 8}, {100, 7}, {168, 32}, {199, 1}}) {
+    RecordEnds ends;
+    ends.fill(records.data(), first.data(), second.data(), begin, m);
+    for (std::size_t b = begin; b < begin + m; ++b)
+      for (int end = 0; end < 2; ++end) {
+        const std::uint32_t k = end == 0 ? first[b] : second[b];
+        EXPECT_TRUE(same_bits(ends.at(0, end, b), d[k])) << "chunk at " << begin << ", contact " << b << ", end " << end;
+        EXPECT_TRUE(same_bits(ends.at(1, end, b), theta[k])) << "chunk at " << begin << ", contact " << b << ", end " << end;
+        EXPECT_EQ(ends.scalar(end, b), r[k]) << "chunk at " << begin << ", contact " << b << ", end " << end;
       }
   }
 }

@@ -18,6 +18,7 @@ void LinearBondedNetwork::attach(SphereSystem& system) {
     nx_[s] = g.normal.x, ny_[s] = g.normal.y, nz_[s] = g.normal.z;
     overlap0_[s] = g.overlap_m;
   }
+  records_.resize(system.held_sphere_count());  // packed each step (kernel); sized here for memory_bytes
 }
 
 void LinearBondedNetwork::contact_forces(SphereSystem& system, double /*dt*/, bool evaluate_energy) {
@@ -35,20 +36,30 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
   // inside the vector loop (GCC 12 left the whole loop scalar).
   const double T_ref = std::isfinite(T) ? T : 0.0, C_ref = std::isfinite(C) ? C : 0.0;
   const double T_none = std::isfinite(T) ? 0.0 : 1.0, C_none = std::isfinite(C) ? 0.0 : 1.0;
-  const double* radius = system.radii();
-  const Vec3* d = system.positions();
-  const Vec3* theta = system.rotations();
   const double *nx = nx_.data(), *ny = ny_.data(), *nz = nz_.data(), *overlap0 = overlap0_.data();
   const std::uint32_t* first = system.first();
   const std::uint32_t* second = system.second();
 
-  // d and theta at both ends, staged a chunk at a time before the vector loop (contact_ends.hpp).
-  ContactEnds<2> ends;
+  // d, theta and r of every held sphere as one line each (their arrays as the last step left them;
+  // distributed, the ghosts' as their owners sent them), then staged a chunk at a time.
+  const std::size_t n = system.held_sphere_count();
+#pragma omp single
+  records_.resize(n);  // a new layout may hold other spheres; the barrier after it orders the writes
+  {
+    const Vec3 *d = system.positions(), *theta = system.rotations();
+    const double* radius = system.radii();
+    SphereRecord* records = records_.data();
+#pragma omp for schedule(static)
+    for (std::size_t block = 0; block < n; block += SphereSystem::kSphereBlock)
+      pack_sphere_records(d, theta, radius, block, std::min(n, block + SphereSystem::kSphereBlock), records);
+  }
+  const SphereRecord* records = records_.data();
+  RecordEnds ends;
   // Two versions of the loop, the energy's divisions only in the one for energy steps (on the
   // others nothing reads the elastic energy).
   const auto contacts = [&](auto energy) __attribute__((always_inline)) {
     const auto kernel = [&](std::size_t b, SphereSystem::ContactResult& r) __attribute__((always_inline)) {
-      const double ri = radius[first[b]], rj = radius[second[b]];
+      const double ri = ends.scalar(0, b), rj = ends.scalar(1, b);
       const LinearBondResponse q = linear_bond_response(two_E_dem, ratio, ri, rj, overlap0[b], Vec3{nx[b], ny[b], nz[b]},
                                                         ends.at(0, 1, b) - ends.at(0, 0, b), ends.at(1, 0, b), ends.at(1, 1, b));
       const double fn = q.fn, kn = q.kn, ks = q.ks, a0 = q.a0;
@@ -73,8 +84,8 @@ void LinearBondedNetwork::kernel(SphereSystem& system, bool evaluate_energy) {
     };
     system.for_each_contact(kernel, decltype(energy)::value, false,
                             [&](std::size_t chunk, std::size_t m, ContactRange ahead) {
-                              ends.prefetch({d, theta}, radius, second, ahead);
-                              ends.fill({d, theta}, first, second, chunk, m);
+                              RecordEnds::prefetch(records, second, ahead);
+                              ends.fill(records, first, second, chunk, m);
                             });
   };
   if (evaluate_energy)

@@ -58,7 +58,9 @@ public:
   bool reads_velocities() const override { return false; }  // d and theta only (kernel())
   void attach(SphereSystem& system) override;
   void contact_forces(SphereSystem& system, double dt, bool evaluate_energy) override;
-  std::size_t memory_bytes() const override { return nx_.size() * 4 * sizeof(double); }
+  std::size_t memory_bytes() const override {
+    return nx_.size() * 4 * sizeof(double) + records_.size() * sizeof(SphereRecord);
+  }
   /// Nothing of its own changes from step to step (n0, u_0 and the layout are
   /// fixed at attach); the system saves the motion.
   void save_state(const SphereSystem&, StateGroup&) const override {}
@@ -69,6 +71,9 @@ private:
   // Per contact, in slot order, one array per component (vector loads).
   std::vector<double> nx_, ny_, nz_;  ///< n0, first -> second
   std::vector<double> overlap0_;      ///< u_0
+  /// The held spheres' d, theta and r, one line a sphere, packed at the start of each step: a
+  /// contact's second sphere is then one line, not five (contact_ends.hpp).
+  std::vector<SphereRecord> records_;
 };
 
 }  // namespace mesowave::dem

@@ -1,5 +1,7 @@
 #include "mesowave/dem/engine/contact_ends.hpp"
 
+#include <algorithm>
+
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
@@ -64,8 +66,49 @@ __attribute__((target("avx512f,avx512vl"))) void fill_avx512(const Vec3* const* 
       rows_plain(sources[s], index + whole, m - whole, row + whole);
     }
 }
+
+// fill_record_ends' rows for one end, eight records at a time: eight line loads and an 8 x 8
+// transpose (row 7, the records' padding, is not stored). Lanes from m on repeat the last
+// contact's record, so that no load reads past the records in use.
+__attribute__((target("avx512f"))) void record_rows_avx512(const SphereRecord* records, const std::uint32_t* index,
+                                                            std::size_t m, double* rows) {
+  for (std::size_t q0 = 0; q0 < m; q0 += 8) {
+    __m512d r[8];
+    for (std::size_t l = 0; l < 8; ++l) r[l] = _mm512_load_pd(records[index[std::min(q0 + l, m - 1)]].v);
+    // Pairs of records interleaved, then 128-bit lanes: t = (r0 r1) unpacked, u = four rows' pairs.
+    const __m512d t0 = _mm512_unpacklo_pd(r[0], r[1]), t1 = _mm512_unpackhi_pd(r[0], r[1]);
+    const __m512d t2 = _mm512_unpacklo_pd(r[2], r[3]), t3 = _mm512_unpackhi_pd(r[2], r[3]);
+    const __m512d t4 = _mm512_unpacklo_pd(r[4], r[5]), t5 = _mm512_unpackhi_pd(r[4], r[5]);
+    const __m512d t6 = _mm512_unpacklo_pd(r[6], r[7]), t7 = _mm512_unpackhi_pd(r[6], r[7]);
+    const __m512d u0 = _mm512_shuffle_f64x2(t0, t2, 0x88), u1 = _mm512_shuffle_f64x2(t1, t3, 0x88);
+    const __m512d u2 = _mm512_shuffle_f64x2(t0, t2, 0xdd), u3 = _mm512_shuffle_f64x2(t1, t3, 0xdd);
+    const __m512d u4 = _mm512_shuffle_f64x2(t4, t6, 0x88), u5 = _mm512_shuffle_f64x2(t5, t7, 0x88);
+    const __m512d u6 = _mm512_shuffle_f64x2(t4, t6, 0xdd), u7 = _mm512_shuffle_f64x2(t5, t7, 0xdd);
+    double* row = rows + q0;
+    _mm512_store_pd(row, _mm512_shuffle_f64x2(u0, u4, 0x88));
+    _mm512_store_pd(row + kEndsChunk, _mm512_shuffle_f64x2(u1, u5, 0x88));
+    _mm512_store_pd(row + 2 * kEndsChunk, _mm512_shuffle_f64x2(u2, u6, 0x88));
+    _mm512_store_pd(row + 3 * kEndsChunk, _mm512_shuffle_f64x2(u3, u7, 0x88));
+    _mm512_store_pd(row + 4 * kEndsChunk, _mm512_shuffle_f64x2(u0, u4, 0xdd));
+    _mm512_store_pd(row + 5 * kEndsChunk, _mm512_shuffle_f64x2(u1, u5, 0xdd));
+    _mm512_store_pd(row + 6 * kEndsChunk, _mm512_shuffle_f64x2(u2, u6, 0xdd));
+  }
+}
 #pragma GCC diagnostic pop
 #endif
+
+void record_rows_plain(const SphereRecord* records, const std::uint32_t* index, std::size_t m, double* rows) {
+  for (std::size_t q = 0; q < m; ++q)
+    for (std::size_t c = 0; c < 7; ++c) rows[c * kEndsChunk + q] = records[index[q]].v[c];
+}
+
+using RecordRows = void (*)(const SphereRecord*, const std::uint32_t*, std::size_t, double*);
+RecordRows chosen_record_rows() {
+#if defined(__x86_64__)
+  if (__builtin_cpu_supports("avx512f")) return record_rows_avx512;
+#endif
+  return record_rows_plain;
+}
 
 Fill chosen() {
 #if defined(__x86_64__)
@@ -80,6 +123,19 @@ void fill_contact_ends(const Vec3* const* sources, std::size_t count, const std:
                        std::size_t b, std::size_t m, double* out) {
   static const Fill fill = chosen();
   fill(sources, count, first, second, b, m, out);
+}
+
+void pack_sphere_records(const Vec3* a, const Vec3* b, const double* s, std::size_t begin, std::size_t end,
+                         SphereRecord* records) {
+  for (std::size_t k = begin; k < end; ++k) records[k] = {{a[k].x, a[k].y, a[k].z, b[k].x, b[k].y, b[k].z, s[k], 0.0}};
+}
+
+void fill_record_ends(const SphereRecord* records, const std::uint32_t* first, const std::uint32_t* second, std::size_t b,
+                      std::size_t m, double* out) {
+  static const RecordRows rows = chosen_record_rows();
+  if (m == 0) return;
+  rows(records, first + b, m, out);
+  rows(records, second + b, m, out + 7 * kEndsChunk);
 }
 
 }  // namespace mesowave::dem

@@ -74,4 +74,47 @@ struct alignas(64) ContactEnds {
   }
 };
 
+/// One sphere's data in one cache line: two Vec3 and a scalar (the linearised network's d, theta and
+/// r). A chunk's second spheres fall anywhere in their partition: staged from three arrays each
+/// costs two to five lines (a Vec3 may straddle two; the radius), and as many requests ahead; from
+/// records one. Packing them costs a pass over the spheres each step; the 50 mm step is 0-9 %
+/// shorter for it (docs/benchmarks.md, "The step near the memory limit", eleventh part).
+struct alignas(64) SphereRecord {
+  double v[8];  ///< a (0-2), b (3-5), s (6), 0
+};
+
+/// records[k] = {a[k], b[k], s[k], 0} for k in [begin, end).
+void pack_sphere_records(const Vec3* a, const Vec3* b, const double* s, std::size_t begin, std::size_t end,
+                         SphereRecord* records);
+
+/// Fills out[e][c][q] = records[e == 0 ? first[b + q] : second[b + q]].v[c] for c < 7, q < m <=
+/// kEndsChunk (out: 2 * 7 rows of kEndsChunk doubles, 64-byte aligned; a row's entries from m on
+/// are left undefined).
+void fill_record_ends(const SphereRecord* records, const std::uint32_t* first, const std::uint32_t* second, std::size_t b,
+                      std::size_t m, double* out);
+
+/// ContactEnds for sphere records: a chunk's ends, one array per component.
+struct alignas(64) RecordEnds {
+  double v[2][7][kEndsChunk];
+  std::size_t begin = 0;
+
+  void fill(const SphereRecord* records, const std::uint32_t* first, const std::uint32_t* second, std::size_t chunk,
+            std::size_t m) {
+    begin = chunk;
+    fill_record_ends(records, first, second, chunk, m, &v[0][0][0]);
+  }
+  /// The lines of the contacts' second spheres `ahead` (ContactEnds::prefetch): one a record.
+  static void prefetch(const SphereRecord* records, const std::uint32_t* second, ContactRange ahead) {
+    for (std::size_t b = ahead.begin; b < ahead.end; ++b) prefetch_line(&records[second[b]]);
+  }
+  /// The record's first Vec3 (part 0), second (part 1) at end 0 (first sphere) or 1 of contact b.
+  Vec3 at(int part, int end, std::size_t b) const {
+    const std::size_t q = b - begin;
+    const int c = 3 * part;
+    return {v[end][c][q], v[end][c + 1][q], v[end][c + 2][q]};
+  }
+  /// The record's scalar at end 0 or 1 of contact b.
+  double scalar(int end, std::size_t b) const { return v[end][6][b - begin]; }
+};
+
 }  // namespace mesowave::dem
