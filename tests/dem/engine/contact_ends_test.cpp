@@ -10,6 +10,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "mesowave/dem/contact/cohesive_frictional_contact.hpp"
@@ -26,6 +27,22 @@ namespace {
 
 bool same_bits(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof(Vec3)) == 0; }
 
+// 200 pairs first < second of `spheres`, from a fixed pseudo-random walk, with sphere 0 and the last
+// one among them (contact 5), and the last one again at contact 199.
+void random_pairs(std::size_t spheres, std::uint32_t state, std::vector<std::uint32_t>& first, std::vector<std::uint32_t>& second) {
+  for (std::size_t c = 0; c < 200; ++c) {
+    state = state * 1664525u + 1013904223u;
+    const std::uint32_t i = (state >> 8) % (spheres - 1);
+    const std::uint32_t j = i + 1 + (state >> 20) % std::uint32_t(spheres - 1 - i);
+    first.push_back(i), second.push_back(j);
+  }
+  first[5] = 0, second[5] = std::uint32_t(spheres - 1);
+  first[199] = 3, second[199] = std::uint32_t(spheres - 1);
+}
+
+// Chunks (first contact, size): whole, shorter than a chunk, one vector, shorter than one, a tail.
+constexpr std::pair<std::size_t, std::size_t> kChunks[] = {{0, 32}, {32, 31}, {64, 8}, {100, 7}, {168, 32}, {199, 1}};
+
 }  // namespace
 
 TEST(ContactEnds, EachEndIsItsSpheresValuesBitForBit) {
@@ -38,19 +55,9 @@ TEST(ContactEnds, EachEndIsItsSpheresValuesBitForBit) {
     w[k] = {1.0 / (s + 1.0), -2.0 * s, s + 1e6};
   }
   x[3] = {-0.0, std::numeric_limits<double>::denorm_min(), 0.0};
-  // Pairs first < second, from a fixed pseudo-random walk; the last sphere and sphere 0 among them.
   std::vector<std::uint32_t> first, second;
-  std::uint32_t state = 12345;
-  for (std::size_t c = 0; c < 200; ++c) {
-    state = state * 1664525u + 1013904223u;
-    const std::uint32_t i = (state >> 8) % (spheres - 1);
-    const std::uint32_t j = i + 1 + (state >> 20) % std::uint32_t(spheres - 1 - i);
-    first.push_back(i), second.push_back(j);
-  }
-  first[5] = 0, second[5] = spheres - 1;
-  first[199] = 3, second[199] = spheres - 1;
-
-  for (const auto& [begin, m] : {std::pair<std::size_t, std::size_t>{0, 32}, {32, 31}, {64, 8}, {100, 7}, {168, 32}, {199, 1}}) {
+  random_pairs(spheres, 12345, first, second);
+  for (const auto& [begin, m] : kChunks) {
     ContactEnds<3> ends;
     ends.fill({x.data(), v.data(), w.data()}, first.data(), second.data(), begin, m);
     const std::vector<Vec3>* sources[3] = {&x, &v, &w};
@@ -80,17 +87,8 @@ TEST(ContactEnds, EachRecordEndIsItsSpheresValuesBitForBit) {
   pack_sphere_records(d.data(), theta.data(), r.data(), 0, 150, records.data());
   pack_sphere_records(d.data(), theta.data(), r.data(), 150, spheres, records.data());
   std::vector<std::uint32_t> first, second;
-  std::uint32_t state = 54321;
-  for (std::size_t c = 0; c < 200; ++c) {
-    state = state * 1664525u + 1013904223u;
-    const std::uint32_t i = (state >> 8) % (spheres - 1);
-    const std::uint32_t j = i + 1 + (state >> 20) % std::uint32_t(spheres - 1 - i);
-    first.push_back(i), second.push_back(j);
-  }
-  first[5] = 0, second[5] = spheres - 1;
-  first[199] = 3, second[199] = spheres - 1;
-
-  for (const auto& [begin, m] : {std::pair<std::size_t, std::size_t>{0, 32}, {32, 31}, {64, 8}, {100, 7}, {168, 32}, {199, 1}}) {
+  random_pairs(spheres, 54321, first, second);
+  for (const auto& [begin, m] : kChunks) {
     RecordEnds ends;
     ends.fill(records.data(), first.data(), second.data(), begin, m);
     for (std::size_t b = begin; b < begin + m; ++b)

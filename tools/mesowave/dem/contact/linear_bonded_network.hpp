@@ -72,7 +72,7 @@ private:
   std::vector<double> nx_, ny_, nz_;  ///< n0, first -> second
   std::vector<double> overlap0_;      ///< u_0
   /// The held spheres' d, theta and r, one line a sphere, packed at the start of each step: a
-  /// contact's second sphere is then one line, not five (contact_ends.hpp).
+  /// contact's second sphere is then one line, not two to five (contact_ends.hpp).
   std::vector<SphereRecord> records_;
 };
 
