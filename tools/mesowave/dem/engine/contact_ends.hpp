@@ -77,8 +77,8 @@ struct alignas(64) ContactEnds {
 /// One sphere's data in one cache line: two Vec3 and a scalar (the linearised network's d, theta and
 /// r). A chunk's second spheres fall anywhere in their partition: staged from three arrays each
 /// costs two to five lines (a Vec3 may straddle two; the radius), and as many requests ahead; from
-/// records one. Packing them costs a pass over the spheres each step; the 50 mm step is 0-9 %
-/// shorter for it (docs/benchmarks.md, "The step near the memory limit", eleventh part).
+/// records one. Packing them costs a pass over the spheres each step; the 50 mm step on 2 threads
+/// is about 4 % shorter for it (docs/benchmarks.md, "The step near the memory limit", eleventh part).
 struct alignas(64) SphereRecord {
   double v[8];  ///< a (0-2), b (3-5), s (6), 0
 };
