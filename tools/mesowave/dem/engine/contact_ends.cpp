@@ -68,8 +68,9 @@ __attribute__((target("avx512f,avx512vl"))) void fill_avx512(const Vec3* const* 
 }
 
 // fill_record_ends' rows for one end, eight records at a time: eight line loads and an 8 x 8
-// transpose (row 7, the records' padding, is not stored). Lanes from m on repeat the last
-// contact's record, so that no load reads past the records in use.
+// transpose (row 7, the records' padding, is not stored: kRecordValues rows). Lanes from m on
+// repeat the last contact's record, so that no load reads past the records in use.
+static_assert(kRecordValues == 7, "record_rows_avx512 stores rows 0-6");
 __attribute__((target("avx512f"))) void record_rows_avx512(const SphereRecord* records, const std::uint32_t* index,
                                                             std::size_t m, double* rows) {
   for (std::size_t q0 = 0; q0 < m; q0 += 8) {
@@ -99,7 +100,7 @@ __attribute__((target("avx512f"))) void record_rows_avx512(const SphereRecord* r
 
 void record_rows_plain(const SphereRecord* records, const std::uint32_t* index, std::size_t m, double* rows) {
   for (std::size_t q = 0; q < m; ++q)
-    for (std::size_t c = 0; c < 7; ++c) rows[c * kEndsChunk + q] = records[index[q]].v[c];
+    for (std::size_t c = 0; c < kRecordValues; ++c) rows[c * kEndsChunk + q] = records[index[q]].v[c];
 }
 
 using RecordRows = void (*)(const SphereRecord*, const std::uint32_t*, std::size_t, double*);
@@ -135,7 +136,7 @@ void fill_record_ends(const SphereRecord* records, const std::uint32_t* first, c
   static const RecordRows rows = chosen_record_rows();
   if (m == 0) return;
   rows(records, first + b, m, out);
-  rows(records, second + b, m, out + 7 * kEndsChunk);
+  rows(records, second + b, m, out + kRecordValues * kEndsChunk);
 }
 
 }  // namespace mesowave::dem

@@ -82,20 +82,22 @@ struct alignas(64) ContactEnds {
 struct alignas(64) SphereRecord {
   double v[8];  ///< a (0-2), b (3-5), s (6), 0
 };
+/// The values of a record a contact's end reads (the padding is not staged).
+inline constexpr std::size_t kRecordValues = 7;
 
 /// records[k] = {a[k], b[k], s[k], 0} for k in [begin, end).
 void pack_sphere_records(const Vec3* a, const Vec3* b, const double* s, std::size_t begin, std::size_t end,
                          SphereRecord* records);
 
-/// Fills out[e][c][q] = records[e == 0 ? first[b + q] : second[b + q]].v[c] for c < 7, q < m <=
-/// kEndsChunk (out: 2 * 7 rows of kEndsChunk doubles, 64-byte aligned; a row's entries from m on
-/// are left undefined).
+/// Fills out[e][c][q] = records[e == 0 ? first[b + q] : second[b + q]].v[c] for c < kRecordValues,
+/// q < m <= kEndsChunk (out: 2 * kRecordValues rows of kEndsChunk doubles, 64-byte aligned; a row's
+/// entries from m on are left undefined).
 void fill_record_ends(const SphereRecord* records, const std::uint32_t* first, const std::uint32_t* second, std::size_t b,
                       std::size_t m, double* out);
 
 /// ContactEnds for sphere records: a chunk's ends, one array per component.
 struct alignas(64) RecordEnds {
-  double v[2][7][kEndsChunk];
+  double v[2][kRecordValues][kEndsChunk];
   std::size_t begin = 0;
 
   void fill(const SphereRecord* records, const std::uint32_t* first, const std::uint32_t* second, std::size_t chunk,
@@ -114,7 +116,7 @@ struct alignas(64) RecordEnds {
     return {v[end][c][q], v[end][c + 1][q], v[end][c + 2][q]};
   }
   /// The record's scalar at end 0 or 1 of contact b.
-  double scalar(int end, std::size_t b) const { return v[end][6][b - begin]; }
+  double scalar(int end, std::size_t b) const { return v[end][kRecordValues - 1][b - begin]; }
 };
 
 }  // namespace mesowave::dem
